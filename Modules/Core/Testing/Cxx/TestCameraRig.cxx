@@ -1,0 +1,1 @@
+int TestCameraRig(int, char*[]) { return 0; }

@@ -1,0 +1,663 @@
+#include "vtkCameraRig.h"
+
+#include "lfdCylinderSampling.h"
+#include "lfdPinholeCamera.h"
+
+#include "vtkCamera.h"
+#include "vtkIdList.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+vtkStandardNewMacro(vtkCameraRig);
+
+namespace
+{
+glm::dvec3 ToVec(const double v[3])
+{
+  return glm::dvec3(v[0], v[1], v[2]);
+}
+
+void FromVec(const glm::dvec3& v, double out[3])
+{
+  out[0] = v.x;
+  out[1] = v.y;
+  out[2] = v.z;
+}
+
+void ToRowMajor(const glm::dmat3& m, double out[9])
+{
+  for (int row = 0; row < 3; ++row)
+  {
+    for (int col = 0; col < 3; ++col)
+    {
+      out[3 * row + col] = m[col][row];
+    }
+  }
+}
+
+/// Eigen-decomposition of a symmetric 3x3 matrix; columns of `vectors`
+/// are sorted by decreasing eigenvalue (vtkMath::Jacobi's order).
+void SymmetricEigen(const glm::dmat3& m, double values[3], glm::dvec3 vectors[3])
+{
+  double a[3][3], v[3][3];
+  double* aRows[3] = { a[0], a[1], a[2] };
+  double* vRows[3] = { v[0], v[1], v[2] };
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      a[i][j] = m[j][i];
+    }
+  }
+  vtkMath::Jacobi(aRows, values, vRows);
+  for (int k = 0; k < 3; ++k)
+  {
+    vectors[k] = glm::dvec3(v[0][k], v[1][k], v[2][k]);
+  }
+}
+
+/// Any unit vector orthogonal to `axis`: the axis-orthogonal part of +Z,
+/// or of +X when the axis is (nearly) Z.
+glm::dvec3 ReferenceDirection(const glm::dvec3& axis)
+{
+  glm::dvec3 ref(0.0, 0.0, 1.0);
+  if (std::abs(glm::dot(ref, axis)) > 0.9)
+  {
+    ref = glm::dvec3(1.0, 0.0, 0.0);
+  }
+  return glm::normalize(ref - glm::dot(ref, axis) * axis);
+}
+}
+
+struct vtkCameraRig::Internals
+{
+  std::vector<lfd::PinholeCamera> Cameras;
+  std::vector<std::string> Names;
+
+  bool Fitted = false;
+  glm::dvec3 RefX{ 1.0, 0.0, 0.0 };
+  glm::dvec3 RefY{ 0.0, 0.0, 1.0 };
+  std::vector<double> Azimuth;
+  std::vector<double> Height;
+  std::vector<int> Row;
+  std::vector<int> DuplicateOf;
+  std::vector<double> RowHeights;
+};
+
+//------------------------------------------------------------------------------
+vtkCameraRig::vtkCameraRig()
+  : Internal(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkCameraRig::~vtkCameraRig() = default;
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::SetNumberOfViews(int n)
+{
+  n = std::max(n, 0);
+  if (n == this->GetNumberOfViews())
+  {
+    return;
+  }
+  this->Internal->Cameras.resize(n);
+  this->Internal->Names.resize(n);
+  this->ClearFit();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraRig::GetNumberOfViews() const
+{
+  return static_cast<int>(this->Internal->Cameras.size());
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::SetView(int i, const double K[9], const double R[9], const double t[3])
+{
+  if (i < 0 || i >= this->GetNumberOfViews())
+  {
+    vtkErrorMacro("SetView: view " << i << " out of range [0, " << this->GetNumberOfViews()
+                                   << ").");
+    return;
+  }
+  this->Internal->Cameras[i] = lfd::PinholeCamera::FromRowMajor(K, R, t);
+  this->ClearFit();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::GetIntrinsics(int i, double K[9]) const
+{
+  ToRowMajor(this->GetCamera(i).K, K);
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::GetRotation(int i, double R[9]) const
+{
+  ToRowMajor(this->GetCamera(i).R, R);
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::GetTranslation(int i, double t[3]) const
+{
+  FromVec(this->GetCamera(i).t, t);
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::SetViewName(int i, const char* name)
+{
+  if (i < 0 || i >= this->GetNumberOfViews())
+  {
+    vtkErrorMacro("SetViewName: view " << i << " out of range.");
+    return;
+  }
+  this->Internal->Names[i] = name ? name : "";
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkCameraRig::GetViewName(int i) const
+{
+  return (i >= 0 && i < this->GetNumberOfViews()) ? this->Internal->Names[i].c_str() : "";
+}
+
+//------------------------------------------------------------------------------
+const lfd::PinholeCamera& vtkCameraRig::GetCamera(int i) const
+{
+  static const lfd::PinholeCamera identity;
+  if (i < 0 || i >= this->GetNumberOfViews())
+  {
+    return identity;
+  }
+  return this->Internal->Cameras[i];
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::GetCameraCenter(int i, double center[3]) const
+{
+  FromVec(this->GetCamera(i).Center(), center);
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::GetViewDirection(int i, double direction[3]) const
+{
+  FromVec(this->GetCamera(i).Forward(), direction);
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::GetViewUp(int i, double up[3]) const
+{
+  FromVec(this->GetCamera(i).Up(), up);
+}
+
+//------------------------------------------------------------------------------
+bool vtkCameraRig::Project(int i, const double point[3], double pixel[2]) const
+{
+  glm::dvec2 uv;
+  if (!this->GetCamera(i).Project(ToVec(point), uv))
+  {
+    return false;
+  }
+  pixel[0] = uv.x;
+  pixel[1] = uv.y;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::ApplyToCamera(int i, vtkCamera* camera) const
+{
+  if (!camera)
+  {
+    return;
+  }
+  const lfd::PinholeCamera& pinhole = this->GetCamera(i);
+  const double width = this->ImageSize[0];
+  const double height = this->ImageSize[1];
+  const glm::dvec3 center = pinhole.Center();
+  const glm::dvec3 forward = pinhole.Forward();
+  double distance = 1.0;
+  if (this->Internal->Fitted)
+  {
+    const glm::dvec3 toAxis = ToVec(this->Center) - center;
+    distance = std::max(glm::dot(toAxis, forward), 1e-6 * this->Radius);
+  }
+  const glm::dvec3 focal = center + distance * forward;
+  const glm::dvec3 up = pinhole.Up();
+  camera->SetPosition(center.x, center.y, center.z);
+  camera->SetFocalPoint(focal.x, focal.y, focal.z);
+  camera->SetViewUp(up.x, up.y, up.z);
+  const double fy = pinhole.K[1][1];
+  camera->SetViewAngle(vtkMath::DegreesFromRadians(2.0 * std::atan(0.5 * height / fy)));
+  // The optical axis lands on NDC (-wx, -wy) (vtkCamera's frustum); OpenCV
+  // pixel centres are at integer coordinates, VTK's at half-integers, and
+  // VTK's y grows upwards.
+  const double cx = pinhole.K[2][0];
+  const double cy = pinhole.K[2][1];
+  camera->SetWindowCenter(1.0 - 2.0 * (cx + 0.5) / width, 2.0 * (cy + 0.5) / height - 1.0);
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::CameraToPinhole(
+  vtkCamera* camera, int width, int height, double K[9], double R[9], double t[3])
+{
+  const glm::dvec3 position = ToVec(camera->GetPosition());
+  const glm::dvec3 forward = glm::normalize(ToVec(camera->GetFocalPoint()) - position);
+  glm::dvec3 up = ToVec(camera->GetViewUp());
+  up = glm::normalize(up - glm::dot(up, forward) * forward);
+  const glm::dvec3 down = -up;
+  const glm::dvec3 right = glm::cross(down, forward);
+  glm::dmat3 rotation;
+  for (int col = 0; col < 3; ++col)
+  {
+    rotation[col][0] = right[col];
+    rotation[col][1] = down[col];
+    rotation[col][2] = forward[col];
+  }
+  const double fy = 0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(camera->GetViewAngle()));
+  const double* wc = camera->GetWindowCenter();
+  glm::dmat3 intrinsics(1.0);
+  intrinsics[0][0] = fy;
+  intrinsics[1][1] = fy;
+  intrinsics[2][0] = 0.5 * width * (1.0 - wc[0]) - 0.5;
+  intrinsics[2][1] = 0.5 * height * (1.0 + wc[1]) - 0.5;
+  ToRowMajor(intrinsics, K);
+  ToRowMajor(rotation, R);
+  FromVec(-(rotation * position), t);
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::MakeCylinder(const double center[3], const double axis[3], double radius,
+  int viewsPerRing, int rows, const double* heights, int width, int height, double viewAngle)
+{
+  if (viewsPerRing < 1 || rows < 1 || radius <= 0.0 || width < 1 || height < 1 ||
+    !(viewAngle > 0.0 && viewAngle < 180.0))
+  {
+    vtkErrorMacro("MakeCylinder: need at least one view and row, a positive radius and image "
+                  "size and a view angle in (0, 180) degrees.");
+    return;
+  }
+  const glm::dvec3 a = glm::normalize(ToVec(axis));
+  const glm::dvec3 refX = ReferenceDirection(a);
+  const glm::dvec3 refY = glm::cross(a, refX);
+  const double fy = 0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(viewAngle));
+  const double K[9] = { fy, 0.0, 0.5 * (width - 1), 0.0, fy, 0.5 * (height - 1), 0.0, 0.0, 1.0 };
+  this->SetImageSize(width, height);
+  this->SetNumberOfViews(viewsPerRing * rows);
+  for (int r = 0; r < rows; ++r)
+  {
+    const glm::dvec3 target = ToVec(center) + heights[r] * a;
+    for (int k = 0; k < viewsPerRing; ++k)
+    {
+      const double phi = lfd::TwoPi * k / viewsPerRing;
+      const glm::dvec3 position = target + radius * (std::cos(phi) * refX + std::sin(phi) * refY);
+      const glm::dvec3 forward = glm::normalize(target - position);
+      const glm::dvec3 down = -a;
+      const glm::dvec3 right = glm::cross(down, forward);
+      const double R[9] = { right.x, right.y, right.z, down.x, down.y, down.z, forward.x,
+        forward.y, forward.z };
+      const double t[3] = { -glm::dot(right, position), -glm::dot(down, position),
+        -glm::dot(forward, position) };
+      this->SetView(r * viewsPerRing + k, K, R, t);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::ClearFit()
+{
+  this->Internal->Fitted = false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCameraRig::HasCylinder() const
+{
+  return this->Internal->Fitted;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCameraRig::FitCylinder()
+{
+  Internals& in = *this->Internal;
+  const int n = this->GetNumberOfViews();
+  if (n < 3)
+  {
+    vtkErrorMacro("FitCylinder: a cylinder needs at least 3 views, the rig has " << n << ".");
+    return false;
+  }
+  std::vector<glm::dvec3> centers(n);
+  glm::dvec3 mean(0.0);
+  glm::dmat3 upScatter(0.0);
+  for (int i = 0; i < n; ++i)
+  {
+    centers[i] = in.Cameras[i].Center();
+    mean += centers[i];
+    const glm::dvec3 up = in.Cameras[i].Up();
+    upScatter += glm::outerProduct(up, up);
+  }
+  mean /= static_cast<double>(n);
+  glm::dmat3 scatter(0.0);
+  for (const glm::dvec3& c : centers)
+  {
+    scatter += glm::outerProduct(c - mean, c - mean);
+  }
+
+  // The axis: of the principal directions of the centres, the one closest to
+  // the dominant image "up" (sign-free, so views rotated by 180 degrees count
+  // too). For a single ring it is the smallest one: the normal of the plane
+  // fitted by SVD.
+  double values[3], upValues[3];
+  glm::dvec3 vectors[3], upVectors[3];
+  SymmetricEigen(scatter, values, vectors);
+  SymmetricEigen(upScatter, upValues, upVectors);
+  int axisIndex = 0;
+  for (int k = 1; k < 3; ++k)
+  {
+    if (std::abs(glm::dot(vectors[k], upVectors[0])) >
+      std::abs(glm::dot(vectors[axisIndex], upVectors[0])))
+    {
+      axisIndex = k;
+    }
+  }
+  glm::dvec3 axis = glm::normalize(vectors[axisIndex]);
+  double upVote = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    upVote += glm::dot(in.Cameras[i].Up(), axis);
+  }
+  if (upVote < 0.0)
+  {
+    axis = -axis;
+  }
+
+  // Circle fit in the plane orthogonal to the axis: algebraic (Kasa) start,
+  // then Gauss-Newton on the geometric distance.
+  const glm::dvec3 refX0 = ReferenceDirection(axis);
+  const glm::dvec3 refY0 = glm::cross(axis, refX0);
+  std::vector<glm::dvec2> planar(n);
+  for (int i = 0; i < n; ++i)
+  {
+    const glm::dvec3 v = centers[i] - mean;
+    planar[i] = glm::dvec2(glm::dot(v, refX0), glm::dot(v, refY0));
+  }
+  glm::dmat3 normal(0.0);
+  glm::dvec3 rhs(0.0);
+  for (const glm::dvec2& p : planar)
+  {
+    const glm::dvec3 row(p.x, p.y, 1.0);
+    normal += glm::outerProduct(row, row);
+    rhs -= (p.x * p.x + p.y * p.y) * row;
+  }
+  if (std::abs(glm::determinant(normal)) < 1e-12 * std::pow(values[0] * n, 2.0) * n)
+  {
+    vtkErrorMacro("FitCylinder: the camera centres are collinear or coincide; no ring can be "
+                  "fitted to them.");
+    return false;
+  }
+  const glm::dvec3 def = glm::inverse(normal) * rhs;
+  glm::dvec2 c2(-0.5 * def.x, -0.5 * def.y);
+  double radius = std::sqrt(std::max(glm::dot(c2, c2) - def.z, 0.0));
+  for (int iteration = 0; iteration < 20; ++iteration)
+  {
+    glm::dmat3 jtj(0.0);
+    glm::dvec3 jtr(0.0);
+    for (const glm::dvec2& p : planar)
+    {
+      const glm::dvec2 d = p - c2;
+      const double len = std::max(glm::length(d), 1e-300);
+      const glm::dvec3 j(-d.x / len, -d.y / len, -1.0);
+      const double r = len - radius;
+      jtj += glm::outerProduct(j, j);
+      jtr += r * j;
+    }
+    const glm::dvec3 step = glm::inverse(jtj) * jtr;
+    c2 -= glm::dvec2(step.x, step.y);
+    radius -= step.z;
+    if (glm::length(step) < 1e-14 * radius)
+    {
+      break;
+    }
+  }
+  const glm::dvec3 center = mean + c2.x * refX0 + c2.y * refY0;
+
+  FromVec(axis, this->Axis);
+  FromVec(center, this->Center);
+  this->Radius = radius;
+
+  // Azimuth 0 at the first view.
+  glm::dvec3 first = centers[0] - center;
+  first -= glm::dot(first, axis) * axis;
+  in.RefX = glm::length(first) > 0.0 ? glm::normalize(first) : refX0;
+  in.RefY = glm::cross(axis, in.RefX);
+
+  lfd::RingLayout frame;
+  frame.Cyl = { center, axis, radius };
+  frame.RefX = in.RefX;
+  frame.RefY = in.RefY;
+  in.Azimuth.assign(n, 0.0);
+  in.Height.assign(n, 0.0);
+  double residual2 = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    frame.Locate(centers[i], in.Azimuth[i], in.Height[i]);
+    glm::dvec3 radial = centers[i] - center;
+    radial -= glm::dot(radial, axis) * axis;
+    residual2 += std::pow(glm::length(radial) - radius, 2.0);
+  }
+  this->FitResidual = std::sqrt(residual2 / n);
+
+  // Near-duplicates: same place, same viewing direction (roll is free: a
+  // view rotated by 180 degrees in its image plane sees the same rays).
+  const double cosLimit = std::cos(vtkMath::RadiansFromDegrees(5.0));
+  in.DuplicateOf.assign(n, -1);
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < j; ++i)
+    {
+      if (in.DuplicateOf[i] < 0 &&
+        glm::distance(centers[i], centers[j]) < this->DuplicateTolerance * radius &&
+        glm::dot(in.Cameras[i].Forward(), in.Cameras[j].Forward()) > cosLimit)
+      {
+        in.DuplicateOf[j] = i;
+        break;
+      }
+    }
+  }
+
+  // Rows: cluster the heights.
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return in.Height[a] < in.Height[b]; });
+  in.Row.assign(n, 0);
+  in.RowHeights.clear();
+  std::vector<int> rowCounts;
+  for (int k = 0; k < n; ++k)
+  {
+    const int v = order[k];
+    if (k == 0 || in.Height[v] - in.Height[order[k - 1]] > this->RowTolerance * radius)
+    {
+      in.RowHeights.push_back(0.0);
+      rowCounts.push_back(0);
+    }
+    in.Row[v] = static_cast<int>(in.RowHeights.size()) - 1;
+    in.RowHeights.back() += in.Height[v];
+    rowCounts.back() += 1;
+  }
+  for (std::size_t r = 0; r < in.RowHeights.size(); ++r)
+  {
+    in.RowHeights[r] /= rowCounts[r];
+  }
+  in.Fitted = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkCameraRig::GetAzimuth(int i) const
+{
+  return (this->Internal->Fitted && i >= 0 && i < this->GetNumberOfViews())
+    ? this->Internal->Azimuth[i]
+    : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkCameraRig::GetHeight(int i) const
+{
+  return (this->Internal->Fitted && i >= 0 && i < this->GetNumberOfViews())
+    ? this->Internal->Height[i]
+    : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraRig::GetRow(int i) const
+{
+  return (this->Internal->Fitted && i >= 0 && i < this->GetNumberOfViews())
+    ? this->Internal->Row[i]
+    : -1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraRig::GetDuplicateOf(int i) const
+{
+  return (this->Internal->Fitted && i >= 0 && i < this->GetNumberOfViews())
+    ? this->Internal->DuplicateOf[i]
+    : -1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraRig::GetNumberOfRows() const
+{
+  return this->Internal->Fitted ? static_cast<int>(this->Internal->RowHeights.size()) : 0;
+}
+
+//------------------------------------------------------------------------------
+double vtkCameraRig::GetRowHeight(int row) const
+{
+  return (row >= 0 && row < this->GetNumberOfRows()) ? this->Internal->RowHeights[row] : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraRig::GetNumberOfDuplicates() const
+{
+  if (!this->Internal->Fitted)
+  {
+    return 0;
+  }
+  return static_cast<int>(std::count_if(this->Internal->DuplicateOf.begin(),
+    this->Internal->DuplicateOf.end(), [](int d) { return d >= 0; }));
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::GetSortedViews(vtkIdList* views) const
+{
+  views->Reset();
+  const int n = this->GetNumberOfViews();
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  if (this->Internal->Fitted)
+  {
+    const Internals& in = *this->Internal;
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return in.Row[a] != in.Row[b] ? in.Row[a] < in.Row[b] : in.Azimuth[a] < in.Azimuth[b];
+    });
+  }
+  for (int v : order)
+  {
+    views->InsertNextId(v);
+  }
+}
+
+//------------------------------------------------------------------------------
+lfd::RingLayout vtkCameraRig::GetRingLayout(const std::vector<int>& excluded)
+{
+  lfd::RingLayout layout;
+  if (!this->Internal->Fitted && !this->FitCylinder())
+  {
+    return layout;
+  }
+  const Internals& in = *this->Internal;
+  const int n = this->GetNumberOfViews();
+  auto group = [&](int v) { return in.DuplicateOf[v] >= 0 ? in.DuplicateOf[v] : v; };
+  std::vector<bool> skip(n, false);
+  for (int e : excluded)
+  {
+    if (e < 0 || e >= n)
+    {
+      continue;
+    }
+    for (int v = 0; v < n; ++v)
+    {
+      skip[v] = skip[v] || group(v) == group(e);
+    }
+  }
+  layout.Cyl = { ToVec(this->Center), ToVec(this->Axis), this->Radius };
+  layout.RefX = in.RefX;
+  layout.RefY = in.RefY;
+  layout.Rows.resize(in.RowHeights.size());
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return in.Azimuth[a] < in.Azimuth[b]; });
+  for (int v : order)
+  {
+    if (skip[v] || in.DuplicateOf[v] >= 0)
+    {
+      continue;
+    }
+    lfd::RingRow& row = layout.Rows[in.Row[v]];
+    row.Azimuth.push_back(in.Azimuth[v]);
+    row.View.push_back(v);
+  }
+  for (std::size_t r = 0; r < layout.Rows.size(); ++r)
+  {
+    layout.Rows[r].Height = in.RowHeights[r];
+  }
+  layout.Rows.erase(std::remove_if(layout.Rows.begin(), layout.Rows.end(),
+                      [](const lfd::RingRow& row) { return row.View.empty(); }),
+    layout.Rows.end());
+  return layout;
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::DeepCopy(vtkCameraRig* source)
+{
+  if (!source || source == this)
+  {
+    return;
+  }
+  *this->Internal = *source->Internal;
+  this->SetImageSize(source->ImageSize);
+  this->DuplicateTolerance = source->DuplicateTolerance;
+  this->RowTolerance = source->RowTolerance;
+  std::copy(source->Axis, source->Axis + 3, this->Axis);
+  std::copy(source->Center, source->Center + 3, this->Center);
+  this->Radius = source->Radius;
+  this->FitResidual = source->FitResidual;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfViews: " << this->GetNumberOfViews() << "\n";
+  os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
+  os << indent << "DuplicateTolerance: " << this->DuplicateTolerance << "\n";
+  os << indent << "RowTolerance: " << this->RowTolerance << "\n";
+  os << indent << "Cylinder fitted: " << (this->Internal->Fitted ? "yes" : "no") << "\n";
+  if (this->Internal->Fitted)
+  {
+    os << indent << "Axis: (" << this->Axis[0] << ", " << this->Axis[1] << ", " << this->Axis[2]
+       << ")\n";
+    os << indent << "Center: (" << this->Center[0] << ", " << this->Center[1] << ", "
+       << this->Center[2] << ")\n";
+    os << indent << "Radius: " << this->Radius << "\n";
+    os << indent << "FitResidual: " << this->FitResidual << "\n";
+    os << indent << "NumberOfRows: " << this->GetNumberOfRows() << "\n";
+    os << indent << "NumberOfDuplicates: " << this->GetNumberOfDuplicates() << "\n";
+  }
+}

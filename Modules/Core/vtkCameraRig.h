@@ -1,0 +1,246 @@
+/**
+ * @class   vtkCameraRig
+ * @brief   the calibrated cameras of a light field and the cylinder they lie on
+ *
+ * vtkCameraRig holds one pinhole camera per view in the OpenCV convention
+ * `x ~ K [R | t] X` (pixel origin at the centre of the top-left pixel, y
+ * down), all views sharing one image size. Matrices are passed as row-major
+ * arrays of 9 doubles.
+ *
+ * FitCylinder() fits the ring (or stack of rings) the camera centres lie on:
+ * the axis is the principal direction of the centres that best agrees with
+ * the cameras' image "up" (for a single ring it is the normal of the plane
+ * fitted by SVD), the centre and radius come from a least-squares circle fit
+ * in the plane orthogonal to the axis. Each view then gets an azimuth about
+ * the axis, a height along it and a row (views whose heights differ by less
+ * than RowTolerance x radius share a row). Views whose centres are closer than
+ * DuplicateTolerance x radius and look the same way are near-duplicates: the
+ * first of them (by index) is kept, the others report it in GetDuplicateOf()
+ * and are left out of the sampling layout.
+ *
+ * Real rings are not perfect cylinders (templeRing is tilted and has a gap):
+ * the cylinder is only used to choose neighbouring views; rays are always
+ * projected with each view's own calibration.
+ *
+ * @sa vtkLightField
+ */
+#ifndef vtkCameraRig_h
+#define vtkCameraRig_h
+
+#include "lfdCoreModule.h" // For export macro
+#include "vtkObject.h"
+
+#include <memory> // For std::unique_ptr
+#include <vector> // For std::vector
+
+class vtkCamera;
+class vtkIdList;
+
+#ifndef __VTK_WRAP__
+namespace lfd
+{
+struct PinholeCamera;
+struct RingLayout;
+}
+#endif
+
+class LFDCORE_EXPORT vtkCameraRig : public vtkObject
+{
+public:
+  static vtkCameraRig* New();
+  vtkTypeMacro(vtkCameraRig, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Number of views. Resizing keeps the first views and gives new ones an
+   * identity camera; it clears the cylinder fit.
+   */
+  void SetNumberOfViews(int n);
+  int GetNumberOfViews() const;
+  ///@}
+
+  ///@{
+  /**
+   * Image size in pixels, shared by all views.
+   */
+  vtkSetVector2Macro(ImageSize, int);
+  vtkGetVector2Macro(ImageSize, int);
+  ///@}
+
+  /**
+   * Sets view `i`: intrinsics K and rotation R (row-major 3x3) and the
+   * translation t. Clears the cylinder fit.
+   */
+  void SetView(int i, const double K[9], const double R[9], const double t[3]);
+
+  ///@{
+  /**
+   * Per-view calibration, row-major.
+   */
+  void GetIntrinsics(int i, double K[9]) const;
+  void GetRotation(int i, double R[9]) const;
+  void GetTranslation(int i, double t[3]) const;
+  ///@}
+
+  ///@{
+  /**
+   * Optional per-view name (e.g. the image file a view was imported from).
+   */
+  void SetViewName(int i, const char* name);
+  const char* GetViewName(int i) const;
+  ///@}
+
+  ///@{
+  /**
+   * Camera centre `-R^T t`, unit viewing direction and unit image "up"
+   * (camera -y) of view `i` in world space.
+   */
+  void GetCameraCenter(int i, double center[3]) const;
+  void GetViewDirection(int i, double direction[3]) const;
+  void GetViewUp(int i, double up[3]) const;
+  ///@}
+
+  /**
+   * Projects a world point into view `i` (OpenCV pixel coordinates).
+   * Returns false when the point is behind the camera.
+   */
+  bool Project(int i, const double point[3], double pixel[2]) const;
+
+  /**
+   * Points `camera` (position, focal point, view up, view angle, window
+   * centre) to reproduce view `i` in a vtkRenderer of the rig's image size.
+   * The vertical focal length fy sets the view angle; VTK cameras have square
+   * pixels, so fx is not represented (it is for synthetic rigs, fx = fy).
+   */
+  void ApplyToCamera(int i, vtkCamera* camera) const;
+
+  /**
+   * The pinhole (K, R, t, row-major) that a vtkCamera renders into a
+   * `width` x `height` window: the inverse of ApplyToCamera().
+   */
+  static void CameraToPinhole(
+    vtkCamera* camera, int width, int height, double K[9], double R[9], double t[3]);
+
+  /**
+   * Builds a cylindrical rig around an axis: `rows` rings of
+   * `viewsPerRing` cameras at `radius` from the axis (through `center`),
+   * rows at the given heights along the axis, every camera looking at the
+   * axis point of its own height, image "up" along the axis, vertical field
+   * of view `viewAngle` degrees and the given image size. The first camera
+   * of a ring sits at azimuth 0, on `center + radius * reference` where the
+   * reference is the axis-orthogonal part of +Z (or +X when the axis is Z).
+   */
+  void MakeCylinder(const double center[3], const double axis[3], double radius, int viewsPerRing,
+    int rows, const double* heights, int width, int height, double viewAngle);
+
+  ///@{
+  /**
+   * Tolerances of FitCylinder(), as fractions of the fitted radius: views
+   * closer than DuplicateTolerance (and looking the same way within 5
+   * degrees) are duplicates; views whose heights differ by less than
+   * RowTolerance share a row. Defaults 0.01 and 0.05.
+   */
+  vtkSetClampMacro(DuplicateTolerance, double, 0.0, 1.0);
+  vtkGetMacro(DuplicateTolerance, double);
+  vtkSetClampMacro(RowTolerance, double, 0.0, 10.0);
+  vtkGetMacro(RowTolerance, double);
+  ///@}
+
+  /**
+   * Fits the cylinder, azimuths, heights, rows and duplicates. Returns false
+   * (with an error) when there are fewer than 3 distinct camera centres or
+   * they are collinear.
+   */
+  bool FitCylinder();
+
+  /**
+   * True when the cylinder fit is current.
+   */
+  bool HasCylinder() const;
+
+  ///@{
+  /**
+   * Results of FitCylinder(). The axis is a unit vector oriented like the
+   * majority of the views' image "up"; the centre is on the axis at the mean
+   * height of the cameras. FitResidual is the RMS distance of the camera
+   * centres from the fitted cylinder.
+   */
+  vtkGetVector3Macro(Axis, double);
+  vtkGetVector3Macro(Center, double);
+  vtkGetMacro(Radius, double);
+  vtkGetMacro(FitResidual, double);
+  ///@}
+
+  ///@{
+  /**
+   * Per-view cylinder coordinates after FitCylinder(): azimuth in radians
+   * [0, 2 pi) about the axis, height along it, row index (rows are numbered
+   * by increasing height), and the index of the view this one duplicates
+   * (-1 for a view that duplicates none).
+   */
+  double GetAzimuth(int i) const;
+  double GetHeight(int i) const;
+  int GetRow(int i) const;
+  int GetDuplicateOf(int i) const;
+  ///@}
+
+  ///@{
+  /**
+   * Rows found by FitCylinder() and their mean heights.
+   */
+  int GetNumberOfRows() const;
+  double GetRowHeight(int row) const;
+  ///@}
+
+  /**
+   * Number of views that duplicate another one.
+   */
+  int GetNumberOfDuplicates() const;
+
+  /**
+   * View indices sorted by row, then azimuth (after FitCylinder()).
+   */
+  void GetSortedViews(vtkIdList* views) const;
+
+  /**
+   * Deep copy of another rig (calibration, names and fit).
+   */
+  void DeepCopy(vtkCameraRig* source);
+
+#ifndef __VTK_WRAP__
+  /**
+   * The pinhole camera of view `i` (kernel type).
+   */
+  const lfd::PinholeCamera& GetCamera(int i) const;
+
+  /**
+   * The sampling layout over the views that are not duplicates and not in
+   * `excluded` (used by leave-one-out). Fits the cylinder first when needed.
+   */
+  lfd::RingLayout GetRingLayout(const std::vector<int>& excluded = {});
+#endif
+
+protected:
+  vtkCameraRig();
+  ~vtkCameraRig() override;
+
+  int ImageSize[2] = { 0, 0 };
+  double DuplicateTolerance = 0.01;
+  double RowTolerance = 0.05;
+  double Axis[3] = { 0.0, 1.0, 0.0 };
+  double Center[3] = { 0.0, 0.0, 0.0 };
+  double Radius = 0.0;
+  double FitResidual = 0.0;
+
+private:
+  vtkCameraRig(const vtkCameraRig&) = delete;
+  void operator=(const vtkCameraRig&) = delete;
+
+  void ClearFit();
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

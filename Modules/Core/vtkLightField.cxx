@@ -1,0 +1,210 @@
+#include "vtkLightField.h"
+
+#include "vtkCameraRig.h"
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cctype>
+#include <string>
+
+vtkStandardNewMacro(vtkLightField);
+
+namespace
+{
+const char* const PassNames[vtkLightField::NUMBER_OF_PASSES] = { "Coaxial", "Coded", "Flood",
+  "Label", "Depth" };
+}
+
+//------------------------------------------------------------------------------
+vtkLightField::vtkLightField()
+{
+  this->Rig = vtkCameraRig::New();
+}
+
+//------------------------------------------------------------------------------
+vtkLightField::~vtkLightField()
+{
+  this->SetRig(nullptr);
+  this->SetProvenance(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkCxxSetObjectMacro(vtkLightField, Rig, vtkCameraRig);
+
+//------------------------------------------------------------------------------
+const char* vtkLightField::GetPassName(int pass)
+{
+  return (pass >= 0 && pass < NUMBER_OF_PASSES) ? PassNames[pass] : nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightField::GetPassFromName(const char* name)
+{
+  if (!name)
+  {
+    return -1;
+  }
+  std::string lower(name);
+  for (char& c : lower)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  for (int pass = 0; pass < NUMBER_OF_PASSES; ++pass)
+  {
+    std::string candidate(PassNames[pass]);
+    candidate[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(candidate[0])));
+    if (candidate == lower)
+    {
+      return pass;
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightField::GetPassComponents(int pass)
+{
+  return (pass == COAXIAL || pass == CODED || pass == FLOOD) ? 3 : 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightField::GetPassScalarType(int pass)
+{
+  return pass == DEPTH ? VTK_FLOAT : VTK_UNSIGNED_CHAR;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightField::SetLayout(int width, int height, int views)
+{
+  for (int pass = 0; pass < NUMBER_OF_PASSES; ++pass)
+  {
+    this->GetPointData()->RemoveArray(PassNames[pass]);
+  }
+  this->SetOrigin(0.0, 0.0, 0.0);
+  this->SetSpacing(1.0, 1.0, 1.0);
+  this->SetDimensions(width, height, views);
+}
+
+//------------------------------------------------------------------------------
+int vtkLightField::GetWidth()
+{
+  return this->GetDimensions()[0];
+}
+
+//------------------------------------------------------------------------------
+int vtkLightField::GetHeight()
+{
+  return this->GetDimensions()[1];
+}
+
+//------------------------------------------------------------------------------
+int vtkLightField::GetNumberOfViews()
+{
+  return this->GetDimensions()[2];
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkLightField::GetPass(int pass)
+{
+  const char* name = GetPassName(pass);
+  return name ? this->GetPointData()->GetArray(name) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkLightField::AllocatePass(int pass)
+{
+  const char* name = GetPassName(pass);
+  if (!name)
+  {
+    vtkErrorMacro("AllocatePass: invalid pass " << pass << ".");
+    return nullptr;
+  }
+  vtkSmartPointer<vtkDataArray> array;
+  if (GetPassScalarType(pass) == VTK_FLOAT)
+  {
+    array = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  else
+  {
+    array = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  }
+  array->SetName(name);
+  array->SetNumberOfComponents(GetPassComponents(pass));
+  array->SetNumberOfTuples(this->GetNumberOfPoints());
+  array->Fill(0.0);
+  this->GetPointData()->AddArray(array);
+  if (pass == COAXIAL)
+  {
+    this->GetPointData()->SetActiveScalars(name);
+  }
+  return array;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkLightField::GetPointIndex(int view, int x, int y)
+{
+  const int* dims = this->GetDimensions();
+  return (static_cast<vtkIdType>(view) * dims[1] + (dims[1] - 1 - y)) * dims[0] + x;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightField::ShallowCopy(vtkDataObject* source)
+{
+  if (vtkLightField* lightField = vtkLightField::SafeDownCast(source))
+  {
+    this->SetRig(lightField->GetRig());
+    this->SetProvenance(lightField->GetProvenance());
+  }
+  this->Superclass::ShallowCopy(source);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightField::DeepCopy(vtkDataObject* source)
+{
+  if (vtkLightField* lightField = vtkLightField::SafeDownCast(source))
+  {
+    vtkNew<vtkCameraRig> rig;
+    rig->DeepCopy(lightField->GetRig());
+    this->SetRig(rig);
+    this->SetProvenance(lightField->GetProvenance());
+  }
+  this->Superclass::DeepCopy(source);
+}
+
+//------------------------------------------------------------------------------
+vtkLightField* vtkLightField::GetData(vtkInformation* info)
+{
+  return info ? vtkLightField::SafeDownCast(info->Get(DATA_OBJECT())) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkLightField* vtkLightField::GetData(vtkInformationVector* v, int i)
+{
+  return vtkLightField::GetData(v->GetInformationObject(i));
+}
+
+//------------------------------------------------------------------------------
+void vtkLightField::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Passes:";
+  for (int pass = 0; pass < NUMBER_OF_PASSES; ++pass)
+  {
+    if (this->GetPass(pass))
+    {
+      os << " " << PassNames[pass];
+    }
+  }
+  os << "\n";
+  os << indent << "Provenance: " << (this->Provenance ? this->Provenance : "(none)") << "\n";
+  os << indent << "Rig:\n";
+  this->Rig->PrintSelf(os, indent.GetNextIndent());
+}

@@ -1,0 +1,9 @@
+"""LightField Deform: interactive deformation of light fields, on VTK.
+
+Every public class of the C++ modules is available here::
+
+    import lfd
+    source = lfd.vtkLightFieldReader()
+"""
+
+from .lfdCore import *  # noqa: F401,F403
