@@ -49,8 +49,10 @@ struct Cylinder
  * the cylinder or runs parallel to its axis. Uses the cancellation-free form
  * of the quadratic roots.
  */
-inline bool IntersectCylinderEntry(
-  const Cylinder& cylinder, const glm::dvec3& o, const glm::dvec3& d, double& s)
+inline bool IntersectCylinderEntry(const Cylinder& cylinder,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  double& s)
 {
   const glm::dvec3& a = cylinder.Axis;
   const glm::dvec3 oc = o - cylinder.Center;
@@ -81,8 +83,10 @@ inline bool IntersectCylinderEntry(
  * point where the ray passes closest to the rig axis. focalDistance = 0 puts
  * the focal plane through the axis.
  */
-inline glm::dvec3 FocalPoint(
-  const Cylinder& cylinder, const glm::dvec3& o, const glm::dvec3& d, double focalDistance)
+inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  double focalDistance)
 {
   // Closest approach of the lines o + s d and c + u a.
   const glm::dvec3& a = cylinder.Axis;
@@ -127,6 +131,10 @@ struct RingLayout
     if (azimuth < 0.0)
     {
       azimuth += TwoPi;
+      if (azimuth >= TwoPi) // -0.0 and tiny negative angles round up to 2 pi
+      {
+        azimuth = 0.0;
+      }
     }
   }
 };
@@ -209,7 +217,7 @@ inline int ChooseViews(const RingLayout& layout, double azimuth, double height, 
  * Pixels of all views of one pass, stacked view after view. Rows are stored
  * in VTK order (bottom image row first), as vtkLightField stores them.
  */
-template <typename T>
+template<typename T>
 struct ViewStack
 {
   const T* Data = nullptr;

@@ -123,8 +123,8 @@ void vtkCameraRig::SetView(int i, const double K[9], const double R[9], const do
 {
   if (i < 0 || i >= this->GetNumberOfViews())
   {
-    vtkErrorMacro("SetView: view " << i << " out of range [0, " << this->GetNumberOfViews()
-                                   << ").");
+    vtkErrorMacro(
+      "SetView: view " << i << " out of range [0, " << this->GetNumberOfViews() << ").");
     return;
   }
   this->Internal->Cameras[i] = lfd::PinholeCamera::FromRowMajor(K, R, t);
@@ -244,8 +244,12 @@ void vtkCameraRig::ApplyToCamera(int i, vtkCamera* camera) const
 }
 
 //------------------------------------------------------------------------------
-void vtkCameraRig::CameraToPinhole(
-  vtkCamera* camera, int width, int height, double K[9], double R[9], double t[3])
+void vtkCameraRig::CameraToPinhole(vtkCamera* camera,
+  int width,
+  int height,
+  double K[9],
+  double R[9],
+  double t[3])
 {
   const glm::dvec3 position = ToVec(camera->GetPosition());
   const glm::dvec3 forward = glm::normalize(ToVec(camera->GetFocalPoint()) - position);
@@ -260,7 +264,8 @@ void vtkCameraRig::CameraToPinhole(
     rotation[col][1] = down[col];
     rotation[col][2] = forward[col];
   }
-  const double fy = 0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(camera->GetViewAngle()));
+  const double fy =
+    0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(camera->GetViewAngle()));
   const double* wc = camera->GetWindowCenter();
   glm::dmat3 intrinsics(1.0);
   intrinsics[0][0] = fy;
@@ -273,8 +278,15 @@ void vtkCameraRig::CameraToPinhole(
 }
 
 //------------------------------------------------------------------------------
-void vtkCameraRig::MakeCylinder(const double center[3], const double axis[3], double radius,
-  int viewsPerRing, int rows, const double* heights, int width, int height, double viewAngle)
+void vtkCameraRig::MakeCylinder(const double center[3],
+  const double axis[3],
+  double radius,
+  int viewsPerRing,
+  int rows,
+  const double* heights,
+  int width,
+  int height,
+  double viewAngle)
 {
   if (viewsPerRing < 1 || rows < 1 || radius <= 0.0 || width < 1 || height < 1 ||
     !(viewAngle > 0.0 && viewAngle < 180.0))
@@ -300,10 +312,12 @@ void vtkCameraRig::MakeCylinder(const double center[3], const double axis[3], do
       const glm::dvec3 forward = glm::normalize(target - position);
       const glm::dvec3 down = -a;
       const glm::dvec3 right = glm::cross(down, forward);
-      const double R[9] = { right.x, right.y, right.z, down.x, down.y, down.z, forward.x,
-        forward.y, forward.z };
-      const double t[3] = { -glm::dot(right, position), -glm::dot(down, position),
-        -glm::dot(forward, position) };
+      const double R[9] = {
+        right.x, right.y, right.z, down.x, down.y, down.z, forward.x, forward.y, forward.z
+      };
+      const double t[3] = {
+        -glm::dot(right, position), -glm::dot(down, position), -glm::dot(forward, position)
+      };
       this->SetView(r * viewsPerRing + k, K, R, t);
     }
   }
@@ -516,9 +530,8 @@ double vtkCameraRig::GetHeight(int i) const
 //------------------------------------------------------------------------------
 int vtkCameraRig::GetRow(int i) const
 {
-  return (this->Internal->Fitted && i >= 0 && i < this->GetNumberOfViews())
-    ? this->Internal->Row[i]
-    : -1;
+  return (this->Internal->Fitted && i >= 0 && i < this->GetNumberOfViews()) ? this->Internal->Row[i]
+                                                                            : -1;
 }
 
 //------------------------------------------------------------------------------
@@ -549,7 +562,8 @@ int vtkCameraRig::GetNumberOfDuplicates() const
     return 0;
   }
   return static_cast<int>(std::count_if(this->Internal->DuplicateOf.begin(),
-    this->Internal->DuplicateOf.end(), [](int d) { return d >= 0; }));
+    this->Internal->DuplicateOf.end(),
+    [](int d) { return d >= 0; }));
 }
 
 //------------------------------------------------------------------------------
@@ -562,9 +576,10 @@ void vtkCameraRig::GetSortedViews(vtkIdList* views) const
   if (this->Internal->Fitted)
   {
     const Internals& in = *this->Internal;
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-      return in.Row[a] != in.Row[b] ? in.Row[a] < in.Row[b] : in.Azimuth[a] < in.Azimuth[b];
-    });
+    std::stable_sort(order.begin(),
+      order.end(),
+      [&](int a, int b)
+      { return in.Row[a] != in.Row[b] ? in.Row[a] < in.Row[b] : in.Azimuth[a] < in.Azimuth[b]; });
   }
   for (int v : order)
   {
@@ -601,7 +616,8 @@ lfd::RingLayout vtkCameraRig::GetRingLayout(const std::vector<int>& excluded)
   layout.Rows.resize(in.RowHeights.size());
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return in.Azimuth[a] < in.Azimuth[b]; });
+  std::sort(
+    order.begin(), order.end(), [&](int a, int b) { return in.Azimuth[a] < in.Azimuth[b]; });
   for (int v : order)
   {
     if (skip[v] || in.DuplicateOf[v] >= 0)
@@ -616,7 +632,8 @@ lfd::RingLayout vtkCameraRig::GetRingLayout(const std::vector<int>& excluded)
   {
     layout.Rows[r].Height = in.RowHeights[r];
   }
-  layout.Rows.erase(std::remove_if(layout.Rows.begin(), layout.Rows.end(),
+  layout.Rows.erase(std::remove_if(layout.Rows.begin(),
+                      layout.Rows.end(),
                       [](const lfd::RingRow& row) { return row.View.empty(); }),
     layout.Rows.end());
   return layout;

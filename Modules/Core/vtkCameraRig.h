@@ -119,8 +119,12 @@ public:
    * The pinhole (K, R, t, row-major) that a vtkCamera renders into a
    * `width` x `height` window: the inverse of ApplyToCamera().
    */
-  static void CameraToPinhole(
-    vtkCamera* camera, int width, int height, double K[9], double R[9], double t[3]);
+  static void CameraToPinhole(vtkCamera* camera,
+    int width,
+    int height,
+    double K[9],
+    double R[9],
+    double t[3]);
 
   /**
    * Builds a cylindrical rig around an axis: `rows` rings of
@@ -131,8 +135,15 @@ public:
    * of a ring sits at azimuth 0, on `center + radius * reference` where the
    * reference is the axis-orthogonal part of +Z (or +X when the axis is Z).
    */
-  void MakeCylinder(const double center[3], const double axis[3], double radius, int viewsPerRing,
-    int rows, const double* heights, int width, int height, double viewAngle);
+  void MakeCylinder(const double center[3],
+    const double axis[3],
+    double radius,
+    int viewsPerRing,
+    int rows,
+    const double* heights,
+    int width,
+    int height,
+    double viewAngle);
 
   ///@{
   /**

@@ -19,8 +19,11 @@ vtkStandardNewMacro(vtkLightField);
 
 namespace
 {
-const char* const PassNames[vtkLightField::NUMBER_OF_PASSES] = { "Coaxial", "Coded", "Flood",
-  "Label", "Depth" };
+const char* const PassNames[vtkLightField::NUMBER_OF_PASSES] = { "Coaxial",
+  "Coded",
+  "Flood",
+  "Label",
+  "Depth" };
 }
 
 //------------------------------------------------------------------------------

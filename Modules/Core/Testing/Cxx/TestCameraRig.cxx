@@ -1,1 +1,175 @@
-int TestCameraRig(int, char*[]) { return 0; }
+// Cylinder fit of vtkCameraRig: a noisy, tilted synthetic ring with a
+// near-duplicate and a view rolled by 180 degrees, a three-row rig, and the
+// refusal of a degenerate rig.
+#include "lfdCylinderSampling.h"
+#include "vtkCameraRig.h"
+#include "vtkIdList.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkTestErrorObserver.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+
+namespace
+{
+int failures = 0;
+
+void Check(bool ok, const char* what, double value, double limit)
+{
+  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (limit " << limit << ")\n";
+  failures += ok ? 0 : 1;
+}
+
+// A camera at `position` looking at `target`, image up along `up`.
+void SetLookAt(vtkCameraRig* rig,
+  int view,
+  const double position[3],
+  const double target[3],
+  const double up[3])
+{
+  double z[3] = { target[0] - position[0], target[1] - position[1], target[2] - position[2] };
+  vtkMath::Normalize(z);
+  double y[3] = { -up[0], -up[1], -up[2] };
+  const double d = vtkMath::Dot(y, z);
+  for (int c = 0; c < 3; ++c)
+  {
+    y[c] -= d * z[c];
+  }
+  vtkMath::Normalize(y);
+  double x[3];
+  vtkMath::Cross(y, z, x);
+  const double K[9] = { 500, 0, 319.5, 0, 500, 239.5, 0, 0, 1 };
+  const double R[9] = { x[0], x[1], x[2], y[0], y[1], y[2], z[0], z[1], z[2] };
+  const double t[3] = {
+    -vtkMath::Dot(x, position), -vtkMath::Dot(y, position), -vtkMath::Dot(z, position)
+  };
+  rig->SetView(view, K, R, t);
+}
+}
+
+int TestCameraRig(int, char*[])
+{
+  // A tilted ring of 60 cameras, 1 cm noise on a 5 m radius, plus a near
+  // duplicate of view 7 and a copy of view 20 rolled by 180 degrees.
+  const double center[3] = { 1.0, 2.0, 3.0 };
+  double axis[3] = { 0.2, 1.0, 0.1 };
+  vtkMath::Normalize(axis);
+  double u[3], v[3];
+  vtkMath::Perpendiculars(axis, u, v, 0.0);
+  const double radius = 5.0;
+  const int ring = 60;
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.01);
+
+  vtkNew<vtkCameraRig> rig;
+  rig->SetImageSize(640, 480);
+  rig->SetNumberOfViews(ring + 2);
+  double positions[ring][3];
+  for (int i = 0; i < ring; ++i)
+  {
+    const double phi = 2.0 * vtkMath::Pi() * i / ring;
+    for (int c = 0; c < 3; ++c)
+    {
+      positions[i][c] =
+        center[c] + radius * (std::cos(phi) * u[c] + std::sin(phi) * v[c]) + noise(rng);
+    }
+    SetLookAt(rig, i, positions[i], center, axis);
+  }
+  double nearDuplicate[3] = { positions[7][0] + 0.002, positions[7][1], positions[7][2] };
+  SetLookAt(rig, ring, nearDuplicate, center, axis);
+  const double down[3] = { -axis[0], -axis[1], -axis[2] };
+  SetLookAt(rig, ring + 1, positions[20], center, down);
+
+  if (!rig->FitCylinder())
+  {
+    std::cout << "FAIL FitCylinder refused a valid ring\n";
+    return EXIT_FAILURE;
+  }
+  const double angle =
+    vtkMath::DegreesFromRadians(std::acos(std::min(1.0, vtkMath::Dot(rig->GetAxis(), axis))));
+  Check(angle < 0.5, "axis error (degrees)", angle, 0.5);
+  const double centerError = std::sqrt(vtkMath::Distance2BetweenPoints(rig->GetCenter(), center));
+  Check(centerError < 0.02, "centre error", centerError, 0.02);
+  Check(std::abs(rig->GetRadius() - radius) < 0.01,
+    "radius error",
+    std::abs(rig->GetRadius() - radius),
+    0.01);
+  Check(rig->GetFitResidual() < 0.03, "RMS residual", rig->GetFitResidual(), 0.03);
+  Check(rig->GetNumberOfRows() == 1, "rows", rig->GetNumberOfRows(), 1);
+  Check(rig->GetNumberOfDuplicates() == 2, "duplicates", rig->GetNumberOfDuplicates(), 2);
+  Check(rig->GetDuplicateOf(ring) == 7, "duplicate of view 60", rig->GetDuplicateOf(ring), 7);
+  Check(
+    rig->GetDuplicateOf(ring + 1) == 20, "duplicate of view 61", rig->GetDuplicateOf(ring + 1), 20);
+  Check(rig->GetDuplicateOf(5) == -1, "view 5 is no duplicate", rig->GetDuplicateOf(5), -1);
+
+  // Azimuths follow the ring order, starting at 0 on view 0.
+  double maxStepError = 0.0;
+  for (int i = 1; i < ring; ++i)
+  {
+    const double step = rig->GetAzimuth(i) - rig->GetAzimuth(i - 1);
+    maxStepError = std::max(maxStepError, std::abs(std::abs(step) - 2.0 * vtkMath::Pi() / ring));
+  }
+  Check(maxStepError < 0.01, "azimuth step error (rad)", maxStepError, 0.01);
+  Check(rig->GetAzimuth(0) == 0.0, "azimuth of view 0", rig->GetAzimuth(0), 0.0);
+
+  // The sampling layout leaves duplicates out; leave-one-out of view 7 also
+  // removes its duplicate.
+  lfd::RingLayout layout = rig->GetRingLayout();
+  Check(layout.Rows.size() == 1 && layout.Rows[0].View.size() == ring,
+    "views in layout",
+    static_cast<double>(layout.Rows[0].View.size()),
+    ring);
+  layout = rig->GetRingLayout({ ring });
+  Check(layout.Rows[0].View.size() == ring - 1,
+    "views in layout without view 60's group",
+    static_cast<double>(layout.Rows[0].View.size()),
+    ring - 1);
+
+  // Three rows from MakeCylinder.
+  vtkNew<vtkCameraRig> rows;
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double yAxis[3] = { 0.0, 1.0, 0.0 };
+  const double heights[3] = { -0.5, 0.0, 0.5 };
+  rows->MakeCylinder(origin, yAxis, 3.0, 40, 3, heights, 64, 64, 30.0);
+  rows->FitCylinder();
+  Check(rows->GetNumberOfViews() == 120, "views", rows->GetNumberOfViews(), 120);
+  Check(rows->GetNumberOfRows() == 3, "rows", rows->GetNumberOfRows(), 3);
+  Check(std::abs(rows->GetRadius() - 3.0) < 1e-9, "radius error", rows->GetRadius() - 3.0, 1e-9);
+  Check(std::abs(rows->GetRowHeight(2) - 0.5) < 1e-9, "row 2 height", rows->GetRowHeight(2), 0.5);
+  Check(rows->GetNumberOfDuplicates() == 0, "duplicates", rows->GetNumberOfDuplicates(), 0);
+  Check(rows->GetAxis()[1] > 0.999999, "axis +Y", rows->GetAxis()[1], 1.0);
+  vtkNew<vtkIdList> sorted;
+  rows->GetSortedViews(sorted);
+  Check(sorted->GetNumberOfIds() == 120 && sorted->GetId(0) == 0 && sorted->GetId(40) == 40,
+    "sorted views",
+    static_cast<double>(sorted->GetId(40)),
+    40);
+  double c0[3];
+  rows->GetCameraCenter(0, c0);
+  Check(std::abs(c0[2] - 3.0) < 1e-12 && std::abs(c0[1] + 0.5) < 1e-12,
+    "view 0 at +Z of the lowest row",
+    c0[2],
+    3.0);
+
+  // A degenerate rig is refused with an error.
+  vtkNew<vtkCameraRig> line;
+  line->SetNumberOfViews(3);
+  for (int i = 0; i < 3; ++i)
+  {
+    const double p[3] = { static_cast<double>(i), 0.0, 0.0 };
+    const double target[3] = { static_cast<double>(i), 0.0, 1.0 };
+    SetLookAt(line, i, p, target, yAxis);
+  }
+  vtkNew<vtkTest::ErrorObserver> observer;
+  line->AddObserver(vtkCommand::ErrorEvent, observer);
+  const bool refused = !line->FitCylinder() && observer->GetError();
+  Check(refused, "collinear rig refused", refused, 1);
+  if (refused)
+  {
+    std::cout << "     message: " << observer->GetErrorMessage();
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

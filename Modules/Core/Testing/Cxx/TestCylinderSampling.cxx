@@ -1,0 +1,126 @@
+// The cylindrical sampling kernel (Sec. 6.2): entry intersection, choice of
+// the neighbouring views and their weights (including the wrap-around of the
+// ring and two rows), and label-aware blending, on a light field whose views
+// are flat colours so that every expected value is exact.
+#include "lfdCylinderSampling.h"
+#include "vtkCameraRig.h"
+#include "vtkDataArray.h"
+#include "vtkLightField.h"
+#include "vtkNew.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+namespace
+{
+int failures = 0;
+
+void Expect(const char* what, double value, double expected, double tolerance = 1e-9)
+{
+  const bool ok = std::abs(value - expected) <= tolerance;
+  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (expected " << expected
+            << ")\n";
+  failures += ok ? 0 : 1;
+}
+
+// The ray from far outside the ring at azimuth `phi` (radians, measured like
+// the rig: from +Z towards +X for a +Y axis) and height `h`, aimed at the axis.
+void RayAt(double phi, double h, glm::dvec3& o, glm::dvec3& d)
+{
+  o = glm::dvec3(10.0 * std::sin(phi), h, 10.0 * std::cos(phi));
+  d = glm::normalize(glm::dvec3(0.0, h, 0.0) - o);
+}
+}
+
+int TestCylinderSampling(int, char*[])
+{
+  // Entry intersection.
+  lfd::Cylinder cylinder;
+  cylinder.Radius = 4.0;
+  double s = 0.0;
+  Expect("entry parameter",
+    lfd::IntersectCylinderEntry(cylinder, { 0, 0, 10 }, { 0, 0, -1 }, s) ? s : -1,
+    6.0);
+  Expect("ray parallel to the axis misses",
+    lfd::IntersectCylinderEntry(cylinder, { 0, 0, 10 }, { 0, 1, 0 }, s),
+    0.0);
+  Expect("ray outside misses",
+    lfd::IntersectCylinderEntry(cylinder, { 5, 0, 10 }, { 0, 0, -1 }, s),
+    0.0);
+  const glm::dvec3 focal = lfd::FocalPoint(cylinder, { 1, 2, 10 }, { 0, 0, -2 }, 0.5);
+  Expect("focal point z", focal.z, 0.5);
+
+  // One ring of 8 flat-coloured views: view v is (10 v, 0, 0), label v % 2 + 1.
+  const int views = 8;
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double axis[3] = { 0.0, 1.0, 0.0 };
+  const double heights[2] = { -1.0, 1.0 };
+  vtkNew<vtkLightField> lf;
+  lf->SetLayout(16, 16, views);
+  lf->GetRig()->MakeCylinder(origin, axis, 4.0, views, 1, heights + 1, 16, 16, 40.0);
+  vtkDataArray* rgb = lf->AllocatePass(vtkLightField::COAXIAL);
+  vtkDataArray* label = lf->AllocatePass(vtkLightField::LABEL);
+  for (vtkIdType p = 0; p < lf->GetNumberOfPoints(); ++p)
+  {
+    const int v = static_cast<int>(p / 256);
+    rgb->SetComponent(p, 0, 10.0 * v);
+    label->SetComponent(p, 0, v % 2 + 1);
+  }
+  std::vector<lfd::PinholeCamera> cameras(views);
+  for (int v = 0; v < views; ++v)
+  {
+    cameras[v] = lf->GetRig()->GetCamera(v);
+  }
+  lfd::RingLayout layout = lf->GetRig()->GetRingLayout();
+  lfd::LightFieldSampler sampler;
+  sampler.Layout = &layout;
+  sampler.Cameras = cameras.data();
+  sampler.Radiance = { static_cast<vtkUnsignedCharArray*>(rgb)->GetPointer(0), 16, 16, 3 };
+  sampler.Labels = { static_cast<vtkUnsignedCharArray*>(label)->GetPointer(0), 16, 16, 1 };
+
+  const double step = lfd::TwoPi / views;
+  lfd::RaySamples samples;
+  glm::dvec3 o, d, color;
+  RayAt(2.25 * step, 0.0, o, d);
+  sampler.Gather(o, d, samples);
+  Expect("samples of a single-ring ray", samples.Count, 8);
+  Expect("label vote (0.75 of view 2)", lfd::VoteLabel(samples), 1);
+  Expect("weight of label 1", lfd::BlendLabel(samples, 1, color), 0.75);
+  Expect("colour of label 1 (view 2 only)", color.r, 20.0);
+  Expect("weight of label 2", lfd::BlendLabel(samples, 2, color), 0.25);
+  Expect("colour of label 2 (view 3 only)", color.r, 30.0);
+
+  // Wrap-around between view 7 and view 0: all labels set to 1 by asking
+  // for the azimuth in the middle, where the two labels tie.
+  RayAt(7.5 * step, 0.0, o, d);
+  sampler.Labels.Data = nullptr;
+  sampler.Gather(o, d, samples);
+  lfd::BlendLabel(samples, 0, color);
+  Expect("colour across the ring's seam", color.r, 35.0);
+
+  // Two rows at heights -1 and 1: a ray at height 0.5 weighs 0.25 / 0.75.
+  vtkNew<vtkLightField> two;
+  two->SetLayout(16, 16, 2 * views);
+  two->GetRig()->MakeCylinder(origin, axis, 4.0, views, 2, heights, 16, 16, 40.0);
+  layout = two->GetRig()->GetRingLayout();
+  Expect("rows", static_cast<double>(layout.Rows.size()), 2);
+  lfd::WeightedView chosen[4];
+  const int n = lfd::ChooseViews(layout, 1.5 * step, 0.5, chosen);
+  Expect("views chosen between two rows", n, 4);
+  Expect("weight of the lower row", chosen[0].Weight + chosen[1].Weight, 0.25);
+  Expect("upper row, view 9", chosen[2].View, 9);
+  Expect("upper row, view 9 weight", chosen[2].Weight, 0.375);
+  Expect("clamped above the top row", lfd::ChooseViews(layout, 0.0, 3.0, chosen), 2);
+  Expect("clamped view is in the top row", chosen[0].View >= views, 1);
+
+  // Leaving view 2 out widens the bracket to views 1 and 3.
+  layout = lf->GetRig()->GetRingLayout({ 2 });
+  sampler.Layout = &layout;
+  RayAt(2.5 * step, 0.0, o, d);
+  sampler.Gather(o, d, samples);
+  lfd::BlendLabel(samples, 0, color);
+  Expect("leave-one-out colour (views 1 and 3, weights 1/4, 3/4)", color.r, 25.0);
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
