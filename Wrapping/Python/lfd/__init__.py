@@ -7,3 +7,4 @@ Every public class of the C++ modules is available here::
 """
 
 from .lfdCore import *  # noqa: F401,F403
+from .lfdRendering import *  # noqa: F401,F403

@@ -1,0 +1,144 @@
+/**
+ * @class   vtkLightFieldRenderer
+ * @brief   renders a new view of a cylindrical light field on the CPU
+ *
+ * vtkLightFieldRenderer takes a vtkLightField on its input and produces the
+ * image a pinhole camera would see: one ray per pixel, each ray looked up in
+ * the light field by cylindrical sampling (Chen, Ofek, Shum and Levoy,
+ * "Interactive Deformation of Light Fields", I3D 2005, Sec. 6.2; see
+ * lfdCylinderSampling.h): the two views around the ray's azimuth in the one
+ * or two rows around its height, the ray's focal point projected through each
+ * view's real calibration, 16 rays interpolated quadrilinearly.
+ *
+ * When the light field has a `Label` pass the colour of a ray is the mean of
+ * the samples that carry the winning label only (labels are never averaged),
+ * and rays whose winning label is 0 (background) get the Background colour.
+ *
+ * The camera is either a vtkCamera rendered into a Width x Height image (as
+ * a vtkRenderer of that size would show it) or an explicit OpenCV pinhole
+ * (SetPinhole), which is how a captured view is re-rendered for leave-one-out
+ * evaluation. Views can be excluded from the sampling (with their
+ * near-duplicates, see vtkCameraRig).
+ *
+ * The output is a Width x Height vtkImageData in VTK row order (bottom row
+ * first) with the point arrays `Radiance` (RGB uint8, the active scalars)
+ * and `Label` (uint8, the winning label; 0 also where no view sees the ray).
+ * Rendering runs in parallel over image rows with vtkSMPTools.
+ *
+ * @sa vtkLightField vtkCameraRig vtkLeaveOneOutEvaluator
+ */
+#ifndef vtkLightFieldRenderer_h
+#define vtkLightFieldRenderer_h
+
+#include "lfdRenderingModule.h" // For export macro
+#include "vtkImageAlgorithm.h"
+
+#include <vector> // For std::vector
+
+class vtkCamera;
+
+class LFDRENDERING_EXPORT vtkLightFieldRenderer : public vtkImageAlgorithm
+{
+public:
+  static vtkLightFieldRenderer* New();
+  vtkTypeMacro(vtkLightFieldRenderer, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The camera to render from (a vtkRenderer's camera, for instance).
+   * Setting a camera replaces a pinhole set with SetPinhole().
+   */
+  virtual void SetCamera(vtkCamera* camera);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  ///@}
+
+  /**
+   * Renders from an explicit OpenCV pinhole (row-major K and R, and t) instead
+   * of a vtkCamera; removes the camera. The image size still comes from
+   * Width and Height.
+   */
+  void SetPinhole(const double K[9], const double R[9], const double t[3]);
+
+  ///@{
+  /**
+   * Output image size in pixels. Default 512 x 512.
+   */
+  vtkSetClampMacro(Width, int, 1, VTK_INT_MAX);
+  vtkGetMacro(Width, int);
+  vtkSetClampMacro(Height, int, 1, VTK_INT_MAX);
+  vtkGetMacro(Height, int);
+  ///@}
+
+  ///@{
+  /**
+   * Focal distance d of the paper: the focal plane is orthogonal to each ray
+   * and lies d in front of (towards the viewer from) the point where the ray
+   * passes closest to the rig axis. Default 0: the plane contains the axis.
+   */
+  vtkSetMacro(FocalDistance, double);
+  vtkGetMacro(FocalDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Colour (RGB in [0, 1]) of rays that see background (label 0) or no view.
+   * Default black.
+   */
+  vtkSetVector3Macro(Background, double);
+  vtkGetVector3Macro(Background, double);
+  ///@}
+
+  ///@{
+  /**
+   * Use the Label pass (when present) for label-aware blending. Default on.
+   */
+  vtkSetMacro(UseLabels, bool);
+  vtkGetMacro(UseLabels, bool);
+  vtkBooleanMacro(UseLabels, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Views left out of the sampling, with their near-duplicates
+   * (leave-one-out evaluation).
+   */
+  void AddExcludedView(int view);
+  void RemoveAllExcludedViews();
+  int GetNumberOfExcludedViews() const;
+  ///@}
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkLightFieldRenderer();
+  ~vtkLightFieldRenderer() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestUpdateExtent(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  vtkCamera* Camera = nullptr;
+  double PinholeK[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  double PinholeR[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  double PinholeT[3] = { 0, 0, 0 };
+  int Width = 512;
+  int Height = 512;
+  double FocalDistance = 0.0;
+  double Background[3] = { 0.0, 0.0, 0.0 };
+  bool UseLabels = true;
+  std::vector<int> ExcludedViews;
+
+private:
+  vtkLightFieldRenderer(const vtkLightFieldRenderer&) = delete;
+  void operator=(const vtkLightFieldRenderer&) = delete;
+};
+
+#endif
