@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs what LightField Deform needs on Debian 12 (apt only), then
+# configures and builds it in ./build. Safe to run again: packages already
+# present are not reinstalled and the build is incremental.
+#
+#   Utilities/setup.sh            install + configure + build
+#   LFD_BUILD_DIR=dir ...         build somewhere else
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${LFD_BUILD_DIR:-$here/build}
+
+packages=(
+  cmake ninja-build g++ pkg-config
+  libvtk9-dev python3-vtk9 python3-numpy
+  libopenimageio-dev openimageio-tools
+  libglm-dev nlohmann-json3-dev libcli11-dev
+  xvfb xauth
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "== installing: ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo=sudo
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+echo "== configuring in $build"
+cmake -S "$here" -B "$build" -G Ninja \
+  -DCMAKE_BUILD_TYPE=Release \
+  -DPython3_EXECUTABLE=/usr/bin/python3 \
+  -DBUILD_TESTING=ON
+echo "== building"
+cmake --build "$build" -j "$(nproc)"
