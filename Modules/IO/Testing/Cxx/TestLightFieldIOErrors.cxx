@@ -1,0 +1,255 @@
+// Every malformed light-field dataset must fail with one line naming the
+// file and the field; failed writes must leave nothing that looks valid.
+#include "lfdIOTestUtilities.h"
+
+#include "vtkCameraRig.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkLightField.h"
+#include "vtkLightFieldReader.h"
+#include "vtkLightFieldWriter.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <functional>
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace
+{
+constexpr int Width = 6;
+constexpr int Height = 4;
+constexpr int Views = 3;
+
+vtkSmartPointer<vtkLightField> MakeLightField(int fill)
+{
+  auto lightField = vtkSmartPointer<vtkLightField>::New();
+  lightField->SetLayout(Width, Height, Views);
+  lightField->AllocatePass(vtkLightField::COAXIAL)->Fill(fill);
+  lightField->AllocatePass(vtkLightField::LABEL)->Fill(1);
+  vtkNew<vtkCameraRig> rig;
+  const double center[3] = { 0, 0, 0 };
+  const double axis[3] = { 0, 1, 0 };
+  const double height = 0.0;
+  rig->MakeCylinder(center, axis, 1.0, Views, 1, &height, Width, Height, 30.0);
+  lightField->SetRig(rig);
+  return lightField;
+}
+
+bool Write(vtkLightField* lightField, const std::string& directory, std::string& message)
+{
+  vtkNew<vtkLightFieldWriter> writer;
+  vtkNew<lfdtest::ErrorCatcher> catcher;
+  catcher->Observe(writer);
+  writer->SetInputData(lightField);
+  writer->SetDirectory(directory.c_str());
+  const int ok = writer->Write();
+  message = writer->GetErrorMessage();
+  return ok == 1 && writer->GetErrorCode() == 0;
+}
+
+// Reads `path`; returns true on success, the error message in `message`.
+bool Read(const std::string& path, std::string& message, int* views = nullptr)
+{
+  vtkNew<vtkLightFieldReader> reader;
+  vtkNew<lfdtest::ErrorCatcher> catcher;
+  catcher->Observe(reader);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  message = reader->GetErrorMessage();
+  const bool empty = reader->GetOutput()->GetNumberOfPoints() == 0 &&
+    reader->GetOutput()->GetPointData()->GetNumberOfArrays() == 0;
+  if (views)
+  {
+    *views = reader->GetOutput()->GetNumberOfViews();
+  }
+  if (reader->GetErrorCode() != 0 && !empty)
+  {
+    std::cout << "FAIL the output of a failed read is not empty\n";
+    ++lfdtest::Failures();
+  }
+  return reader->GetErrorCode() == 0;
+}
+
+void WritePng(const std::string& path, int width, int height, int components)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
+  image->GetPointData()->GetScalars()->Fill(7);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
+}
+
+int TestLightFieldIOErrors(int, char*[])
+{
+  const std::string folder = lfdtest::ScratchFolder("TestLightFieldIOErrors");
+  const std::string valid = folder + "/valid.lf";
+  std::string message;
+  lfdtest::Check(Write(MakeLightField(10), valid, message), "write the valid dataset");
+  const Json manifest = Json::parse(lfdtest::ReadText(valid + "/lightfield.json"));
+
+  // A copy of the valid dataset whose manifest is edited by `edit` (or
+  // replaced by `text` when given).
+  int caseNumber = 0;
+  auto variant = [&](const std::function<void(Json&)>& edit, const std::string& text = "")
+  {
+    const std::string directory = folder + "/case" + std::to_string(++caseNumber) + ".lf";
+    fs::copy(valid, directory, fs::copy_options::recursive);
+    Json edited = manifest;
+    if (edit)
+    {
+      edit(edited);
+    }
+    lfdtest::WriteText(directory + "/lightfield.json", text.empty() ? edited.dump(2) : text);
+    return directory;
+  };
+  auto expectFailure =
+    [&](const std::string& name, const std::string& directory, std::vector<std::string> parts)
+  {
+    const bool ok = Read(directory, message);
+    parts.insert(parts.begin(), directory + "/lightfield.json");
+    lfdtest::CheckFailure(name, !ok, message, parts);
+  };
+
+  lfdtest::Check(Read(valid, message), "the valid dataset reads");
+
+  lfdtest::CheckFailure("missing dataset",
+    !Read(folder + "/nothing.lf", message),
+    message,
+    { folder + "/nothing.lf", "cannot open" });
+  {
+    std::string text = manifest.dump(2);
+    text.replace(text.find("\"height\""), 0, "\"oops\" ");
+    expectFailure("bad JSON", variant(nullptr, text), { "not valid JSON", "line 3" });
+  }
+  expectFailure("wrong format",
+    variant([](Json& j) { j["format"] = "lfd-scene"; }),
+    { "\"format\"", "lfd-lightfield" });
+  expectFailure("unsupported version",
+    variant([](Json& j) { j["version"] = 2; }),
+    { "\"version\"", "unsupported version 2" });
+  expectFailure(
+    "version as string", variant([](Json& j) { j["version"] = "1"; }), { "\"version\"", "number" });
+  expectFailure(
+    "missing width", variant([](Json& j) { j.erase("width"); }), { "\"width\"", "missing" });
+  expectFailure(
+    "zero height", variant([](Json& j) { j["height"] = 0; }), { "\"height\"", "integer" });
+  expectFailure(
+    "missing views", variant([](Json& j) { j.erase("views"); }), { "\"views\"", "missing" });
+  expectFailure("K of 8 numbers",
+    variant([](Json& j) { j["views"][1]["K"].erase(8); }),
+    { "\"views[1].K\"", "9 numbers" });
+  expectFailure("missing t",
+    variant([](Json& j) { j["views"][2].erase("t"); }),
+    { "\"views[2].t\"", "missing" });
+  expectFailure("overflowing number in R",
+    variant(nullptr,
+      [&]
+      {
+        Json j = manifest;
+        j["views"][0]["R"][2] = 12345.5;
+        std::string text = j.dump(2);
+        text.replace(text.find("12345.5"), 7, "1e999");
+        return text;
+      }()),
+    { "not valid JSON", "1e999" });
+  expectFailure("NaN token in K",
+    variant(nullptr,
+      [&]
+      {
+        Json j = manifest;
+        j["views"][0]["K"][0] = 12345.5;
+        std::string text = j.dump(2);
+        text.replace(text.find("12345.5"), 7, "NaN");
+        return text;
+      }()),
+    { "not valid JSON", "line" });
+  expectFailure("R not a rotation",
+    variant([](Json& j) { j["views"][1]["R"][0] = 2.0; }),
+    { "\"views[1].R\"", "rotation" });
+  expectFailure("string in t",
+    variant([](Json& j) { j["views"][1]["t"][1] = "x"; }),
+    { "\"views[1].t[1]\"", "number" });
+  expectFailure("unknown pass",
+    variant([](Json& j) { j["passes"]["normals"] = j["passes"]["label"]; }),
+    { "\"passes.normals\"", "unknown pass" });
+  expectFailure("pass list too short",
+    variant([](Json& j) { j["passes"]["label"].erase(2); }),
+    { "\"passes.label\"", "array of 3" });
+  expectFailure("palette value out of range",
+    variant(
+      [](Json& j) {
+        j["palette"] = Json::array({ Json::array({ 0, 300, 0 }) });
+      }),
+    { "\"palette[0][1]\"", "[0, 255]" });
+  {
+    const std::string directory = variant(nullptr);
+    fs::remove(directory + "/coaxial/view_0002.png");
+    expectFailure("missing image",
+      directory,
+      { "\"passes.coaxial[2]\"", "coaxial/view_0002.png", "not found" });
+  }
+  {
+    const std::string directory = variant(nullptr);
+    WritePng(directory + "/coaxial/view_0001.png", Width + 1, Height, 3);
+    expectFailure("image of the wrong size",
+      directory,
+      { "\"passes.coaxial[1]\"", "view_0001.png", "7x4", "6x4" });
+  }
+  {
+    const std::string directory = variant(nullptr);
+    WritePng(directory + "/label/view_0000.png", Width, Height, 3);
+    expectFailure("label image with 3 channels",
+      directory,
+      { "\"passes.label[0]\"", "view_0000.png", "3 channels" });
+  }
+  {
+    const std::string directory = variant(nullptr);
+    lfdtest::WriteText(directory + "/label/view_0001.png", "not a png");
+    expectFailure("corrupt image", directory, { "\"passes.label[1]\"", "view_0001.png" });
+  }
+
+  // Writer failures leave nothing that looks valid.
+  {
+    const std::string notDataset = folder + "/documents";
+    fs::create_directories(notDataset);
+    lfdtest::WriteText(notDataset + "/thesis.txt", "precious");
+    const bool ok = Write(MakeLightField(20), notDataset, message);
+    lfdtest::CheckFailure("write over a folder that is not a dataset",
+      !ok,
+      message,
+      { notDataset, "not a light-field dataset" });
+    lfdtest::CheckEqual(lfdtest::ReadText(notDataset + "/thesis.txt"),
+      std::string("precious"),
+      "the unrelated file is untouched");
+    lfdtest::Check(!fs::exists(notDataset + "/lightfield.json"), "no manifest in it");
+  }
+  {
+    vtkSmartPointer<vtkLightField> broken = MakeLightField(30);
+    broken->GetRig()->SetNumberOfViews(Views - 1);
+    const bool ok = Write(broken, valid, message);
+    lfdtest::CheckFailure(
+      "write a light field whose rig lacks views", !ok, message, { valid, "rig has 2 views" });
+    int views = 0;
+    lfdtest::Check(Read(valid, message, &views) && views == Views,
+      "the existing dataset is intact after the failed write");
+  }
+  {
+    const std::string blocker = folder + "/afile";
+    lfdtest::WriteText(blocker, "x");
+    const bool ok = Write(MakeLightField(40), blocker + "/out.lf", message);
+    lfdtest::CheckFailure("write below a regular file", !ok, message, { "out.lf.tmp-" });
+    lfdtest::Check(!fs::exists(blocker + "/out.lf"), "nothing written");
+  }
+  lfdtest::CheckEqual(lfdtest::CountEntries(folder, "valid.lf."), 0, "temporary siblings left");
+  return lfdtest::Result();
+}

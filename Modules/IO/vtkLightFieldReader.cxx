@@ -1,0 +1,537 @@
+#include "vtkLightFieldReader.h"
+
+#include "lfdFileUtilities.h"
+#include "lfdImageFiles.h"
+#include "lfdJsonFields.h"
+#include "vtkCameraRig.h"
+#include "vtkDataArray.h"
+#include "vtkDemandDrivenPipeline.h"
+#include "vtkErrorCode.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkLightFieldReader);
+
+namespace
+{
+using lfd::io::ElementPath;
+using lfd::io::FieldError;
+using lfd::io::Json;
+using lfd::io::MemberPath;
+
+constexpr int ManifestVersion = 1;
+
+struct ManifestView
+{
+  std::string Name;
+  std::array<double, 9> K;
+  std::array<double, 9> R;
+  std::array<double, 3> T;
+};
+
+// Everything lightfield.json says, validated; image paths are resolved.
+struct Manifest
+{
+  std::string Path;
+  std::string Folder;
+  int Width = 0;
+  int Height = 0;
+  std::vector<ManifestView> Views;
+  std::vector<std::string> Images[vtkLightField::NUMBER_OF_PASSES];
+  bool HasPass[vtkLightField::NUMBER_OF_PASSES] = {};
+  std::vector<std::array<unsigned char, 3>> Palette;
+  bool HasProvenance = false;
+  std::string Provenance;
+};
+
+std::string ManifestPath(const std::string& fileName)
+{
+  std::error_code ec;
+  if (std::filesystem::is_directory(fileName, ec))
+  {
+    return (std::filesystem::path(lfd::io::TrimSeparators(fileName)) / "lightfield.json").string();
+  }
+  return fileName;
+}
+
+// R must be a rotation: R R^T = I and det R = +1, to a tolerance that
+// accepts calibrations printed with 6 decimals.
+bool IsRotation(const std::array<double, 9>& R)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    for (int b = 0; b < 3; ++b)
+    {
+      double dot = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        dot += R[3 * a + c] * R[3 * b + c];
+      }
+      if (std::abs(dot - (a == b ? 1.0 : 0.0)) > 1e-3)
+      {
+        return false;
+      }
+    }
+  }
+  const double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
+    R[2] * (R[3] * R[7] - R[4] * R[6]);
+  return det > 0.0;
+}
+
+template<size_t N>
+std::array<double, N> GetArray(const Json& object, const std::string& parent, const char* key)
+{
+  const std::string path = MemberPath(parent, key);
+  const std::vector<double> values =
+    lfd::io::GetNumbers(lfd::io::RequireMember(object, parent, key), path, N);
+  std::array<double, N> result;
+  std::copy(values.begin(), values.end(), result.begin());
+  return result;
+}
+
+// Parses and validates the manifest; throws FieldError for a malformed field,
+// std::runtime_error for anything else.
+void ParseManifest(const Json& document, Manifest& manifest)
+{
+  const std::string format =
+    lfd::io::GetString(lfd::io::RequireMember(document, "", "format"), "format");
+  if (format != "lfd-lightfield")
+  {
+    throw FieldError("format", "expected \"lfd-lightfield\", found \"" + format + "\"");
+  }
+  const Json& versionValue = lfd::io::RequireMember(document, "", "version");
+  const long long version =
+    lfd::io::GetInteger(versionValue, "version", 0, std::numeric_limits<int>::max());
+  if (version != ManifestVersion)
+  {
+    throw FieldError("version",
+      "unsupported version " + std::to_string(version) + " (this reader reads version " +
+        std::to_string(ManifestVersion) + ")");
+  }
+  manifest.Width = static_cast<int>(
+    lfd::io::GetInteger(lfd::io::RequireMember(document, "", "width"), "width", 1, 1 << 20));
+  manifest.Height = static_cast<int>(
+    lfd::io::GetInteger(lfd::io::RequireMember(document, "", "height"), "height", 1, 1 << 20));
+
+  const Json& views = lfd::io::RequireMember(document, "", "views");
+  if (!views.is_array() || views.empty())
+  {
+    throw FieldError(
+      "views", "expected a non-empty array of views, found " + lfd::io::Describe(views));
+  }
+  for (size_t i = 0; i < views.size(); ++i)
+  {
+    const std::string path = ElementPath("views", i);
+    ManifestView view;
+    if (const Json* name = lfd::io::FindMember(views[i], path, "name"))
+    {
+      view.Name = lfd::io::GetString(*name, MemberPath(path, "name"));
+    }
+    view.K = GetArray<9>(views[i], path, "K");
+    view.R = GetArray<9>(views[i], path, "R");
+    view.T = GetArray<3>(views[i], path, "t");
+    if (view.K[8] == 0.0 || view.K[0] == 0.0 || view.K[4] == 0.0)
+    {
+      throw FieldError(
+        MemberPath(path, "K"), "not an intrinsic matrix (zero focal length or K[8])");
+    }
+    if (!IsRotation(view.R))
+    {
+      throw FieldError(MemberPath(path, "R"), "not a rotation matrix (R R^T != I or det R != 1)");
+    }
+    manifest.Views.push_back(view);
+  }
+
+  const Json& passes = lfd::io::RequireMember(document, "", "passes");
+  if (!passes.is_object())
+  {
+    throw FieldError(
+      "passes", "expected an object {pass: [image, ...]}, found " + lfd::io::Describe(passes));
+  }
+  for (auto it = passes.begin(); it != passes.end(); ++it)
+  {
+    const std::string path = MemberPath("passes", it.key().c_str());
+    const int pass = vtkLightField::GetPassFromName(it.key().c_str());
+    if (pass < 0)
+    {
+      throw FieldError(path, "unknown pass (expected coaxial, coded, flood, label or depth)");
+    }
+    if (!it->is_array() || it->size() != manifest.Views.size())
+    {
+      throw FieldError(path,
+        "expected an array of " + std::to_string(manifest.Views.size()) +
+          " image file names (one per view), found " + lfd::io::Describe(*it));
+    }
+    manifest.HasPass[pass] = true;
+    for (size_t i = 0; i < it->size(); ++i)
+    {
+      const std::string image = lfd::io::GetString((*it)[i], ElementPath(path, i));
+      manifest.Images[pass].push_back(lfd::io::ResolvePath(manifest.Folder, image));
+    }
+  }
+
+  if (const Json* palette = lfd::io::FindMember(document, "", "palette"))
+  {
+    if (!palette->is_array())
+    {
+      throw FieldError(
+        "palette", "expected an array of [r, g, b], found " + lfd::io::Describe(*palette));
+    }
+    for (size_t i = 0; i < palette->size(); ++i)
+    {
+      const std::string path = ElementPath("palette", i);
+      const Json& colour = (*palette)[i];
+      if (!colour.is_array() || colour.size() != 3)
+      {
+        throw FieldError(path, "expected [r, g, b], found " + lfd::io::Describe(colour));
+      }
+      std::array<unsigned char, 3> rgb;
+      for (size_t c = 0; c < 3; ++c)
+      {
+        rgb[c] =
+          static_cast<unsigned char>(lfd::io::GetInteger(colour[c], ElementPath(path, c), 0, 255));
+      }
+      manifest.Palette.push_back(rgb);
+    }
+  }
+
+  if (const Json* provenance = lfd::io::FindMember(document, "", "provenance"))
+  {
+    manifest.HasProvenance = true;
+    manifest.Provenance =
+      provenance->is_string() ? provenance->get<std::string>() : provenance->dump();
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkLightFieldReader::vtkLightFieldReader()
+{
+  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(1);
+  this->ReadAllPasses();
+}
+
+//------------------------------------------------------------------------------
+vtkLightFieldReader::~vtkLightFieldReader()
+{
+  this->SetFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldReader::SetReadPass(int pass, bool read)
+{
+  if (pass < 0 || pass >= vtkLightField::NUMBER_OF_PASSES)
+  {
+    vtkErrorMacro("SetReadPass: invalid pass " << pass << ".");
+    return;
+  }
+  if (this->ReadPass[pass] != read)
+  {
+    this->ReadPass[pass] = read;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldReader::GetReadPass(int pass) const
+{
+  return pass >= 0 && pass < vtkLightField::NUMBER_OF_PASSES && this->ReadPass[pass];
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldReader::ReadAllPasses()
+{
+  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+  {
+    this->ReadPass[pass] = true;
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldReader::ReadNoPasses()
+{
+  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+  {
+    this->ReadPass[pass] = false;
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkLightField* vtkLightFieldReader::GetOutput()
+{
+  return vtkLightField::SafeDownCast(this->GetOutputDataObject(0));
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldReader::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkLightField");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkLightFieldReader::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputs,
+  vtkInformationVector* outputs)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    return this->RequestDataObject(request, inputs, outputs);
+  }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
+  {
+    return this->RequestInformation(request, inputs, outputs);
+  }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+  {
+    return this->RequestData(request, inputs, outputs);
+  }
+  return this->Superclass::ProcessRequest(request, inputs, outputs);
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldReader::RequestDataObject(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputs)
+{
+  // VTK 9.1 cannot instantiate vtkLightField by name (PLATFORM-NOTES.md).
+  vtkInformation* info = outputs->GetInformationObject(0);
+  if (!vtkLightField::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT())))
+  {
+    vtkNew<vtkLightField> output;
+    info->Set(vtkDataObject::DATA_OBJECT(), output);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldReader::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputs)
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
+  this->ErrorMessage.clear();
+  vtkLightField* output = vtkLightField::GetData(outputs);
+  if (!this->FileName || !*this->FileName)
+  {
+    this->Fail(output, vtkErrorCode::NoFileNameError, "vtkLightFieldReader: no FileName set");
+    return 0;
+  }
+  Manifest manifest;
+  manifest.Path = ManifestPath(this->FileName);
+  manifest.Folder = lfd::io::ParentFolder(manifest.Path);
+  Json document;
+  std::string error;
+  if (!lfd::io::ParseJsonFile(manifest.Path, document, error))
+  {
+    std::error_code ec;
+    this->Fail(output,
+      std::filesystem::exists(manifest.Path, ec) ? vtkErrorCode::FileFormatError
+                                                 : vtkErrorCode::FileNotFoundError,
+      error);
+    return 0;
+  }
+  try
+  {
+    ParseManifest(document, manifest);
+  }
+  catch (const std::exception& e)
+  {
+    this->Fail(output, vtkErrorCode::FileFormatError, manifest.Path + ": " + e.what());
+    return 0;
+  }
+  int extent[6] = {
+    0, manifest.Width - 1, 0, manifest.Height - 1, 0, static_cast<int>(manifest.Views.size()) - 1
+  };
+  vtkInformation* info = outputs->GetInformationObject(0);
+  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  const double spacing[3] = { 1.0, 1.0, 1.0 };
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  info->Set(vtkDataObject::SPACING(), spacing, 3);
+  info->Set(vtkDataObject::ORIGIN(), origin, 3);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldReader::RequestData(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputs)
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
+  this->ErrorMessage.clear();
+  vtkLightField* output = vtkLightField::GetData(outputs);
+  if (!this->FileName || !*this->FileName)
+  {
+    this->Fail(output, vtkErrorCode::NoFileNameError, "vtkLightFieldReader: no FileName set");
+    return 0;
+  }
+  Manifest manifest;
+  manifest.Path = ManifestPath(this->FileName);
+  manifest.Folder = lfd::io::ParentFolder(manifest.Path);
+  Json document;
+  std::string error;
+  if (!lfd::io::ParseJsonFile(manifest.Path, document, error))
+  {
+    this->Fail(output, vtkErrorCode::FileFormatError, error);
+    return 0;
+  }
+  try
+  {
+    ParseManifest(document, manifest);
+  }
+  catch (const std::exception& e)
+  {
+    this->Fail(output, vtkErrorCode::FileFormatError, manifest.Path + ": " + e.what());
+    return 0;
+  }
+
+  const int views = static_cast<int>(manifest.Views.size());
+  output->Initialize();
+  output->SetLayout(manifest.Width, manifest.Height, views);
+
+  vtkNew<vtkCameraRig> rig;
+  rig->SetNumberOfViews(views);
+  rig->SetImageSize(manifest.Width, manifest.Height);
+  for (int i = 0; i < views; ++i)
+  {
+    const ManifestView& view = manifest.Views[i];
+    rig->SetView(i, view.K.data(), view.R.data(), view.T.data());
+    if (!view.Name.empty())
+    {
+      rig->SetViewName(i, view.Name.c_str());
+    }
+  }
+
+  std::vector<int> passes;
+  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+  {
+    if (manifest.HasPass[pass] && this->ReadPass[pass])
+    {
+      passes.push_back(pass);
+    }
+  }
+  const double total = static_cast<double>(passes.size()) * views;
+  int done = 0;
+  this->UpdateProgress(0.0);
+  for (int pass : passes)
+  {
+    const std::string passKey = MemberPath("passes", vtkLightField::GetPassName(pass));
+    const int channels = vtkLightField::GetPassComponents(pass);
+    const int scalarType = vtkLightField::GetPassScalarType(pass);
+    vtkDataArray* array = output->AllocatePass(pass);
+    const vtkIdType viewValues =
+      static_cast<vtkIdType>(manifest.Width) * manifest.Height * channels;
+    for (int i = 0; i < views; ++i)
+    {
+      std::string field = ElementPath(passKey, i);
+      for (char& c : field)
+      {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      }
+      const std::string& image = manifest.Images[pass][i];
+      const std::string where = manifest.Path + ": field \"" + field + "\": image " + image;
+      lfd::io::ImageHeader header;
+      if (!lfd::io::ReadImageHeader(image, header, error))
+      {
+        std::error_code ec;
+        this->Fail(output,
+          std::filesystem::exists(image, ec) ? vtkErrorCode::FileFormatError
+                                             : vtkErrorCode::FileNotFoundError,
+          where + ": " + (std::filesystem::exists(image, ec) ? error : "file not found"));
+        return 0;
+      }
+      if (header.Width != manifest.Width || header.Height != manifest.Height)
+      {
+        this->Fail(output,
+          vtkErrorCode::FileFormatError,
+          where + ": image is " + std::to_string(header.Width) + "x" +
+            std::to_string(header.Height) + ", the manifest says " +
+            std::to_string(manifest.Width) + "x" + std::to_string(manifest.Height));
+        return 0;
+      }
+      if (header.Channels != channels)
+      {
+        this->Fail(output,
+          vtkErrorCode::FileFormatError,
+          where + ": image has " + std::to_string(header.Channels) + " channels, the " +
+            vtkLightField::GetPassName(pass) + " pass has " + std::to_string(channels));
+        return 0;
+      }
+      void* data = array->GetVoidPointer(viewValues * i);
+      if (!lfd::io::ReadImagePixels(image, header, channels, scalarType, data, error))
+      {
+        this->Fail(output, vtkErrorCode::FileFormatError, where + ": " + error);
+        return 0;
+      }
+      this->UpdateProgress(++done / total);
+    }
+  }
+
+  if (!manifest.Palette.empty())
+  {
+    vtkNew<vtkUnsignedCharArray> palette;
+    palette->SetName("LabelPalette");
+    palette->SetNumberOfComponents(3);
+    palette->SetNumberOfTuples(static_cast<vtkIdType>(manifest.Palette.size()));
+    for (size_t i = 0; i < manifest.Palette.size(); ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        palette->SetTypedComponent(static_cast<vtkIdType>(i), c, manifest.Palette[i][c]);
+      }
+    }
+    output->GetFieldData()->AddArray(palette);
+  }
+  output->SetRig(rig);
+  output->SetProvenance(manifest.HasProvenance ? manifest.Provenance.c_str() : nullptr);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldReader::Fail(vtkLightField* output,
+  unsigned long errorCode,
+  const std::string& message)
+{
+  if (output)
+  {
+    output->Initialize();
+    vtkNew<vtkCameraRig> rig;
+    output->SetRig(rig);
+    output->SetProvenance(nullptr);
+  }
+  this->SetErrorCode(errorCode);
+  this->ErrorMessage = message;
+  vtkErrorMacro(<< message);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "ReadPass:";
+  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+  {
+    os << " " << vtkLightField::GetPassName(pass) << "=" << (this->ReadPass[pass] ? "on" : "off");
+  }
+  os << "\n";
+  os << indent << "ErrorMessage: " << (this->ErrorMessage.empty() ? "(none)" : this->ErrorMessage)
+     << "\n";
+}

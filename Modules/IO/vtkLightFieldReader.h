@@ -1,0 +1,107 @@
+/**
+ * @class   vtkLightFieldReader
+ * @brief   reads a light-field dataset (lightfield.json and its images) into a vtkLightField
+ *
+ * A light-field dataset is a directory holding a manifest, `lightfield.json`,
+ * and one image per view per pass (see Data/README.md for the format).
+ * FileName is the directory or the manifest itself. The reader reads the
+ * image size, the rig (K, R, t and name of every view), the label palette
+ * (as the field-data array "LabelPalette", 3 x uint8 per label), the
+ * provenance (as JSON text, vtkLightField::GetProvenance()) and every pass
+ * listed in the manifest, or only the passes selected with SetReadPass().
+ * Images are read through OpenImageIO; their rows are flipped into
+ * vtkLightField's order (bottom image row first, see vtkLightField.h).
+ * Progress is reported once per image.
+ *
+ * The manifest is validated completely: malformed JSON (with the parser's
+ * line and column), a wrong "format" or unsupported "version", a missing
+ * field, an array of the wrong length, a non-finite or non-rotation matrix,
+ * an unknown pass, a missing image file and an image whose size or channel
+ * count differs from the manifest are each reported by one error that names
+ * the file and the field. The output is then empty, GetErrorCode() is not
+ * vtkErrorCode::NoError and GetErrorMessage() holds that one line. As for any
+ * VTK algorithm, the pipeline's executive reports the failed request too;
+ * observe vtkCommand::ErrorEvent on the reader and its executive to handle
+ * errors quietly.
+ *
+ * @sa vtkLightFieldWriter vtkLightField vtkMiddleburyImporter
+ */
+#ifndef vtkLightFieldReader_h
+#define vtkLightFieldReader_h
+
+#include "lfdIOModule.h" // For export macro
+#include "vtkAlgorithm.h"
+#include "vtkLightField.h" // For NUMBER_OF_PASSES
+
+#include <string> // For std::string
+
+class LFDIO_EXPORT vtkLightFieldReader : public vtkAlgorithm
+{
+public:
+  static vtkLightFieldReader* New();
+  vtkTypeMacro(vtkLightFieldReader, vtkAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The dataset directory, or its `lightfield.json`.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * Which passes to read (vtkLightField::Pass). All are selected by default;
+   * a selected pass is read when the manifest lists it, an unselected one is
+   * skipped even when it is listed. ReadAllPasses() selects every pass,
+   * ReadNoPasses() none (only the manifest and the rig are read).
+   */
+  void SetReadPass(int pass, bool read);
+  bool GetReadPass(int pass) const;
+  void ReadAllPasses();
+  void ReadNoPasses();
+  ///@}
+
+  /**
+   * The text of the last error, one line naming the file and the field, or
+   * an empty string after a successful read.
+   */
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+  /**
+   * The output light field.
+   */
+  vtkLightField* GetOutput();
+
+protected:
+  vtkLightFieldReader();
+  ~vtkLightFieldReader() override;
+
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputs,
+    vtkInformationVector* outputs) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  virtual int RequestDataObject(vtkInformation* request,
+    vtkInformationVector** inputs,
+    vtkInformationVector* outputs);
+  virtual int RequestInformation(vtkInformation* request,
+    vtkInformationVector** inputs,
+    vtkInformationVector* outputs);
+  virtual int RequestData(vtkInformation* request,
+    vtkInformationVector** inputs,
+    vtkInformationVector* outputs);
+
+  char* FileName = nullptr;
+  bool ReadPass[vtkLightField::NUMBER_OF_PASSES];
+
+private:
+  vtkLightFieldReader(const vtkLightFieldReader&) = delete;
+  void operator=(const vtkLightFieldReader&) = delete;
+
+  void Fail(vtkLightField* output, unsigned long errorCode, const std::string& message);
+
+  std::string ErrorMessage;
+};
+
+#endif

@@ -1,0 +1,78 @@
+/**
+ * @class   vtkLightFieldWriter
+ * @brief   writes a vtkLightField as a light-field dataset directory
+ *
+ * Writes `Directory/lightfield.json` and one image per view per pass held by
+ * the input: 8-bit passes as PNG (`coaxial/view_0000.png`, `label/...`),
+ * Depth as 32-bit float EXR (`depth/view_0000.exr`). Rows are flipped from
+ * vtkLightField's order (bottom row first) to the files' (top row first). The
+ * rig (K, R, t and names), the field-data array "LabelPalette" (3 x uint8 per
+ * label) and the provenance are written to the manifest; provenance text
+ * that is valid JSON is stored as JSON, any other text as a JSON string. See
+ * Data/README.md for the format.
+ *
+ * Writing is atomic: everything goes to a temporary sibling directory,
+ * `Directory.tmp-<pid>`, which is renamed onto Directory only when complete.
+ * An existing Directory is replaced only after success, and only when it is
+ * empty or a light-field dataset (it holds a lightfield.json), so a mistyped
+ * path never deletes unrelated files. On failure the temporary directory is
+ * removed, GetErrorCode() is set and GetErrorMessage() holds one line naming
+ * the file and the problem. Progress is reported once per image.
+ *
+ * @sa vtkLightFieldReader vtkLightField
+ */
+#ifndef vtkLightFieldWriter_h
+#define vtkLightFieldWriter_h
+
+#include "lfdIOModule.h" // For export macro
+#include "vtkWriter.h"
+
+#include <string> // For std::string
+
+class vtkLightField;
+
+class LFDIO_EXPORT vtkLightFieldWriter : public vtkWriter
+{
+public:
+  static vtkLightFieldWriter* New();
+  vtkTypeMacro(vtkLightFieldWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The dataset directory to create (or replace).
+   */
+  vtkSetStringMacro(Directory);
+  vtkGetStringMacro(Directory);
+  ///@}
+
+  /**
+   * The text of the last error (one line), or an empty string after a
+   * successful write.
+   */
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+  /**
+   * The input light field.
+   */
+  vtkLightField* GetInput();
+
+protected:
+  vtkLightFieldWriter();
+  ~vtkLightFieldWriter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  void WriteData() override;
+
+  char* Directory = nullptr;
+
+private:
+  vtkLightFieldWriter(const vtkLightFieldWriter&) = delete;
+  void operator=(const vtkLightFieldWriter&) = delete;
+
+  void Fail(unsigned long errorCode, const std::string& message);
+
+  std::string ErrorMessage;
+};
+
+#endif

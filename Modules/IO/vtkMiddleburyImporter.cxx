@@ -1,0 +1,413 @@
+#include "vtkMiddleburyImporter.h"
+
+#include "lfdFileUtilities.h"
+#include "lfdImageFiles.h"
+#include "lfdJsonFields.h"
+#include "vtkCameraRig.h"
+#include "vtkDataArray.h"
+#include "vtkDemandDrivenPipeline.h"
+#include "vtkErrorCode.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLightField.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+vtkStandardNewMacro(vtkMiddleburyImporter);
+
+namespace
+{
+const char* const FieldNames[21] = { "k11",
+  "k12",
+  "k13",
+  "k21",
+  "k22",
+  "k23",
+  "k31",
+  "k32",
+  "k33",
+  "r11",
+  "r12",
+  "r13",
+  "r21",
+  "r22",
+  "r23",
+  "r31",
+  "r32",
+  "r33",
+  "t1",
+  "t2",
+  "t3" };
+
+struct ParEntry
+{
+  int Line = 0;
+  std::string Name;
+  std::string Image;
+  double Values[21];
+};
+
+// A malformed par file: the message already names file and line.
+struct ParError : std::runtime_error
+{
+  ParError(const std::string& file, int line, const std::string& problem)
+    : std::runtime_error(file + ":" + std::to_string(line) + ": " + problem)
+  {
+  }
+};
+
+std::vector<std::string> Tokens(const std::string& line)
+{
+  std::istringstream stream(line);
+  std::vector<std::string> tokens;
+  std::string token;
+  while (stream >> token)
+  {
+    tokens.push_back(token);
+  }
+  return tokens;
+}
+
+// Parses the whole par file (throws ParError, or std::runtime_error when it
+// cannot be opened).
+std::vector<ParEntry> ParseParFile(const std::string& path)
+{
+  std::ifstream stream(path);
+  if (!stream)
+  {
+    throw std::runtime_error(path + ": cannot open the file for reading");
+  }
+  const std::string folder = lfd::io::ParentFolder(path);
+  std::string text;
+  int lineNumber = 0;
+  long long announced = -1;
+  int announcedLine = 0;
+  std::vector<ParEntry> entries;
+  while (std::getline(stream, text))
+  {
+    ++lineNumber;
+    const std::vector<std::string> tokens = Tokens(text);
+    if (tokens.empty())
+    {
+      continue;
+    }
+    if (announced < 0)
+    {
+      char* end = nullptr;
+      errno = 0;
+      announced = std::strtoll(tokens[0].c_str(), &end, 10);
+      if (tokens.size() != 1 || *end != '\0' || errno != 0 || announced < 1)
+      {
+        throw ParError(path,
+          lineNumber,
+          "expected the number of images (a positive integer), found \"" + text + "\"");
+      }
+      announcedLine = lineNumber;
+      continue;
+    }
+    if (tokens.size() != 22)
+    {
+      throw ParError(path,
+        lineNumber,
+        "expected 22 fields (image name, k11..k33, r11..r33, t1 t2 t3), found " +
+          std::to_string(tokens.size()));
+    }
+    ParEntry entry;
+    entry.Line = lineNumber;
+    entry.Name = tokens[0];
+    entry.Image = lfd::io::ResolvePath(folder, tokens[0]);
+    for (int f = 0; f < 21; ++f)
+    {
+      const std::string& token = tokens[f + 1];
+      char* end = nullptr;
+      entry.Values[f] = std::strtod(token.c_str(), &end);
+      if (end == token.c_str() || *end != '\0')
+      {
+        throw ParError(path,
+          lineNumber,
+          std::string("field ") + FieldNames[f] + " is not a number: \"" + token + "\"");
+      }
+      if (!std::isfinite(entry.Values[f]))
+      {
+        throw ParError(path,
+          lineNumber,
+          std::string("field ") + FieldNames[f] + " is not finite: \"" + token + "\"");
+      }
+    }
+    entries.push_back(entry);
+  }
+  if (announced < 0)
+  {
+    throw ParError(path, 1, "the file is empty (expected the number of images)");
+  }
+  if (static_cast<long long>(entries.size()) != announced)
+  {
+    throw ParError(path,
+      announcedLine,
+      "announces " + std::to_string(announced) + " images but " + std::to_string(entries.size()) +
+        " calibration lines follow");
+  }
+  return entries;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkMiddleburyImporter::vtkMiddleburyImporter()
+{
+  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(1);
+}
+
+//------------------------------------------------------------------------------
+vtkMiddleburyImporter::~vtkMiddleburyImporter()
+{
+  this->SetFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkLightField* vtkMiddleburyImporter::GetOutput()
+{
+  return vtkLightField::SafeDownCast(this->GetOutputDataObject(0));
+}
+
+//------------------------------------------------------------------------------
+int vtkMiddleburyImporter::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkLightField");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkMiddleburyImporter::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputs,
+  vtkInformationVector* outputs)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    return this->RequestDataObject(request, inputs, outputs);
+  }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
+  {
+    return this->RequestInformation(request, inputs, outputs);
+  }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+  {
+    return this->RequestData(request, inputs, outputs);
+  }
+  return this->Superclass::ProcessRequest(request, inputs, outputs);
+}
+
+//------------------------------------------------------------------------------
+int vtkMiddleburyImporter::RequestDataObject(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputs)
+{
+  // VTK 9.1 cannot instantiate vtkLightField by name (PLATFORM-NOTES.md).
+  vtkInformation* info = outputs->GetInformationObject(0);
+  if (!vtkLightField::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT())))
+  {
+    vtkNew<vtkLightField> output;
+    info->Set(vtkDataObject::DATA_OBJECT(), output);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMiddleburyImporter::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputs)
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
+  this->ErrorMessage.clear();
+  vtkLightField* output = vtkLightField::GetData(outputs);
+  if (!this->FileName || !*this->FileName)
+  {
+    this->Fail(output, vtkErrorCode::NoFileNameError, "vtkMiddleburyImporter: no FileName set");
+    return 0;
+  }
+  std::vector<ParEntry> entries;
+  try
+  {
+    entries = ParseParFile(this->FileName);
+  }
+  catch (const ParError& e)
+  {
+    this->Fail(output, vtkErrorCode::FileFormatError, e.what());
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    this->Fail(output, vtkErrorCode::FileNotFoundError, e.what());
+    return 0;
+  }
+  lfd::io::ImageHeader header;
+  std::string error;
+  if (!lfd::io::ReadImageHeader(entries[0].Image, header, error))
+  {
+    this->Fail(output,
+      vtkErrorCode::FileNotFoundError,
+      std::string(this->FileName) + ":" + std::to_string(entries[0].Line) + ": image " +
+        entries[0].Image + ": " + error);
+    return 0;
+  }
+  int extent[6] = {
+    0, header.Width - 1, 0, header.Height - 1, 0, static_cast<int>(entries.size()) - 1
+  };
+  vtkInformation* info = outputs->GetInformationObject(0);
+  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  const double spacing[3] = { 1.0, 1.0, 1.0 };
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  info->Set(vtkDataObject::SPACING(), spacing, 3);
+  info->Set(vtkDataObject::ORIGIN(), origin, 3);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMiddleburyImporter::RequestData(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputs)
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
+  this->ErrorMessage.clear();
+  vtkLightField* output = vtkLightField::GetData(outputs);
+  if (!this->FileName || !*this->FileName)
+  {
+    this->Fail(output, vtkErrorCode::NoFileNameError, "vtkMiddleburyImporter: no FileName set");
+    return 0;
+  }
+  const std::string parFile = this->FileName;
+  std::vector<ParEntry> entries;
+  try
+  {
+    entries = ParseParFile(parFile);
+  }
+  catch (const ParError& e)
+  {
+    this->Fail(output, vtkErrorCode::FileFormatError, e.what());
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    this->Fail(output, vtkErrorCode::FileNotFoundError, e.what());
+    return 0;
+  }
+
+  const int views = static_cast<int>(entries.size());
+  int width = 0;
+  int height = 0;
+  vtkDataArray* coaxial = nullptr;
+  std::string error;
+  this->UpdateProgress(0.0);
+  for (int i = 0; i < views; ++i)
+  {
+    const ParEntry& entry = entries[i];
+    const std::string where =
+      parFile + ":" + std::to_string(entry.Line) + ": image " + entry.Image + ": ";
+    lfd::io::ImageHeader header;
+    if (!lfd::io::ReadImageHeader(entry.Image, header, error))
+    {
+      std::error_code ec;
+      const bool exists = std::filesystem::exists(entry.Image, ec);
+      this->Fail(output,
+        exists ? vtkErrorCode::FileFormatError : vtkErrorCode::FileNotFoundError,
+        where + (exists ? error : "file not found"));
+      return 0;
+    }
+    if (i == 0)
+    {
+      width = header.Width;
+      height = header.Height;
+      output->Initialize();
+      output->SetLayout(width, height, views);
+      coaxial = output->AllocatePass(vtkLightField::COAXIAL);
+    }
+    else if (header.Width != width || header.Height != height)
+    {
+      this->Fail(output,
+        vtkErrorCode::FileFormatError,
+        where + "image is " + std::to_string(header.Width) + "x" + std::to_string(header.Height) +
+          ", the first image (" + entries[0].Name + ") is " + std::to_string(width) + "x" +
+          std::to_string(height));
+      return 0;
+    }
+    if (header.Channels != 1 && header.Channels < 3)
+    {
+      this->Fail(output,
+        vtkErrorCode::FileFormatError,
+        where + "image has " + std::to_string(header.Channels) +
+          " channels, expected grey (1) or colour (3 or 4)");
+      return 0;
+    }
+    const vtkIdType viewValues = static_cast<vtkIdType>(width) * height * 3;
+    if (!lfd::io::ReadImagePixels(entry.Image,
+          header,
+          3,
+          VTK_UNSIGNED_CHAR,
+          coaxial->GetVoidPointer(viewValues * i),
+          error))
+    {
+      this->Fail(output, vtkErrorCode::FileFormatError, where + error);
+      return 0;
+    }
+    this->UpdateProgress(0.95 * (i + 1) / views);
+  }
+
+  vtkNew<vtkCameraRig> rig;
+  rig->SetNumberOfViews(views);
+  rig->SetImageSize(width, height);
+  for (int i = 0; i < views; ++i)
+  {
+    const double* v = entries[i].Values;
+    rig->SetView(i, v, v + 9, v + 18);
+    rig->SetViewName(i, entries[i].Name.c_str());
+  }
+  if (this->FitRigCylinder && views >= 3 && !rig->FitCylinder())
+  {
+    vtkWarningMacro(<< parFile << ": the camera centres do not determine a cylinder; "
+                    << "the rig is imported without a cylinder fit.");
+  }
+  output->SetRig(rig);
+  const lfd::io::Json provenance = { { "importer", "vtkMiddleburyImporter" },
+    { "source", parFile },
+    { "format", "Middlebury multi-view stereo par file" } };
+  output->SetProvenance(provenance.dump().c_str());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkMiddleburyImporter::Fail(vtkLightField* output,
+  unsigned long errorCode,
+  const std::string& message)
+{
+  if (output)
+  {
+    output->Initialize();
+    vtkNew<vtkCameraRig> rig;
+    output->SetRig(rig);
+    output->SetProvenance(nullptr);
+  }
+  this->SetErrorCode(errorCode);
+  this->ErrorMessage = message;
+  vtkErrorMacro(<< message);
+}
+
+//------------------------------------------------------------------------------
+void vtkMiddleburyImporter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "FitRigCylinder: " << (this->FitRigCylinder ? "On" : "Off") << "\n";
+  os << indent << "ErrorMessage: " << (this->ErrorMessage.empty() ? "(none)" : this->ErrorMessage)
+     << "\n";
+}

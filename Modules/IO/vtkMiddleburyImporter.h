@@ -1,0 +1,108 @@
+/**
+ * @class   vtkMiddleburyImporter
+ * @brief   imports a Middlebury multi-view stereo set (`*_par.txt` and its images) as a
+ * vtkLightField
+ *
+ * The Middlebury multi-view stereo benchmark (Seitz, Curless, Diebel,
+ * Scharstein and Szeliski, "A Comparison and Evaluation of Multi-View Stereo
+ * Reconstruction Algorithms", CVPR 2006) ships each image set with a
+ * calibration file `<name>_par.txt`: the first line is the number of images,
+ * every following line is
+ *
+ *     imgname.png k11 k12 k13 k21 k22 k23 k31 k32 k33 r11 r12 r13 r21 r22 r23 r31 r32 r33 t1 t2 t3
+ *
+ * (22 fields: the image name and 21 numbers, K and R row-major, in the
+ * OpenCV convention `x ~ K [R | t] X` with the pixel origin at the top-left,
+ * which is the rig's convention). FileName is the par file; the images are
+ * found next to it. The importer loads them as the Coaxial pass (RGB; grey
+ * images are expanded to RGB, an alpha channel is dropped), builds the rig
+ * with the image names as view names and, when FitRigCylinder is on (the
+ * default) and there are at least 3 views, calls vtkCameraRig::FitCylinder().
+ * The calibration is used as given: in templeRing about a third of the
+ * images are rotated by 180 degrees in the image plane, and their R
+ * includes that rotation.
+ *
+ * Errors name the file and line ("templeR_par.txt:5: ..."): a wrong number
+ * of fields, a non-numeric token, a non-finite number, a count on line 1 that
+ * disagrees with the number of lines, a missing or unreadable image, an
+ * image whose size differs from the first one. The output is then empty,
+ * GetErrorCode() is set and GetErrorMessage() holds the one-line message.
+ *
+ * @sa vtkLightFieldReader vtkCameraRig
+ */
+#ifndef vtkMiddleburyImporter_h
+#define vtkMiddleburyImporter_h
+
+#include "lfdIOModule.h" // For export macro
+#include "vtkAlgorithm.h"
+
+#include <string> // For std::string
+
+class vtkLightField;
+
+class LFDIO_EXPORT vtkMiddleburyImporter : public vtkAlgorithm
+{
+public:
+  static vtkMiddleburyImporter* New();
+  vtkTypeMacro(vtkMiddleburyImporter, vtkAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The calibration file (`*_par.txt`).
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * Fit the rig's cylinder after import (default on).
+   */
+  vtkSetMacro(FitRigCylinder, bool);
+  vtkGetMacro(FitRigCylinder, bool);
+  vtkBooleanMacro(FitRigCylinder, bool);
+  ///@}
+
+  /**
+   * The text of the last error (one line naming file and line), or an empty
+   * string after a successful import.
+   */
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+  /**
+   * The output light field.
+   */
+  vtkLightField* GetOutput();
+
+protected:
+  vtkMiddleburyImporter();
+  ~vtkMiddleburyImporter() override;
+
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputs,
+    vtkInformationVector* outputs) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  virtual int RequestDataObject(vtkInformation* request,
+    vtkInformationVector** inputs,
+    vtkInformationVector* outputs);
+  virtual int RequestInformation(vtkInformation* request,
+    vtkInformationVector** inputs,
+    vtkInformationVector* outputs);
+  virtual int RequestData(vtkInformation* request,
+    vtkInformationVector** inputs,
+    vtkInformationVector* outputs);
+
+  char* FileName = nullptr;
+  bool FitRigCylinder = true;
+
+private:
+  vtkMiddleburyImporter(const vtkMiddleburyImporter&) = delete;
+  void operator=(const vtkMiddleburyImporter&) = delete;
+
+  void Fail(vtkLightField* output, unsigned long errorCode, const std::string& message);
+
+  std::string ErrorMessage;
+};
+
+#endif
