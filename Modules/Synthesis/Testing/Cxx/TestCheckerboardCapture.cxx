@@ -1,0 +1,56 @@
+// Regression image of the checkerboard captured under coaxial light from
+// a ring of 8 views: view 0 (face-on) and view 1 (45 degrees) side by side.
+#include "lfdSynthesisTestUtilities.h"
+#include "vtkLightFieldCapture.h"
+#include "vtkProceduralObjectSource.h"
+
+int TestCheckerboardCapture(int argc, char* argv[])
+{
+  vtkNew<vtkProceduralObjectSource> source;
+  source->SetObjectToCheckerboard();
+  vtkNew<vtkLightFieldCapture> capture;
+  capture->SetInputConnection(source->GetOutputPort());
+  capture->SetViewsPerRing(8);
+  capture->SetNumberOfRows(1);
+  capture->SetWidth(128);
+  capture->SetHeight(128);
+  capture->CaptureLabelOff();
+  capture->CaptureDepthOff();
+  capture->Update();
+  vtkLightField* lightField = capture->GetOutput();
+
+  // Face-on under coaxial light: white checks show their albedo, black
+  // checks stay black, so the board averages about half white.
+  vtkDataArray* coaxial = lightField->GetPass(vtkLightField::COAXIAL);
+  const vtkIdType pixels = 128 * 128;
+  int white = 0;
+  int black = 0;
+  int board = 0;
+  for (int y = 0; y < 128; ++y)
+  {
+    for (int x = 0; x < 128; ++x)
+    {
+      double hit[3];
+      if (!lfdtest::HitCheckerboardPlane(lightField->GetRig(), 0, x, y, hit) ||
+        std::abs(hit[0]) > 0.47 || std::abs(hit[1]) > 0.47)
+      {
+        continue;
+      }
+      ++board;
+      const double red = coaxial->GetComponent(lightField->GetPointIndex(0, x, y), 0);
+      white += red > 240.0 ? 1 : 0;
+      black += red < 5.0 ? 1 : 0;
+    }
+  }
+  lfdtest::Check(board > pixels / 10, "board pixels in view 0", board, pixels / 10);
+  lfdtest::Check(std::abs(white - black) < board / 10,
+    "white minus black pixels, view 0",
+    white - black,
+    board / 10);
+  lfdtest::Check(
+    white + black > 0.9 * board, "pure white or black pixels, view 0", white + black, 0.9 * board);
+
+  auto montage = lfdtest::CoaxialMontage(lightField, { 0, 1 });
+  const bool matches = lfdtest::MatchesBaseline(argc, argv, montage, 0.05);
+  return matches && lfdtest::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

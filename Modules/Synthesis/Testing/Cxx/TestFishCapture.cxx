@@ -1,0 +1,44 @@
+// Regression image of the fish captured under coaxial light: the side view
+// (view 0, from +Z) and the view from 45 degrees, side by side.
+#include "lfdSynthesisTestUtilities.h"
+#include "vtkLightFieldCapture.h"
+#include "vtkProceduralObjectSource.h"
+
+#include <set>
+
+int TestFishCapture(int argc, char* argv[])
+{
+  vtkNew<vtkProceduralObjectSource> source;
+  source->SetObjectToFish();
+  vtkNew<vtkLightFieldCapture> capture;
+  capture->SetInputConnection(source->GetOutputPort());
+  capture->SetViewsPerRing(8);
+  capture->SetNumberOfRows(1);
+  capture->SetWidth(128);
+  capture->SetHeight(128);
+  capture->CaptureDepthOff();
+  capture->Update();
+  vtkLightField* lightField = capture->GetOutput();
+
+  // The fish is textured, not flat: its side view has many distinct colours.
+  vtkDataArray* coaxial = lightField->GetPass(vtkLightField::COAXIAL);
+  vtkDataArray* label = lightField->GetPass(vtkLightField::LABEL);
+  std::set<int> colors;
+  for (vtkIdType p = 0; p < 128 * 128; ++p)
+  {
+    if (label->GetComponent(p, 0) > 0)
+    {
+      colors.insert((static_cast<int>(coaxial->GetComponent(p, 0)) / 16) * 256 +
+        static_cast<int>(coaxial->GetComponent(p, 1)) / 16 * 16 +
+        static_cast<int>(coaxial->GetComponent(p, 2)) / 16);
+    }
+  }
+  lfdtest::Check(colors.size() >= 20,
+    "distinct colour bins on the fish, view 0",
+    static_cast<double>(colors.size()),
+    20);
+
+  auto montage = lfdtest::CoaxialMontage(lightField, { 0, 1 });
+  const bool matches = lfdtest::MatchesBaseline(argc, argv, montage, 0.05);
+  return matches && lfdtest::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,254 @@
+/**
+ * @class   vtkLightFieldCapture
+ * @brief   renders a mesh from a rig of cameras into a synthetic vtkLightField
+ *
+ * vtkLightFieldCapture photographs a vtkPolyData (input port 0) from every
+ * view of a camera rig with VTK's OpenGL renderer and stores the images as
+ * the passes of a vtkLightField (DESIGN.md section 5):
+ *
+ * - `Coaxial` (RGB uint8): a positional point light at the camera centre,
+ *   no attenuation, not a spotlight; Lambertian diffuse (coefficient
+ *   1 - Ambient) plus Ambient, no specular, so a surface seen at normal
+ *   incidence shows exactly its albedo. The albedo is the mesh's "RGB"
+ *   array (uint8, 3 components, point or cell data) used as direct
+ *   scalars, or, when the mesh has texture coordinates and a texture image
+ *   is connected to input port 1, that texture (linear interpolation), or
+ *   else white. With SceneFixedLight on, the same light stays in world space
+ *   at the centre of view 0 for every view (Chen et al. 2005, Fig. 5).
+ * - `Label` (uint8): the mesh's cell array "Label" rendered with flat
+ *   colours (no lighting, no anti-aliasing, no blending), 0 where no surface
+ *   is seen. Cells of a mesh without "Label" are label 1.
+ * - `Depth` (float): distance of the visible surface along the camera's
+ *   optical axis, in world units, 0 where no surface is seen. The clipping
+ *   range is set tight around the mesh bounds for every view, so the
+ *   24-bit depth buffer resolves a small fraction of the object size.
+ *
+ * The rig is a cylinder built with vtkCameraRig::MakeCylinder: NumberOfRows
+ * rings (or one ring per entry of RowHeights) of ViewsPerRing cameras about
+ * Axis through Center, at distance Radius, Width x Height pixels and a
+ * vertical ViewAngle. Radius 0 frames the mesh: the sphere about Center that
+ * holds the bounds fills the narrower field of view with a 10 % margin.
+ * Rows are symmetric about Center, RowSpacing apart (0 = 0.15 x radius).
+ * Alternatively SetRig() captures from the views of a given rig (its image
+ * size wins over Width and Height).
+ *
+ * The light field's pixel rows are copied bottom row first, exactly as the
+ * OpenGL read-back delivers them (see vtkLightField, "Row order"). The
+ * output owns a copy of the rig, cylinder fitted when it has 3 or more
+ * views. Progress is reported once per view; AbortExecute stops the capture
+ * after the current view.
+ *
+ * Rendering needs an OpenGL context: under Debian's VTK an X server, e.g.
+ * `xvfb-run -a`.
+ *
+ * @sa vtkProceduralObjectSource vtkLightField vtkCameraRig
+ */
+#ifndef vtkLightFieldCapture_h
+#define vtkLightFieldCapture_h
+
+#include "lfdSynthesisModule.h" // For export macro
+#include "vtkAlgorithm.h"
+
+class vtkCameraRig;
+class vtkDoubleArray;
+class vtkImageData;
+class vtkLightField;
+class vtkPolyData;
+
+class LFDSYNTHESIS_EXPORT vtkLightFieldCapture : public vtkAlgorithm
+{
+public:
+  static vtkLightFieldCapture* New();
+  vtkTypeMacro(vtkLightFieldCapture, vtkAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Cameras per ring (default 120) and number of rings (default 3).
+   */
+  vtkSetClampMacro(ViewsPerRing, int, 1, 100000);
+  vtkGetMacro(ViewsPerRing, int);
+  vtkSetClampMacro(NumberOfRows, int, 1, 1000);
+  vtkGetMacro(NumberOfRows, int);
+  ///@}
+
+  ///@{
+  /**
+   * Distance of the cameras from the axis; 0 (default) frames the mesh.
+   */
+  vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Distance between neighbouring rows along the axis; 0 (default) is
+   * 0.15 x the radius.
+   */
+  vtkSetClampMacro(RowSpacing, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(RowSpacing, double);
+  ///@}
+
+  ///@{
+  /**
+   * Explicit row heights along the axis, relative to Center. When set and
+   * not empty they replace NumberOfRows and RowSpacing.
+   */
+  virtual void SetRowHeights(vtkDoubleArray* heights);
+  vtkGetObjectMacro(RowHeights, vtkDoubleArray);
+  ///@}
+
+  ///@{
+  /**
+   * Image size in pixels. Default 256 x 256.
+   */
+  vtkSetClampMacro(Width, int, 1, 16384);
+  vtkGetMacro(Width, int);
+  vtkSetClampMacro(Height, int, 1, 16384);
+  vtkGetMacro(Height, int);
+  ///@}
+
+  ///@{
+  /**
+   * Vertical field of view in degrees. Default 30.
+   */
+  vtkSetClampMacro(ViewAngle, double, 0.1, 179.0);
+  vtkGetMacro(ViewAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Direction of the rig's axis (image "up" of every camera). Default +Y.
+   */
+  vtkSetVector3Macro(Axis, double);
+  vtkGetVector3Macro(Axis, double);
+  ///@}
+
+  ///@{
+  /**
+   * Point of the axis the rows are placed about. By default (AutoCenter on)
+   * it is the centre of the mesh bounds; setting a centre turns AutoCenter
+   * off.
+   */
+  virtual void SetCenter(double x, double y, double z);
+  virtual void SetCenter(const double center[3]);
+  vtkGetVector3Macro(Center, double);
+  vtkSetMacro(AutoCenter, bool);
+  vtkGetMacro(AutoCenter, bool);
+  vtkBooleanMacro(AutoCenter, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Passes to capture. All on by default.
+   */
+  vtkSetMacro(CaptureCoaxial, bool);
+  vtkGetMacro(CaptureCoaxial, bool);
+  vtkBooleanMacro(CaptureCoaxial, bool);
+  vtkSetMacro(CaptureLabel, bool);
+  vtkGetMacro(CaptureLabel, bool);
+  vtkBooleanMacro(CaptureLabel, bool);
+  vtkSetMacro(CaptureDepth, bool);
+  vtkGetMacro(CaptureDepth, bool);
+  vtkBooleanMacro(CaptureDepth, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Off (default): coaxial light, the lamp travels with the camera. On: the
+   * same point light fixed in world space at the centre of view 0.
+   */
+  vtkSetMacro(SceneFixedLight, bool);
+  vtkGetMacro(SceneFixedLight, bool);
+  vtkBooleanMacro(SceneFixedLight, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Ambient coefficient of the Coaxial pass; the diffuse coefficient is
+   * 1 - Ambient. Default 0.1.
+   */
+  vtkSetClampMacro(Ambient, double, 0.0, 1.0);
+  vtkGetMacro(Ambient, double);
+  ///@}
+
+  ///@{
+  /**
+   * A rig to capture from instead of the cylinder built from the
+   * parameters above. Default nullptr.
+   */
+  virtual void SetRig(vtkCameraRig* rig);
+  vtkGetObjectMacro(Rig, vtkCameraRig);
+  ///@}
+
+  ///@{
+  /**
+   * Input connections: the mesh (port 0) and its optional texture image
+   * (port 1).
+   */
+  void SetInputData(vtkPolyData* mesh);
+  void SetTextureConnection(vtkAlgorithmOutput* texture);
+  void SetTextureData(vtkImageData* texture);
+  ///@}
+
+  /**
+   * The captured light field.
+   */
+  vtkLightField* GetOutput();
+
+  /**
+   * Dispatches the pipeline requests to the Request* methods below.
+   */
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inInfo,
+    vtkInformationVector* outInfo) override;
+
+protected:
+  vtkLightFieldCapture();
+  ~vtkLightFieldCapture() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+
+  virtual int RequestDataObject(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector);
+  virtual int RequestInformation(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector);
+  virtual int RequestUpdateExtent(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector);
+  virtual int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector);
+
+  /**
+   * Builds the cylinder rig for a mesh with the given bounds (Rig unset).
+   */
+  bool BuildRig(const double bounds[6], vtkCameraRig* rig);
+
+  int ViewsPerRing = 120;
+  int NumberOfRows = 3;
+  double Radius = 0.0;
+  double RowSpacing = 0.0;
+  vtkDoubleArray* RowHeights = nullptr;
+  int Width = 256;
+  int Height = 256;
+  double ViewAngle = 30.0;
+  double Axis[3] = { 0.0, 1.0, 0.0 };
+  double Center[3] = { 0.0, 0.0, 0.0 };
+  bool AutoCenter = true;
+  bool CaptureCoaxial = true;
+  bool CaptureLabel = true;
+  bool CaptureDepth = true;
+  bool SceneFixedLight = false;
+  double Ambient = 0.1;
+  vtkCameraRig* Rig = nullptr;
+
+private:
+  vtkLightFieldCapture(const vtkLightFieldCapture&) = delete;
+  void operator=(const vtkLightFieldCapture&) = delete;
+};
+
+#endif
