@@ -500,7 +500,8 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
       return 0;
     }
     const auto byte = static_cast<unsigned char>(value);
-    labelColors->SetTypedTuple(cell, std::vector<unsigned char>(3, byte).data());
+    const unsigned char color[3] = { byte, byte, byte };
+    labelColors->SetTypedTuple(cell, color);
   }
   vtkNew<vtkPolyData> labelMesh;
   labelMesh->CopyStructure(mesh);

@@ -13,7 +13,8 @@
  *   array (uint8, 3 components, point or cell data) used as direct
  *   scalars, or, when the mesh has texture coordinates and a texture image
  *   is connected to input port 1, that texture (linear interpolation), or
- *   else white. With SceneFixedLight on, the same light stays in world space
+ *   else white. A mesh without point normals is shaded per facet. With
+ *   SceneFixedLight on, the same light stays in world space
  *   at the centre of view 0 for every view (Chen et al. 2005, Fig. 5).
  * - `Label` (uint8): the mesh's cell array "Label" rendered with flat
  *   colours (no lighting, no anti-aliasing, no blending), 0 where no surface
@@ -31,6 +32,10 @@
  * Rows are symmetric about Center, RowSpacing apart (0 = 0.15 x radius).
  * Alternatively SetRig() captures from the views of a given rig (its image
  * size wins over Width and Height).
+ *
+ * No pass is anti-aliased (no multisampling, no FXAA): a pixel's colour,
+ * label and depth all come from the one surface its centre sees, so the
+ * edges of the passes agree exactly.
  *
  * The light field's pixel rows are copied bottom row first, exactly as the
  * OpenGL read-back delivers them (see vtkLightField, "Row order"). The

@@ -1,7 +1,9 @@
 // Regression image of the checkerboard captured under coaxial light from
 // a ring of 8 views: view 0 (face-on) and view 1 (45 degrees) side by side.
 #include "lfdSynthesisTestUtilities.h"
+#include "vtkCellData.h"
 #include "vtkLightFieldCapture.h"
+#include "vtkPolyData.h"
 #include "vtkProceduralObjectSource.h"
 
 int TestCheckerboardCapture(int argc, char* argv[])
@@ -17,6 +19,18 @@ int TestCheckerboardCapture(int argc, char* argv[])
   capture->CaptureLabelOff();
   capture->CaptureDepthOff();
   capture->Update();
+
+  // 8 x 8 checks of ceil(48 / 8) = 6 x 6 quads, two triangles each.
+  vtkPolyData* mesh = source->GetOutput();
+  lfdtest::Check(mesh->GetNumberOfCells() == 2 * 48 * 48,
+    "checkerboard triangles",
+    mesh->GetNumberOfCells(),
+    2 * 48 * 48);
+  lfdtest::Check(mesh->GetCellData()->GetArray("RGB") != nullptr &&
+      mesh->GetCellData()->GetArray("Label") != nullptr,
+    "cell arrays RGB and Label",
+    1,
+    1);
   vtkLightField* lightField = capture->GetOutput();
 
   // Face-on under coaxial light: white checks show their albedo, black

@@ -1,8 +1,13 @@
 // Regression image of the fish captured under coaxial light: the side view
 // (view 0, from +Z) and the view from 45 degrees, side by side.
 #include "lfdSynthesisTestUtilities.h"
+#include "vtkCellData.h"
 #include "vtkLightFieldCapture.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkProceduralObjectSource.h"
+
+#include <cmath>
 
 #include <set>
 
@@ -18,6 +23,30 @@ int TestFishCapture(int argc, char* argv[])
   capture->SetHeight(128);
   capture->CaptureDepthOff();
   capture->Update();
+
+  // The mesh: normals, three labelled parts, about unit size at the origin.
+  vtkPolyData* mesh = source->GetOutput();
+  double range[2] = { -1, -1 };
+  if (vtkDataArray* parts = mesh->GetCellData()->GetArray("Label"))
+  {
+    parts->GetRange(range);
+  }
+  lfdtest::Check(mesh->GetPointData()->GetNormals() != nullptr, "fish has normals", 1, 1);
+  lfdtest::Check(range[0] == 1 && range[1] == 3, "fish labels span [1, 3]", range[1], 3);
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  lfdtest::Check(bounds[1] - bounds[0] > 1.0 && bounds[1] - bounds[0] < 1.5,
+    "fish length",
+    bounds[1] - bounds[0],
+    1.5);
+  lfdtest::Check(std::abs(bounds[0] + bounds[1]) < 0.2,
+    "fish centred along X",
+    0.5 * (bounds[0] + bounds[1]),
+    0.1);
+  lfdtest::Check(source->GetTextureOutput()->GetNumberOfPoints() == 1,
+    "1 x 1 texture for a vertex-coloured object",
+    source->GetTextureOutput()->GetNumberOfPoints(),
+    1);
   vtkLightField* lightField = capture->GetOutput();
 
   // The fish is textured, not flat: its side view has many distinct colours.
