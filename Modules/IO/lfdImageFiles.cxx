@@ -29,6 +29,15 @@ OIIO::TypeDesc ToTypeDesc(int scalarType)
   }
 }
 
+// Alpha stays as stored (no premultiplication on read or write), so that
+// 8-bit RGBA values round-trip exactly.
+OIIO::ImageSpec UnassociatedAlpha()
+{
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  return config;
+}
+
 std::string LastOIIOError(const std::string& fallback)
 {
   std::string message = OIIO::geterror();
@@ -39,7 +48,8 @@ std::string LastOIIOError(const std::string& fallback)
 //------------------------------------------------------------------------------
 bool ReadImageHeader(const std::string& path, ImageHeader& header, std::string& error)
 {
-  auto input = OIIO::ImageInput::open(path);
+  const OIIO::ImageSpec config = UnassociatedAlpha();
+  auto input = OIIO::ImageInput::open(path, &config);
   if (!input)
   {
     error = LastOIIOError("cannot open the image");
@@ -81,7 +91,8 @@ bool ReadImagePixels(const std::string& path,
   std::string& error)
 {
   const OIIO::TypeDesc type = ToTypeDesc(scalarType);
-  auto input = OIIO::ImageInput::open(path);
+  const OIIO::ImageSpec config = UnassociatedAlpha();
+  auto input = OIIO::ImageInput::open(path, &config);
   if (!input)
   {
     error = LastOIIOError("cannot open the image");
@@ -154,6 +165,7 @@ bool WriteImagePixels(const std::string& path,
     return false;
   }
   OIIO::ImageSpec spec(width, height, channels, type);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
   if (type == OIIO::TypeDesc::FLOAT)
   {
     spec.attribute("compression", "zip");

@@ -1,0 +1,108 @@
+#include "vtkImageFileReader.h"
+
+#include "lfdImageFiles.h"
+#include "vtkDataArray.h"
+#include "vtkErrorCode.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <filesystem>
+
+vtkStandardNewMacro(vtkImageFileReader);
+
+//------------------------------------------------------------------------------
+vtkImageFileReader::vtkImageFileReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+vtkImageFileReader::~vtkImageFileReader()
+{
+  this->SetFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkImageFileReader::Fail(unsigned long errorCode, const std::string& message)
+{
+  this->SetErrorCode(errorCode);
+  this->ErrorMessage = message;
+  vtkErrorMacro(<< message);
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkImageFileReader::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputs)
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
+  this->ErrorMessage.clear();
+  if (!this->FileName || !*this->FileName)
+  {
+    return this->Fail(vtkErrorCode::NoFileNameError, "vtkImageFileReader: no FileName set");
+  }
+  lfd::io::ImageHeader header;
+  std::string error;
+  if (!lfd::io::ReadImageHeader(this->FileName, header, error))
+  {
+    std::error_code ec;
+    const bool exists = std::filesystem::exists(this->FileName, ec);
+    return this->Fail(exists ? vtkErrorCode::FileFormatError : vtkErrorCode::FileNotFoundError,
+      std::string(this->FileName) + ": " + (exists ? error : "file not found"));
+  }
+  vtkInformation* info = outputs->GetInformationObject(0);
+  int extent[6] = { 0, header.Width - 1, 0, header.Height - 1, 0, 0 };
+  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  vtkDataObject::SetPointDataActiveScalarInfo(info, header.ScalarType, header.Channels);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkImageFileReader::RequestData(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputs)
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
+  this->ErrorMessage.clear();
+  vtkImageData* output = vtkImageData::GetData(outputs);
+  output->Initialize();
+  if (!this->FileName || !*this->FileName)
+  {
+    return this->Fail(vtkErrorCode::NoFileNameError, "vtkImageFileReader: no FileName set");
+  }
+  lfd::io::ImageHeader header;
+  std::string error;
+  if (!lfd::io::ReadImageHeader(this->FileName, header, error))
+  {
+    return this->Fail(vtkErrorCode::FileNotFoundError, std::string(this->FileName) + ": " + error);
+  }
+  output->SetExtent(0, header.Width - 1, 0, header.Height - 1, 0, 0);
+  output->AllocateScalars(header.ScalarType, header.Channels);
+  vtkDataArray* scalars = output->GetPointData()->GetScalars();
+  scalars->SetName("ImageFile");
+  if (!lfd::io::ReadImagePixels(this->FileName,
+        header,
+        header.Channels,
+        header.ScalarType,
+        scalars->GetVoidPointer(0),
+        error))
+  {
+    output->Initialize();
+    return this->Fail(vtkErrorCode::FileFormatError, std::string(this->FileName) + ": " + error);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkImageFileReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "ErrorMessage: " << (this->ErrorMessage.empty() ? "(none)" : this->ErrorMessage)
+     << "\n";
+}

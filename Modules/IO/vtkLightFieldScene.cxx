@@ -1,0 +1,610 @@
+#include "vtkLightFieldScene.h"
+
+#include "lfdFileUtilities.h"
+#include "lfdJsonFields.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <utility>
+#include <vector>
+
+vtkStandardNewMacro(vtkLightFieldScene);
+
+namespace
+{
+using lfd::io::ElementPath;
+using lfd::io::FieldError;
+using lfd::io::Json;
+using lfd::io::MemberPath;
+
+constexpr int SceneVersion = 1;
+
+struct Keyframe
+{
+  double Time = 0.0;
+  vtkSmartPointer<vtkPoints> Points;
+};
+
+vtkSmartPointer<vtkPoints> MakePoints(const std::vector<double>& coordinates)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(coordinates.size() / 3));
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    points->SetPoint(i, &coordinates[3 * i]);
+  }
+  return points;
+}
+
+Json PointsToJson(vtkDataArray* array)
+{
+  Json list = Json::array();
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    double p[3];
+    array->GetTuple(i, p);
+    list.push_back({ p[0], p[1], p[2] });
+  }
+  return list;
+}
+
+Json VectorToJson(const double* v)
+{
+  return Json::array({ v[0], v[1], v[2] });
+}
+
+bool AllFinite(vtkDataArray* array)
+{
+  for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
+  {
+    if (!std::isfinite(array->GetComponent(i / array->GetNumberOfComponents(),
+          static_cast<int>(i % array->GetNumberOfComponents()))))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+struct vtkLightFieldScene::Internals
+{
+  vtkSmartPointer<vtkUnstructuredGrid> Cage = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  std::vector<Keyframe> Keyframes;
+  vtkSmartPointer<vtkCamera> Camera = vtkSmartPointer<vtkCamera>::New();
+  std::string ResolvedPath;
+  std::string ErrorMessage;
+};
+
+//------------------------------------------------------------------------------
+vtkLightFieldScene::vtkLightFieldScene()
+  : Internal(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkLightFieldScene::~vtkLightFieldScene()
+{
+  this->SetFileName(nullptr);
+  this->SetLightFieldPath(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldScene::Initialize()
+{
+  this->SetLightFieldPath(nullptr);
+  this->Internal->Cage = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  this->Internal->Keyframes.clear();
+  this->Internal->Camera = vtkSmartPointer<vtkCamera>::New();
+  this->Width = 512;
+  this->Height = 512;
+  this->FocalDistance = 0.0;
+  this->Subdivision = 1;
+  this->Background[0] = this->Background[1] = this->Background[2] = 0.0;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkLightFieldScene::GetErrorMessage() const
+{
+  return this->Internal->ErrorMessage.c_str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldScene::Fail(const std::string& message)
+{
+  this->Internal->ErrorMessage = message;
+  vtkErrorMacro(<< message);
+  return false;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkLightFieldScene::GetResolvedLightFieldPath()
+{
+  if (!this->LightFieldPath)
+  {
+    this->Internal->ResolvedPath.clear();
+  }
+  else
+  {
+    this->Internal->ResolvedPath = lfd::io::ResolvePath(
+      this->FileName ? lfd::io::ParentFolder(this->FileName) : std::string(), this->LightFieldPath);
+  }
+  return this->Internal->ResolvedPath.c_str();
+}
+
+//------------------------------------------------------------------------------
+vtkUnstructuredGrid* vtkLightFieldScene::GetCage()
+{
+  return this->Internal->Cage;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldScene::SetCage(vtkUnstructuredGrid* cage)
+{
+  this->Internal->Cage =
+    cage ? vtkSmartPointer<vtkUnstructuredGrid>(cage) : vtkSmartPointer<vtkUnstructuredGrid>::New();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldScene::HasCage()
+{
+  return this->Internal->Cage->GetNumberOfPoints() > 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldScene::GetNumberOfKeyframes() const
+{
+  return static_cast<int>(this->Internal->Keyframes.size());
+}
+
+//------------------------------------------------------------------------------
+double vtkLightFieldScene::GetKeyframeTime(int i) const
+{
+  return (i >= 0 && i < this->GetNumberOfKeyframes()) ? this->Internal->Keyframes[i].Time : 0.0;
+}
+
+//------------------------------------------------------------------------------
+vtkPoints* vtkLightFieldScene::GetKeyframePoints(int i) const
+{
+  return (i >= 0 && i < this->GetNumberOfKeyframes()) ? this->Internal->Keyframes[i].Points.Get()
+                                                      : nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldScene::AddKeyframe(double time, vtkPoints* points)
+{
+  Keyframe keyframe;
+  keyframe.Time = time;
+  keyframe.Points = vtkSmartPointer<vtkPoints>::New();
+  keyframe.Points->SetDataTypeToDouble();
+  if (points)
+  {
+    keyframe.Points->DeepCopy(points);
+  }
+  this->Internal->Keyframes.push_back(keyframe);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldScene::RemoveAllKeyframes()
+{
+  this->Internal->Keyframes.clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkCamera* vtkLightFieldScene::GetCamera()
+{
+  return this->Internal->Camera;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldScene::Read(const char* fileName)
+{
+  this->Internal->ErrorMessage.clear();
+  if (!fileName || !*fileName)
+  {
+    return this->Fail("vtkLightFieldScene::Read: no file name given");
+  }
+  Json document;
+  std::string error;
+  if (!lfd::io::ParseJsonFile(fileName, document, error))
+  {
+    return this->Fail(error);
+  }
+
+  // Parse into locals; the scene changes only when the whole file is valid.
+  std::string lightField;
+  bool hasLightField = false;
+  auto cage = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  std::vector<Keyframe> keyframes;
+  auto camera = vtkSmartPointer<vtkCamera>::New();
+  int width = 512, height = 512, subdivision = 1;
+  double focalDistance = 0.0;
+  double background[3] = { 0.0, 0.0, 0.0 };
+  try
+  {
+    const std::string format =
+      lfd::io::GetString(lfd::io::RequireMember(document, "", "format"), "format");
+    if (format != "lfd-scene")
+    {
+      throw FieldError("format", "expected \"lfd-scene\", found \"" + format + "\"");
+    }
+    const long long version = lfd::io::GetInteger(
+      lfd::io::RequireMember(document, "", "version"), "version", 0, VTK_INT_MAX);
+    if (version != SceneVersion)
+    {
+      throw FieldError("version",
+        "unsupported version " + std::to_string(version) + " (this reader reads version " +
+          std::to_string(SceneVersion) + ")");
+    }
+    if (const Json* value = lfd::io::FindMember(document, "", "lightfield"))
+    {
+      lightField = lfd::io::GetString(*value, "lightfield");
+      hasLightField = true;
+    }
+
+    size_t cagePoints = 0;
+    if (const Json* cageValue = lfd::io::FindMember(document, "", "cage"))
+    {
+      const std::vector<double> rest = lfd::io::GetPoints(
+        lfd::io::RequireMember(*cageValue, "cage", "rest_points"), "cage.rest_points");
+      cagePoints = rest.size() / 3;
+      std::vector<double> deformed = rest;
+      if (const Json* points = lfd::io::FindMember(*cageValue, "cage", "points"))
+      {
+        deformed = lfd::io::GetPoints(*points, "cage.points");
+        if (deformed.size() != rest.size())
+        {
+          throw FieldError("cage.points",
+            "has " + std::to_string(deformed.size() / 3) + " points, cage.rest_points has " +
+              std::to_string(cagePoints));
+        }
+      }
+      const Json& boxes = lfd::io::RequireMember(*cageValue, "cage", "boxes");
+      if (!boxes.is_array())
+      {
+        throw FieldError(
+          "cage.boxes", "expected an array of boxes, found " + lfd::io::Describe(boxes));
+      }
+      cage->SetPoints(MakePoints(deformed));
+      vtkNew<vtkDoubleArray> restArray;
+      restArray->SetName("RestPosition");
+      restArray->SetNumberOfComponents(3);
+      restArray->SetNumberOfTuples(static_cast<vtkIdType>(cagePoints));
+      std::copy(rest.begin(), rest.end(), restArray->GetPointer(0));
+      cage->GetPointData()->AddArray(restArray);
+      vtkNew<vtkIntArray> labels;
+      labels->SetName("Label");
+      cage->Allocate(static_cast<vtkIdType>(boxes.size()));
+      for (size_t b = 0; b < boxes.size(); ++b)
+      {
+        const std::string boxPath = ElementPath("cage.boxes", b);
+        const Json& corners = lfd::io::RequireMember(boxes[b], boxPath, "corners");
+        const std::string cornersPath = MemberPath(boxPath, "corners");
+        if (!corners.is_array() || corners.size() != 8)
+        {
+          throw FieldError(cornersPath,
+            "a box has 8 corners (VTK hexahedron order), found " + lfd::io::Describe(corners));
+        }
+        vtkIdType ids[8];
+        for (size_t c = 0; c < 8; ++c)
+        {
+          const std::string cornerPath = ElementPath(cornersPath, c);
+          const double index = lfd::io::GetNumber(corners[c], cornerPath);
+          if (index != std::floor(index) || index < 0 || index >= static_cast<double>(cagePoints))
+          {
+            throw FieldError(cornerPath,
+              "corner index " + corners[c].dump() + " out of range (the cage has " +
+                std::to_string(cagePoints) + " points, indices 0.." +
+                std::to_string(static_cast<long long>(cagePoints) - 1) + ")");
+          }
+          ids[c] = static_cast<vtkIdType>(index);
+        }
+        const long long label = lfd::io::GetInteger(
+          lfd::io::RequireMember(boxes[b], boxPath, "label"), MemberPath(boxPath, "label"), 0, 255);
+        cage->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
+        labels->InsertNextValue(static_cast<int>(label));
+      }
+      cage->GetCellData()->AddArray(labels);
+    }
+
+    if (const Json* list = lfd::io::FindMember(document, "", "keyframes"))
+    {
+      if (!list->is_array())
+      {
+        throw FieldError("keyframes", "expected an array, found " + lfd::io::Describe(*list));
+      }
+      if (!list->empty() && cagePoints == 0)
+      {
+        throw FieldError("keyframes", "keyframes move cage points, but the scene has no cage");
+      }
+      for (size_t k = 0; k < list->size(); ++k)
+      {
+        const std::string path = ElementPath("keyframes", k);
+        Keyframe keyframe;
+        keyframe.Time = lfd::io::GetNumber(
+          lfd::io::RequireMember((*list)[k], path, "time"), MemberPath(path, "time"));
+        const std::vector<double> points = lfd::io::GetPoints(
+          lfd::io::RequireMember((*list)[k], path, "points"), MemberPath(path, "points"));
+        if (points.size() / 3 != cagePoints)
+        {
+          throw FieldError(MemberPath(path, "points"),
+            "has " + std::to_string(points.size() / 3) + " points, the cage has " +
+              std::to_string(cagePoints));
+        }
+        keyframe.Points = MakePoints(points);
+        keyframes.push_back(keyframe);
+      }
+    }
+
+    if (const Json* cam = lfd::io::FindMember(document, "", "camera"))
+    {
+      if (const Json* v = lfd::io::FindMember(*cam, "camera", "position"))
+      {
+        camera->SetPosition(lfd::io::GetNumbers(*v, "camera.position", 3).data());
+      }
+      if (const Json* v = lfd::io::FindMember(*cam, "camera", "focal_point"))
+      {
+        camera->SetFocalPoint(lfd::io::GetNumbers(*v, "camera.focal_point", 3).data());
+      }
+      if (const Json* v = lfd::io::FindMember(*cam, "camera", "view_up"))
+      {
+        const std::vector<double> up = lfd::io::GetNumbers(*v, "camera.view_up", 3);
+        if (up[0] == 0.0 && up[1] == 0.0 && up[2] == 0.0)
+        {
+          throw FieldError("camera.view_up", "must not be the zero vector");
+        }
+        camera->SetViewUp(up.data());
+      }
+      if (const Json* v = lfd::io::FindMember(*cam, "camera", "view_angle"))
+      {
+        const double angle = lfd::io::GetNumber(*v, "camera.view_angle");
+        if (angle <= 0.0 || angle >= 180.0)
+        {
+          throw FieldError(
+            "camera.view_angle", "expected degrees in (0, 180), found " + lfd::io::Describe(*v));
+        }
+        camera->SetViewAngle(angle);
+      }
+      if (const Json* v = lfd::io::FindMember(*cam, "camera", "width"))
+      {
+        width = static_cast<int>(lfd::io::GetInteger(*v, "camera.width", 1, 1 << 16));
+      }
+      if (const Json* v = lfd::io::FindMember(*cam, "camera", "height"))
+      {
+        height = static_cast<int>(lfd::io::GetInteger(*v, "camera.height", 1, 1 << 16));
+      }
+    }
+
+    if (const Json* render = lfd::io::FindMember(document, "", "render"))
+    {
+      if (const Json* v = lfd::io::FindMember(*render, "render", "focal_distance"))
+      {
+        focalDistance = lfd::io::GetNumber(*v, "render.focal_distance");
+      }
+      if (const Json* v = lfd::io::FindMember(*render, "render", "subdivision"))
+      {
+        if (v->is_string() && v->get<std::string>() == "auto")
+        {
+          subdivision = 0;
+        }
+        else if (v->is_number())
+        {
+          subdivision = static_cast<int>(lfd::io::GetInteger(*v, "render.subdivision", 1, 1024));
+        }
+        else
+        {
+          throw FieldError("render.subdivision",
+            "expected an integer in [1, 1024] or \"auto\", found " + lfd::io::Describe(*v));
+        }
+      }
+      if (const Json* v = lfd::io::FindMember(*render, "render", "background"))
+      {
+        const std::vector<double> rgb = lfd::io::GetNumbers(*v, "render.background", 3);
+        for (size_t c = 0; c < 3; ++c)
+        {
+          if (rgb[c] < 0.0 || rgb[c] > 1.0)
+          {
+            throw FieldError(ElementPath("render.background", c),
+              "expected a colour component in [0, 1], found " + lfd::io::Describe((*v)[c]));
+          }
+          background[c] = rgb[c];
+        }
+      }
+    }
+  }
+  catch (const std::exception& e)
+  {
+    return this->Fail(std::string(fileName) + ": " + e.what());
+  }
+
+  this->SetFileName(fileName);
+  this->SetLightFieldPath(hasLightField ? lightField.c_str() : nullptr);
+  this->Internal->Cage = cage;
+  this->Internal->Keyframes = std::move(keyframes);
+  this->Internal->Camera = camera;
+  this->Width = width;
+  this->Height = height;
+  this->FocalDistance = focalDistance;
+  this->Subdivision = subdivision;
+  std::copy(background, background + 3, this->Background);
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldScene::Write(const char* fileName)
+{
+  this->Internal->ErrorMessage.clear();
+  if (!fileName || !*fileName)
+  {
+    return this->Fail("vtkLightFieldScene::Write: no file name given");
+  }
+  const std::string file = fileName;
+  Json document;
+  document["format"] = "lfd-scene";
+  document["version"] = SceneVersion;
+  if (this->LightFieldPath)
+  {
+    document["lightfield"] = this->LightFieldPath;
+  }
+  vtkUnstructuredGrid* cage = this->Internal->Cage;
+  const vtkIdType cagePoints = cage->GetNumberOfPoints();
+  if (cagePoints > 0)
+  {
+    vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
+    vtkDataArray* labels = cage->GetCellData()->GetArray("Label");
+    if (!rest || rest->GetNumberOfComponents() != 3 || rest->GetNumberOfTuples() != cagePoints)
+    {
+      return this->Fail(file + ": the cage has no \"RestPosition\" point array of 3 components");
+    }
+    if (!labels || labels->GetNumberOfTuples() != cage->GetNumberOfCells())
+    {
+      return this->Fail(file + ": the cage has no \"Label\" cell array");
+    }
+    if (!AllFinite(rest) || !AllFinite(cage->GetPoints()->GetData()))
+    {
+      return this->Fail(file + ": the cage has non-finite coordinates");
+    }
+    Json boxes = Json::array();
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < cage->GetNumberOfCells(); ++c)
+    {
+      if (cage->GetCellType(c) != VTK_HEXAHEDRON)
+      {
+        return this->Fail(file + ": cage cell " + std::to_string(c) + " is not a hexahedron");
+      }
+      cage->GetCellPoints(c, ids);
+      Json corners = Json::array();
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        corners.push_back(ids->GetId(k));
+      }
+      Json box;
+      box["corners"] = corners;
+      box["label"] = static_cast<int>(labels->GetComponent(c, 0));
+      boxes.push_back(box);
+    }
+    Json cageJson;
+    cageJson["rest_points"] = PointsToJson(rest);
+    cageJson["points"] = PointsToJson(cage->GetPoints()->GetData());
+    cageJson["boxes"] = boxes;
+    document["cage"] = cageJson;
+  }
+  if (!this->Internal->Keyframes.empty())
+  {
+    Json list = Json::array();
+    for (size_t k = 0; k < this->Internal->Keyframes.size(); ++k)
+    {
+      const Keyframe& keyframe = this->Internal->Keyframes[k];
+      if (keyframe.Points->GetNumberOfPoints() != cagePoints)
+      {
+        return this->Fail(file + ": keyframe " + std::to_string(k) + " has " +
+          std::to_string(keyframe.Points->GetNumberOfPoints()) + " points, the cage has " +
+          std::to_string(cagePoints));
+      }
+      if (!std::isfinite(keyframe.Time) || !AllFinite(keyframe.Points->GetData()))
+      {
+        return this->Fail(file + ": keyframe " + std::to_string(k) + " has non-finite values");
+      }
+      Json entry;
+      entry["time"] = keyframe.Time;
+      entry["points"] = PointsToJson(keyframe.Points->GetData());
+      list.push_back(entry);
+    }
+    document["keyframes"] = list;
+  }
+  vtkCamera* camera = this->Internal->Camera;
+  Json cameraJson;
+  cameraJson["position"] = VectorToJson(camera->GetPosition());
+  cameraJson["focal_point"] = VectorToJson(camera->GetFocalPoint());
+  cameraJson["view_up"] = VectorToJson(camera->GetViewUp());
+  cameraJson["view_angle"] = camera->GetViewAngle();
+  cameraJson["width"] = this->Width;
+  cameraJson["height"] = this->Height;
+  document["camera"] = cameraJson;
+  Json render;
+  render["focal_distance"] = this->FocalDistance;
+  if (this->Subdivision == 0)
+  {
+    render["subdivision"] = "auto";
+  }
+  else
+  {
+    render["subdivision"] = this->Subdivision;
+  }
+  render["background"] = VectorToJson(this->Background);
+  document["render"] = render;
+  if (!std::isfinite(this->FocalDistance))
+  {
+    return this->Fail(file + ": render.focal_distance is not finite");
+  }
+
+  const std::string temporary = lfd::io::TemporaryFileName(file);
+  {
+    std::ofstream stream(temporary, std::ios::binary);
+    if (!stream)
+    {
+      return this->Fail(temporary + ": cannot open the file for writing");
+    }
+    stream << document.dump(2) << "\n";
+    stream.close();
+    if (!stream)
+    {
+      lfd::io::RemoveQuietly(temporary);
+      return this->Fail(temporary + ": cannot write the scene");
+    }
+  }
+  std::string error;
+  if (!lfd::io::CommitFile(temporary, file, error))
+  {
+    return this->Fail(file + ": " + error);
+  }
+  this->SetFileName(fileName);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldScene::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "LightFieldPath: " << (this->LightFieldPath ? this->LightFieldPath : "(none)")
+     << "\n";
+  os << indent << "Cage: " << this->Internal->Cage->GetNumberOfPoints() << " points, "
+     << this->Internal->Cage->GetNumberOfCells() << " boxes\n";
+  os << indent << "Keyframes: " << this->Internal->Keyframes.size() << "\n";
+  for (const Keyframe& keyframe : this->Internal->Keyframes)
+  {
+    os << indent.GetNextIndent() << "time " << keyframe.Time << ": "
+       << keyframe.Points->GetNumberOfPoints() << " points\n";
+  }
+  os << indent << "Camera:\n";
+  this->Internal->Camera->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "Width: " << this->Width << "\n";
+  os << indent << "Height: " << this->Height << "\n";
+  os << indent << "FocalDistance: " << this->FocalDistance << "\n";
+  os << indent << "Subdivision: " << this->Subdivision << (this->Subdivision == 0 ? " (auto)" : "")
+     << "\n";
+  os << indent << "Background: (" << this->Background[0] << ", " << this->Background[1] << ", "
+     << this->Background[2] << ")\n";
+  os << indent << "ErrorMessage: "
+     << (this->Internal->ErrorMessage.empty() ? "(none)" : this->Internal->ErrorMessage) << "\n";
+}

@@ -1,0 +1,188 @@
+/**
+ * @class   vtkLightFieldScene
+ * @brief   the scene file (`scene.json`): light field, deformation cage, keyframes, camera, render
+ * settings
+ *
+ * vtkLightFieldScene reads and writes `scene.json`, version 1 (format
+ * "lfd-scene", documented in Data/README.md and DESIGN.md section 3):
+ *
+ * - LightFieldPath: the light-field dataset as written in the file;
+ *   GetResolvedLightFieldPath() resolves it against the scene file's folder.
+ * - The cage (GetCage()): a vtkUnstructuredGrid with one VTK_HEXAHEDRON per
+ *   box, corners in VTK's hexahedron order (0-3 bottom face counter-clockwise,
+ *   4-7 the top face above them), shared between neighbouring boxes. Its
+ *   points are the deformed positions; the point array "RestPosition" (3
+ *   doubles) holds the rest positions; the cell array "Label" (int) the label
+ *   of each box. A file without `points` gets points equal to the rest
+ *   positions; a file without `cage` gives an empty grid (HasCage() false).
+ * - Keyframes: (time, cage point positions), in file order.
+ * - Camera: a vtkCamera (position, focal point, view up, view angle in
+ *   degrees) and the image Width x Height (default 512 x 512, 30 degrees).
+ * - Render settings: FocalDistance (default 0), Subdivision (k x k x k
+ *   sub-boxes per box, >= 1, default 1; the string "auto" is stored as 0,
+ *   see GetSubdivisionAuto()) and Background (RGB, each in [0, 1], default
+ *   black).
+ *
+ * Read() validates the whole file before changing anything and returns false
+ * with one line in GetErrorMessage() naming the file and the field: malformed
+ * JSON (line and column), wrong format, unknown version, missing fields, a
+ * corner index out of range, a box without exactly 8 corners, `points` and
+ * `rest_points` of different lengths, a keyframe whose point count differs
+ * from the cage's, a non-finite number, a value out of range. Write() writes
+ * atomically (a temporary file in the same folder renamed onto the target)
+ * with doubles printed so that they read back bit for bit.
+ */
+#ifndef vtkLightFieldScene_h
+#define vtkLightFieldScene_h
+
+#include "lfdIOModule.h" // For export macro
+#include "vtkObject.h"
+
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+
+class vtkCamera;
+class vtkPoints;
+class vtkUnstructuredGrid;
+
+class LFDIO_EXPORT vtkLightFieldScene : public vtkObject
+{
+public:
+  static vtkLightFieldScene* New();
+  vtkTypeMacro(vtkLightFieldScene, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Reads `fileName`. On failure returns false, keeps the current content and
+   * sets GetErrorMessage().
+   */
+  bool Read(const char* fileName);
+
+  /**
+   * Writes `fileName` atomically. On failure returns false and sets
+   * GetErrorMessage(); an existing file is left untouched.
+   */
+  bool Write(const char* fileName);
+
+  /**
+   * The last error (one line naming the file and field), or "".
+   */
+  const char* GetErrorMessage() const;
+
+  /**
+   * Resets everything to the defaults (no light field, no cage, no
+   * keyframes, default camera and render settings).
+   */
+  void Initialize();
+
+  ///@{
+  /**
+   * The file last read or written successfully (used to resolve relative
+   * paths); may be set to place a scene built in memory.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * The light-field dataset, as written in the file.
+   */
+  vtkSetStringMacro(LightFieldPath);
+  vtkGetStringMacro(LightFieldPath);
+  ///@}
+
+  /**
+   * LightFieldPath resolved against the folder of FileName (unchanged when
+   * absolute or when FileName is not set); "" when LightFieldPath is unset.
+   */
+  const char* GetResolvedLightFieldPath();
+
+  ///@{
+  /**
+   * The cage (see the class description). SetCage() stores the grid given
+   * (no copy); it must have the "RestPosition" point array and "Label" cell
+   * array for Write() to succeed.
+   */
+  vtkUnstructuredGrid* GetCage();
+  void SetCage(vtkUnstructuredGrid* cage);
+  bool HasCage();
+  ///@}
+
+  ///@{
+  /**
+   * Keyframes: cage point positions at a time. AddKeyframe() stores a copy
+   * of `points`.
+   */
+  int GetNumberOfKeyframes() const;
+  double GetKeyframeTime(int i) const;
+  vtkPoints* GetKeyframePoints(int i) const;
+  void AddKeyframe(double time, vtkPoints* points);
+  void RemoveAllKeyframes();
+  ///@}
+
+  /**
+   * The view camera (never null).
+   */
+  vtkCamera* GetCamera();
+
+  ///@{
+  /**
+   * Image size of the rendered view in pixels (default 512 x 512).
+   */
+  vtkSetClampMacro(Width, int, 1, VTK_INT_MAX);
+  vtkGetMacro(Width, int);
+  vtkSetClampMacro(Height, int, 1, VTK_INT_MAX);
+  vtkGetMacro(Height, int);
+  ///@}
+
+  ///@{
+  /**
+   * The paper's focal distance d (Sec. 6.2), in world units (default 0).
+   */
+  vtkSetMacro(FocalDistance, double);
+  vtkGetMacro(FocalDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Tessellation of every box into k x k x k sub-boxes (DESIGN.md 4.4);
+   * k >= 1, default 1. 0 means "auto" (the renderer chooses).
+   */
+  vtkSetClampMacro(Subdivision, int, 0, 1024);
+  vtkGetMacro(Subdivision, int);
+  bool GetSubdivisionAuto() const { return this->Subdivision == 0; }
+  void SetSubdivisionAuto() { this->SetSubdivision(0); }
+  ///@}
+
+  ///@{
+  /**
+   * Background colour, RGB in [0, 1] (default black).
+   */
+  vtkSetVector3Macro(Background, double);
+  vtkGetVector3Macro(Background, double);
+  ///@}
+
+protected:
+  vtkLightFieldScene();
+  ~vtkLightFieldScene() override;
+
+  char* FileName = nullptr;
+  char* LightFieldPath = nullptr;
+  int Width = 512;
+  int Height = 512;
+  double FocalDistance = 0.0;
+  int Subdivision = 1;
+  double Background[3] = { 0.0, 0.0, 0.0 };
+
+private:
+  vtkLightFieldScene(const vtkLightFieldScene&) = delete;
+  void operator=(const vtkLightFieldScene&) = delete;
+
+  bool Fail(const std::string& message);
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif
