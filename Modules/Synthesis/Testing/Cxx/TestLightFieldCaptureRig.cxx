@@ -3,8 +3,13 @@
 #include "lfdSynthesisTestUtilities.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkExecutive.h"
 #include "vtkLightFieldCapture.h"
+#include "vtkPolyData.h"
 #include "vtkProceduralObjectSource.h"
+#include "vtkTestErrorObserver.h"
+
+#include <string>
 
 #include <vector>
 
@@ -116,5 +121,17 @@ int TestLightFieldCaptureRig(int, char*[])
     "camera 3 of the output rig is the given one",
     std::sqrt(vtkMath::Distance2BetweenPoints(c0, c1)),
     1e-12);
+
+  // An empty mesh is refused with an error that says so.
+  vtkNew<vtkLightFieldCapture> refusing;
+  vtkNew<vtkPolyData> empty;
+  refusing->SetInputData(empty);
+  vtkNew<vtkTest::ErrorObserver> errors;
+  refusing->AddObserver(vtkCommand::ErrorEvent, errors);
+  refusing->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+  refusing->Update();
+  const bool refused =
+    errors->GetError() && errors->GetErrorMessage().find("no cells") != std::string::npos;
+  lfdtest::Check(refused, "empty mesh refused with \"no cells\"", refused, 1);
   return lfdtest::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
