@@ -347,13 +347,10 @@ bool vtkCameraRig::FitCylinder()
   }
   std::vector<glm::dvec3> centers(n);
   glm::dvec3 mean(0.0);
-  glm::dmat3 upScatter(0.0);
   for (int i = 0; i < n; ++i)
   {
     centers[i] = in.Cameras[i].Center();
     mean += centers[i];
-    const glm::dvec3 up = in.Cameras[i].Up();
-    upScatter += glm::outerProduct(up, up);
   }
   mean /= static_cast<double>(n);
   glm::dmat3 scatter(0.0);
@@ -362,30 +359,27 @@ bool vtkCameraRig::FitCylinder()
     scatter += glm::outerProduct(c - mean, c - mean);
   }
 
-  // The axis: of the principal directions of the centres, the one closest to
-  // the dominant image "up" (sign-free, so views rotated by 180 degrees count
-  // too). For a single ring it is the smallest one: the normal of the plane
-  // fitted by SVD.
-  double values[3], upValues[3];
-  glm::dvec3 vectors[3], upVectors[3];
-  SymmetricEigen(scatter, values, vectors);
-  SymmetricEigen(upScatter, upValues, upVectors);
-  int axisIndex = 0;
-  for (int k = 1; k < 3; ++k)
-  {
-    if (std::abs(glm::dot(vectors[k], upVectors[0])) >
-      std::abs(glm::dot(vectors[axisIndex], upVectors[0])))
-    {
-      axisIndex = k;
-    }
-  }
-  glm::dvec3 axis = glm::normalize(vectors[axisIndex]);
+  // The axis is the principal direction of the centres whose spread stands
+  // apart from the other two: the smallest one for a ring (the normal of the
+  // plane fitted by SVD), the largest one for a stack of rings taller than
+  // wide (whose two other directions span the round cross-section).
+  double values[3];
+  glm::dvec3 vectors[3];
+  SymmetricEigen(scatter, values, vectors); // decreasing
+  const double floor = 1e-300;
+  const double smallGap = std::log(std::max(values[1], floor) / std::max(values[2], floor));
+  const double largeGap = std::log(std::max(values[0], floor) / std::max(values[1], floor));
+  glm::dvec3 axis = glm::normalize(smallGap >= largeGap ? vectors[2] : vectors[0]);
+  // Orientation: like most views' image "up" when they agree on one (views
+  // rolled by 180 degrees vote against), otherwise towards +Y, VTK's usual
+  // view up.
   double upVote = 0.0;
   for (int i = 0; i < n; ++i)
   {
     upVote += glm::dot(in.Cameras[i].Up(), axis);
   }
-  if (upVote < 0.0)
+  const bool upDecides = std::abs(upVote) > 0.1 * n;
+  if ((upDecides && upVote < 0.0) || (!upDecides && axis.y < 0.0))
   {
     axis = -axis;
   }

@@ -8,9 +8,11 @@
  * arrays of 9 doubles.
  *
  * FitCylinder() fits the ring (or stack of rings) the camera centres lie on:
- * the axis is the principal direction of the centres that best agrees with
- * the cameras' image "up" (for a single ring it is the normal of the plane
- * fitted by SVD), the centre and radius come from a least-squares circle fit
+ * the axis is the principal direction of the centres whose spread stands apart
+ * from the other two (for a ring, the normal of the plane fitted by SVD; for a
+ * stack of rings taller than wide, the long direction), oriented like most
+ * views' image "up" (or towards +Y when they do not agree, as on rigs whose
+ * cameras are rolled by 90 degrees), the centre and radius come from a least-squares circle fit
  * in the plane orthogonal to the axis. Each view then gets an azimuth about
  * the axis, a height along it and a row (views whose heights differ by less
  * than RowTolerance x radius share a row). Views whose centres are closer than
@@ -172,8 +174,8 @@ public:
 
   ///@{
   /**
-   * Results of FitCylinder(). The axis is a unit vector oriented like the
-   * majority of the views' image "up"; the centre is on the axis at the mean
+   * Results of FitCylinder(). The axis is a unit vector (see above for its
+   * orientation); the centre is on the axis at the mean
    * height of the cameras. FitResidual is the RMS distance of the camera
    * centres from the fitted cylinder.
    */

@@ -1,0 +1,750 @@
+// lfd: the LightField Deform command-line tool.
+//
+// Every subcommand is a thin layer over the library's VTK algorithms (the
+// same classes Python scripts use through `import lfd`): it parses options,
+// wires the pipeline, reports progress and turns errors into one line and a
+// non-zero exit status.
+#include "lfdConsole.h"
+
+#include "vtkCamera.h"
+#include "vtkCameraRig.h"
+#include "vtkImageData.h"
+#include "vtkImageFileReader.h"
+#include "vtkImageFileWriter.h"
+#include "vtkImageResize.h"
+#include "vtkLabelCellsByBoxes.h"
+#include "vtkLeaveOneOutEvaluator.h"
+#include "vtkLightField.h"
+#include "vtkLightFieldCapture.h"
+#include "vtkLightFieldReader.h"
+#include "vtkLightFieldRenderer.h"
+#include "vtkLightFieldScene.h"
+#include "vtkLightFieldWriter.h"
+#include "vtkMath.h"
+#include "vtkMiddleburyImporter.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkProceduralObjectSource.h"
+#include "vtkSMPTools.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkTable.h"
+#include "vtkTimerLog.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+/// Thrown by a subcommand to stop with exit status 1; an empty message
+/// means the error was already reported by VTK.
+struct Failure
+{
+  std::string Message;
+};
+
+[[noreturn]] void Fail(const std::string& message)
+{
+  throw Failure{ message };
+}
+
+/// Updates an algorithm and fails with its own error text when it reports one.
+template<typename Algorithm>
+void Run(Algorithm* algorithm, const std::string& what)
+{
+  const bool before = lfd::ErrorReported();
+  algorithm->Update();
+  if (lfd::ErrorReported() != before)
+  {
+    Fail("");
+  }
+  if (algorithm->GetErrorCode() != 0)
+  {
+    Fail(what + " failed");
+  }
+}
+
+double Seconds(double start)
+{
+  return vtkTimerLog::GetUniversalTime() - start;
+}
+
+//------------------------------------------------------------------------------
+// lfd synth
+
+struct SynthOptions
+{
+  std::string Object = "fish";
+  std::string Mesh;
+  std::string Texture;
+  std::string Scene;
+  std::string Out;
+  int Views = 120;
+  int Rows = 3;
+  int Width = 256;
+  int Height = 256;
+  double Radius = 0.0;
+  double ViewAngle = 0.0;
+  std::vector<double> Axis = { 0.0, 1.0, 0.0 };
+  bool SceneFixedLight = false;
+  bool NoDepth = false;
+};
+
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
+{
+  if (!vtksys::SystemTools::FileExists(path, true))
+  {
+    Fail("mesh '" + path + "' does not exist");
+  }
+  const std::string ext =
+    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".ply")
+  {
+    auto ply = vtkSmartPointer<vtkPLYReader>::New();
+    ply->SetFileName(path.c_str());
+    reader = ply;
+  }
+  else if (ext == ".obj")
+  {
+    auto obj = vtkSmartPointer<vtkOBJReader>::New();
+    obj->SetFileName(path.c_str());
+    reader = obj;
+  }
+  else if (ext == ".stl")
+  {
+    auto stl = vtkSmartPointer<vtkSTLReader>::New();
+    stl->SetFileName(path.c_str());
+    reader = stl;
+  }
+  else if (ext == ".vtp")
+  {
+    auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    vtp->SetFileName(path.c_str());
+    reader = vtp;
+  }
+  else if (ext == ".vtk")
+  {
+    auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
+    legacy->SetFileName(path.c_str());
+    reader = legacy;
+  }
+  else
+  {
+    Fail("mesh '" + path + "': unknown format '" + ext +
+      "' (expected .ply, .obj, .stl, .vtp or .vtk)");
+  }
+  Run(reader.Get(), "reading mesh '" + path + "'");
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(reader->GetOutputDataObject(0));
+  if (mesh->GetNumberOfCells() == 0)
+  {
+    Fail("mesh '" + path + "' has no cells");
+  }
+  return mesh;
+}
+
+/// True when any cage point differs from its "RestPosition".
+bool CageIsDeformed(vtkUnstructuredGrid* cage)
+{
+  vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
+  for (vtkIdType i = 0; rest && i < cage->GetNumberOfPoints(); ++i)
+  {
+    double p[3], r[3];
+    cage->GetPoint(i, p);
+    rest->GetTuple(i, r);
+    if (p[0] != r[0] || p[1] != r[1] || p[2] != r[2])
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+vtkSmartPointer<vtkLightFieldScene> ReadScene(const std::string& path)
+{
+  auto scene = vtkSmartPointer<vtkLightFieldScene>::New();
+  if (!scene->Read(path.c_str()))
+  {
+    Fail(scene->GetErrorMessage());
+  }
+  return scene;
+}
+
+vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
+{
+  vtkNew<vtkLightFieldReader> reader;
+  reader->SetFileName(path.c_str());
+  lfd::ShowProgress(reader, "reading");
+  reader->Update();
+  if (reader->GetErrorCode() != 0)
+  {
+    Fail(reader->GetErrorMessage());
+  }
+  auto lightField = vtkSmartPointer<vtkLightField>::New();
+  lightField->ShallowCopy(reader->GetOutput());
+  return lightField;
+}
+
+void WriteLightField(vtkLightField* lightField, const std::string& directory)
+{
+  vtkNew<vtkLightFieldWriter> writer;
+  writer->SetInputData(lightField);
+  writer->SetDirectory(directory.c_str());
+  lfd::ShowProgress(writer, "writing");
+  if (!writer->Write())
+  {
+    Fail(writer->GetErrorMessage());
+  }
+}
+
+void WriteImage(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkImageFileWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  if (!writer->Write())
+  {
+    Fail(writer->GetErrorMessage());
+  }
+}
+
+/// Captures a light field of a mesh (or a built-in object) with the options.
+vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options)
+{
+  vtkNew<vtkLightFieldCapture> capture;
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (!options.Mesh.empty())
+  {
+    mesh = ReadMesh(options.Mesh);
+    if (!options.Texture.empty())
+    {
+      vtkNew<vtkImageFileReader> texture;
+      texture->SetFileName(options.Texture.c_str());
+      texture->Update();
+      if (texture->GetErrorCode() != 0)
+      {
+        Fail(texture->GetErrorMessage());
+      }
+      capture->SetTextureData(texture->GetOutput());
+    }
+  }
+  else
+  {
+    vtkNew<vtkProceduralObjectSource> source;
+    if (options.Object == "fish")
+    {
+      source->SetObjectToFish();
+    }
+    else if (options.Object == "figure")
+    {
+      source->SetObjectToFigure();
+    }
+    else
+    {
+      source->SetObjectToCheckerboard();
+    }
+    source->Update();
+    mesh = source->GetOutput();
+    capture->SetTextureData(source->GetTextureOutput());
+  }
+  if (!options.Scene.empty())
+  {
+    auto scene = ReadScene(options.Scene);
+    if (!scene->HasCage())
+    {
+      Fail("scene '" + options.Scene + "' has no cage: its rest boxes are what label the mesh");
+    }
+    vtkNew<vtkLabelCellsByBoxes> labeler;
+    labeler->SetInputData(mesh);
+    labeler->SetBoxesData(scene->GetCage());
+    Run(labeler.Get(), "labelling the mesh by the scene's boxes");
+    mesh = labeler->GetOutput();
+  }
+  capture->SetInputData(mesh);
+  capture->SetViewsPerRing(options.Views);
+  capture->SetNumberOfRows(options.Rows);
+  capture->SetWidth(options.Width);
+  capture->SetHeight(options.Height);
+  capture->SetRadius(options.Radius);
+  if (options.ViewAngle > 0.0)
+  {
+    capture->SetViewAngle(options.ViewAngle);
+  }
+  capture->SetAxis(options.Axis[0], options.Axis[1], options.Axis[2]);
+  capture->SetSceneFixedLight(options.SceneFixedLight);
+  capture->SetCaptureDepth(!options.NoDepth);
+  lfd::ShowProgress(capture, "capturing");
+  Run(capture.Get(), "synthetic capture");
+  auto lightField = vtkSmartPointer<vtkLightField>::New();
+  lightField->ShallowCopy(capture->GetOutput());
+  return lightField;
+}
+
+void AddSynthOptions(CLI::App* command, SynthOptions& options)
+{
+  command->add_option("--object", options.Object, "built-in object")
+    ->check(CLI::IsMember({ "fish", "figure", "checkerboard" }))
+    ->capture_default_str();
+  command->add_option("--views", options.Views, "views per ring")->capture_default_str();
+  command->add_option("--rows", options.Rows, "rings (rows) of views")->capture_default_str();
+  command->add_option("--width", options.Width, "image width in pixels")->capture_default_str();
+  command->add_option("--height", options.Height, "image height in pixels")->capture_default_str();
+  command->add_option("--radius", options.Radius, "ring radius (0: frame the mesh)")
+    ->capture_default_str();
+  command->add_option(
+    "--view-angle", options.ViewAngle, "vertical field of view in degrees (0: frame the mesh)");
+  command->add_option("--axis", options.Axis, "rig axis x y z")->expected(3)->capture_default_str();
+  command->add_flag("--scene-fixed-light",
+    options.SceneFixedLight,
+    "light fixed in the scene instead of travelling with the camera (paper Fig. 5)");
+  command->add_flag("--no-depth", options.NoDepth, "skip the Depth pass");
+}
+
+//------------------------------------------------------------------------------
+// Novel views around a light field's rig
+
+/// A camera on a circle `scale` x the rig radius around the rig axis, at
+/// azimuth `phi` (radians from view 0) and `height` along the axis.
+void OrbitCamera(vtkCameraRig* rig,
+  double phi,
+  double scale,
+  double height,
+  double viewAngle,
+  vtkCamera* camera)
+{
+  const double* axis = rig->GetAxis();
+  const double* center = rig->GetCenter();
+  double first[3];
+  rig->GetCameraCenter(0, first);
+  double x[3] = { first[0] - center[0], first[1] - center[1], first[2] - center[2] };
+  const double along = vtkMath::Dot(x, axis);
+  for (int c = 0; c < 3; ++c)
+  {
+    x[c] -= along * axis[c];
+  }
+  vtkMath::Normalize(x);
+  double y[3];
+  vtkMath::Cross(axis, x, y);
+  const double r = scale * rig->GetRadius();
+  double position[3], focal[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    focal[c] = center[c] + height * axis[c];
+    position[c] = focal[c] + r * (std::cos(phi) * x[c] + std::sin(phi) * y[c]);
+  }
+  camera->SetPosition(position);
+  camera->SetFocalPoint(focal);
+  camera->SetViewUp(axis[0], axis[1], axis[2]);
+  camera->SetViewAngle(viewAngle);
+}
+
+/// Vertical view angle of view 0 of a rig, in degrees.
+double RigViewAngle(vtkCameraRig* rig)
+{
+  double K[9];
+  rig->GetIntrinsics(0, K);
+  return vtkMath::DegreesFromRadians(2.0 * std::atan(0.5 * rig->GetImageSize()[1] / K[4]));
+}
+
+/// A grid of thumbnails of the frames.
+vtkSmartPointer<vtkImageData> ContactSheet(const std::vector<vtkSmartPointer<vtkImageData>>& frames,
+  int columns,
+  int thumb)
+{
+  const int rows = (static_cast<int>(frames.size()) + columns - 1) / columns;
+  auto sheet = vtkSmartPointer<vtkImageData>::New();
+  sheet->SetDimensions(columns * thumb, rows * thumb, 1);
+  sheet->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(sheet->GetScalarPointer());
+  std::fill(out, out + 3 * columns * thumb * rows * thumb, 0);
+  for (std::size_t f = 0; f < frames.size(); ++f)
+  {
+    vtkNew<vtkImageResize> resize;
+    resize->SetInputData(frames[f]);
+    resize->SetOutputDimensions(thumb, thumb, 1);
+    resize->Update();
+    const auto* in = static_cast<unsigned char*>(resize->GetOutput()->GetScalarPointer());
+    const int col = static_cast<int>(f) % columns;
+    const int row = rows - 1 - static_cast<int>(f) / columns; // first frame top-left
+    for (int j = 0; j < thumb; ++j)
+    {
+      std::copy(in + 3 * j * thumb,
+        in + 3 * (j + 1) * thumb,
+        out + 3 * ((row * thumb + j) * columns * thumb + col * thumb));
+    }
+  }
+  return sheet;
+}
+
+//------------------------------------------------------------------------------
+// Subcommands
+
+int Synth(const SynthOptions& options)
+{
+  const double start = vtkTimerLog::GetUniversalTime();
+  auto lightField = Synthesize(options);
+  WriteLightField(lightField, options.Out);
+  std::cout << "wrote " << lightField->GetNumberOfViews() << " views of " << lightField->GetWidth()
+            << "x" << lightField->GetHeight() << " to " << options.Out << " in " << Seconds(start)
+            << " s\n";
+  return 0;
+}
+
+int ImportMiddlebury(const std::string& par, const std::string& out)
+{
+  vtkNew<vtkMiddleburyImporter> importer;
+  importer->SetFileName(par.c_str());
+  lfd::ShowProgress(importer, "importing");
+  importer->Update();
+  if (importer->GetErrorCode() != 0)
+  {
+    Fail(importer->GetErrorMessage());
+  }
+  WriteLightField(importer->GetOutput(), out);
+  vtkCameraRig* rig = importer->GetOutput()->GetRig();
+  std::cout << "imported " << rig->GetNumberOfViews() << " views (" << rig->GetNumberOfDuplicates()
+            << " near-duplicates) into " << out << "\n";
+  return 0;
+}
+
+int Info(const std::string& path)
+{
+  auto lightField = ReadLightField(path);
+  vtkCameraRig* rig = lightField->GetRig();
+  std::cout << "light field  " << path << "\n";
+  std::cout << "views        " << lightField->GetNumberOfViews() << " of " << lightField->GetWidth()
+            << " x " << lightField->GetHeight() << " pixels\n";
+  std::cout << "passes      ";
+  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+  {
+    if (lightField->GetPass(pass))
+    {
+      std::cout << " " << vtkLightField::GetPassName(pass);
+    }
+  }
+  std::cout << "\n";
+  if (!rig->FitCylinder())
+  {
+    Fail("no cylinder can be fitted to the cameras of '" + path + "'");
+  }
+  const double* axis = rig->GetAxis();
+  const double* center = rig->GetCenter();
+  std::printf("rig axis     (%.4f, %.4f, %.4f)\n", axis[0], axis[1], axis[2]);
+  std::printf("rig centre   (%.4f, %.4f, %.4f)\n", center[0], center[1], center[2]);
+  std::printf("rig radius   %.4f (RMS residual %.4f)\n", rig->GetRadius(), rig->GetFitResidual());
+  std::printf("rows         %d\n", rig->GetNumberOfRows());
+  std::printf("duplicates   %d\n", rig->GetNumberOfDuplicates());
+  for (int row = 0; row < rig->GetNumberOfRows(); ++row)
+  {
+    std::vector<double> azimuths;
+    for (int v = 0; v < rig->GetNumberOfViews(); ++v)
+    {
+      if (rig->GetRow(v) == row && rig->GetDuplicateOf(v) < 0)
+      {
+        azimuths.push_back(vtkMath::DegreesFromRadians(rig->GetAzimuth(v)));
+      }
+    }
+    std::sort(azimuths.begin(), azimuths.end());
+    double gap = 360.0 - azimuths.back() + azimuths.front();
+    for (std::size_t i = 1; i < azimuths.size(); ++i)
+    {
+      gap = std::max(gap, azimuths[i] - azimuths[i - 1]);
+    }
+    std::printf("row %-8d height %.4f, %zu views, largest azimuth gap %.1f degrees\n",
+      row,
+      rig->GetRowHeight(row),
+      azimuths.size(),
+      gap);
+  }
+  return 0;
+}
+
+int Render(const std::string& scenePath, const std::string& out)
+{
+  const double start = vtkTimerLog::GetUniversalTime();
+  auto scene = ReadScene(scenePath);
+  if (scene->HasCage() && CageIsDeformed(scene->GetCage()))
+  {
+    Fail("scene '" + scenePath +
+      "' deforms its cage; rendering deformed light fields is not available in this version");
+  }
+  auto lightField = ReadLightField(scene->GetResolvedLightFieldPath());
+  vtkNew<vtkLightFieldRenderer> renderer;
+  renderer->SetInputData(lightField);
+  renderer->SetCamera(scene->GetCamera());
+  renderer->SetWidth(scene->GetWidth());
+  renderer->SetHeight(scene->GetHeight());
+  renderer->SetFocalDistance(scene->GetFocalDistance());
+  renderer->SetBackground(scene->GetBackground());
+  Run(renderer.Get(), "rendering");
+  WriteImage(renderer->GetOutput(), out);
+  std::cout << "wrote " << out << " (" << scene->GetWidth() << "x" << scene->GetHeight() << ") in "
+            << Seconds(start) << " s\n";
+  return 0;
+}
+
+int EvalLeaveOneOut(const std::string& path,
+  int stride,
+  const std::vector<int>& views,
+  double focalDistance,
+  int threshold)
+{
+  auto lightField = ReadLightField(path);
+  vtkNew<vtkLeaveOneOutEvaluator> evaluator;
+  evaluator->SetInputData(lightField);
+  evaluator->SetStride(stride);
+  for (int v : views)
+  {
+    evaluator->AddView(v);
+  }
+  evaluator->SetFocalDistance(focalDistance);
+  evaluator->SetObjectThreshold(threshold);
+  lfd::ShowProgress(evaluator, "evaluating");
+  Run(evaluator.Get(), "leave-one-out evaluation");
+  vtkTable* table = evaluator->GetOutput();
+  std::printf("%6s %10s %12s %12s\n", "view", "PSNR", "object PSNR", "object px");
+  for (vtkIdType row = 0; row < table->GetNumberOfRows(); ++row)
+  {
+    std::printf("%6d %10.2f %12.2f %12d\n",
+      table->GetValue(row, 0).ToInt(),
+      table->GetValue(row, 1).ToDouble(),
+      table->GetValue(row, 2).ToDouble(),
+      table->GetValue(row, 3).ToInt());
+  }
+  std::printf("mean   %10.2f %12.2f   (%lld views, dB)\n",
+    evaluator->GetMeanPSNR(),
+    evaluator->GetMeanObjectPSNR(),
+    static_cast<long long>(table->GetNumberOfRows()));
+  return 0;
+}
+
+int Bench(int repeat, int size)
+{
+  std::printf("threads: %d (vtkSMPTools, %s backend)\n",
+    vtkSMPTools::GetEstimatedNumberOfThreads(),
+    vtkSMPTools::GetBackend());
+  std::printf("%-34s %10s %12s %14s\n", "scene", "pixels", "ms/frame", "rays/s");
+  for (const char* object : { "fish", "figure" })
+  {
+    SynthOptions options;
+    options.Object = object;
+    options.NoDepth = true;
+    auto lightField = Synthesize(options);
+    vtkCameraRig* rig = lightField->GetRig();
+    vtkNew<vtkCamera> camera;
+    OrbitCamera(rig, 0.37, 1.2, 0.0, RigViewAngle(rig), camera);
+    vtkNew<vtkLightFieldRenderer> renderer;
+    renderer->SetInputData(lightField);
+    renderer->SetCamera(camera);
+    renderer->SetWidth(size);
+    renderer->SetHeight(size);
+    Run(renderer.Get(), "rendering"); // warm-up (rig layout, threads)
+    std::vector<double> times;
+    for (int i = 0; i < repeat; ++i)
+    {
+      renderer->Modified();
+      const double start = vtkTimerLog::GetUniversalTime();
+      renderer->Update();
+      times.push_back(Seconds(start));
+    }
+    std::sort(times.begin(), times.end());
+    const double median = times[times.size() / 2];
+    const std::string name = std::string("undeformed ") + object + " (120x3 views of 256^2)";
+    std::printf("%-34s %10d %12.2f %14.3g\n",
+      name.c_str(),
+      size * size,
+      1000.0 * median,
+      size * size / median);
+  }
+  std::printf("(median of %d renders each)\n", repeat);
+  return 0;
+}
+
+int Demo(const std::string& out, int frames, int size)
+{
+  vtksys::SystemTools::MakeDirectory(out);
+  double start = vtkTimerLog::GetUniversalTime();
+  SynthOptions options;
+  auto lightField = Synthesize(options);
+  const double captureTime = Seconds(start);
+  start = vtkTimerLog::GetUniversalTime();
+  const std::string dataset = out + "/fish.lf";
+  WriteLightField(lightField, dataset);
+  const double writeTime = Seconds(start);
+
+  vtkCameraRig* rig = lightField->GetRig();
+  const std::string frameDir = out + "/frames";
+  vtksys::SystemTools::MakeDirectory(frameDir);
+  vtkNew<vtkLightFieldRenderer> renderer;
+  renderer->SetInputData(lightField);
+  renderer->SetWidth(size);
+  renderer->SetHeight(size);
+  vtkNew<vtkCamera> camera;
+  renderer->SetCamera(camera);
+  std::vector<vtkSmartPointer<vtkImageData>> images;
+  start = vtkTimerLog::GetUniversalTime();
+  const double step = 2.0 * vtkMath::Pi() / rig->GetNumberOfViews() * rig->GetNumberOfRows();
+  for (int f = 0; f < frames; ++f)
+  {
+    // Half-way between captured azimuths, a little above the middle row and
+    // further out than the ring: none of these views was captured.
+    const double phi = 2.0 * vtkMath::Pi() * f / frames + 0.5 * step;
+    OrbitCamera(rig, phi, 1.15, 0.1 * rig->GetRadius(), RigViewAngle(rig), camera);
+    Run(renderer.Get(), "rendering frame " + std::to_string(f));
+    auto frame = vtkSmartPointer<vtkImageData>::New();
+    frame->DeepCopy(renderer->GetOutput());
+    char name[64];
+    std::snprintf(name, sizeof(name), "/frame_%04d.png", f);
+    WriteImage(frame, frameDir + name);
+    images.push_back(frame);
+  }
+  const double renderTime = Seconds(start);
+  const std::string sheet = out + "/contact_sheet.png";
+  WriteImage(ContactSheet(images, 6, 128), sheet);
+
+  std::printf("capture   %3d views of %dx%d        %7.2f s\n",
+    lightField->GetNumberOfViews(),
+    lightField->GetWidth(),
+    lightField->GetHeight(),
+    captureTime);
+  std::printf("write     %-26s %7.2f s\n", dataset.c_str(), writeTime);
+  std::printf("render    %3d novel views of %dx%d   %7.2f s (%.1f ms/frame)\n",
+    frames,
+    size,
+    size,
+    renderTime,
+    1000.0 * renderTime / frames);
+  std::printf("frames    %s/frame_*.png\n", frameDir.c_str());
+  std::printf("sheet     %s\n", sheet.c_str());
+  return 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  lfd::InstallConsoleOutput();
+  CLI::App app{ "LightField Deform: capture, render and deform light fields.\n"
+                "Run 'lfd <command> --help' for the options of a command." };
+  app.require_subcommand(1);
+
+  SynthOptions synth;
+  auto* synthCommand = app.add_subcommand("synth",
+    "capture a synthetic light field of a mesh or a built-in object (needs an X server: "
+    "run under xvfb-run -a)");
+  synthCommand->add_option("--mesh", synth.Mesh, "mesh file (.ply .obj .stl .vtp .vtk)");
+  synthCommand->add_option("--texture",
+    synth.Texture,
+    "texture image for a mesh with texture "
+    "coordinates");
+  synthCommand->add_option("--scene",
+    synth.Scene,
+    "scene.json whose rest boxes label the mesh (a triangle takes the box holding its centroid)");
+  synthCommand->add_option("--out", synth.Out, "output light-field directory")->required();
+  AddSynthOptions(synthCommand, synth);
+
+  auto* importCommand = app.add_subcommand("import", "import a calibrated image set");
+  importCommand->require_subcommand(1);
+  std::string par, importOut;
+  auto* middlebury = importCommand->add_subcommand(
+    "middlebury", "Middlebury multi-view stereo set (*_par.txt: name k11..k33 r11..r33 t1 t2 t3)");
+  middlebury->add_option("PAR_FILE", par, "the *_par.txt file")->required();
+  middlebury->add_option("--out", importOut, "output light-field directory")->required();
+
+  std::string infoPath;
+  auto* infoCommand = app.add_subcommand("info", "describe a light field and fit its rig");
+  infoCommand->add_option("DIR", infoPath, "light-field directory")->required();
+
+  std::string scenePath, renderOut;
+  auto* renderCommand = app.add_subcommand("render", "render a scene's camera view");
+  renderCommand->add_option("SCENE", scenePath, "scene.json")->required();
+  renderCommand->add_option("--out", renderOut, "output image (.png, .exr, ...)")->required();
+
+  auto* evalCommand = app.add_subcommand("eval", "measure rendering quality");
+  evalCommand->require_subcommand(1);
+  std::string looPath;
+  int looStride = 1;
+  std::vector<int> looViews;
+  double looFocal = 0.0;
+  int looThreshold = 20;
+  auto* loo = evalCommand->add_subcommand("loo",
+    "leave-one-out: render each chosen view from all the others, print PSNR per view and mean");
+  loo->add_option("DIR", looPath, "light-field directory")->required();
+  loo->add_option("--stride", looStride, "evaluate every N-th view")->capture_default_str();
+  loo->add_option("--views", looViews, "evaluate these views (overrides --stride)")->delimiter(',');
+  loo->add_option("--focal-distance", looFocal, "focal distance d")->capture_default_str();
+  loo
+    ->add_option(
+      "--threshold", looThreshold, "object pixel threshold (0-255) for light fields without labels")
+    ->capture_default_str();
+
+  int benchRepeat = 15, benchSize = 512;
+  auto* benchCommand = app.add_subcommand("bench",
+    "print rays/s and ms/frame of the renderer on fixed scenes (median of repeated renders)");
+  benchCommand->add_option("--repeat", benchRepeat, "renders per scene")->capture_default_str();
+  benchCommand->add_option("--size", benchSize, "image width and height")->capture_default_str();
+
+  std::string demoOut = "lfd-demo";
+  int demoFrames = 36, demoSize = 512;
+  auto* demoCommand = app.add_subcommand(
+    "demo", "synthesise the fish and render a turntable of novel views (frames + contact sheet)");
+  demoCommand->add_option("--out", demoOut, "output folder")->capture_default_str();
+  demoCommand->add_option("--frames", demoFrames, "number of frames")->capture_default_str();
+  demoCommand->add_option("--size", demoSize, "frame width and height")->capture_default_str();
+
+  CLI11_PARSE(app, argc, argv);
+  try
+  {
+    if (*synthCommand)
+    {
+      return Synth(synth);
+    }
+    if (*middlebury)
+    {
+      return ImportMiddlebury(par, importOut);
+    }
+    if (*infoCommand)
+    {
+      return Info(infoPath);
+    }
+    if (*renderCommand)
+    {
+      return Render(scenePath, renderOut);
+    }
+    if (*loo)
+    {
+      return EvalLeaveOneOut(looPath, looStride, looViews, looFocal, looThreshold);
+    }
+    if (*benchCommand)
+    {
+      return Bench(benchRepeat, benchSize);
+    }
+    if (*demoCommand)
+    {
+      return Demo(demoOut, demoFrames, demoSize);
+    }
+  }
+  catch (const Failure& failure)
+  {
+    if (!failure.Message.empty())
+    {
+      lfd::ReportError(failure.Message);
+    }
+    return 1;
+  }
+  return 1;
+}

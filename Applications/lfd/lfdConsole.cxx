@@ -1,0 +1,129 @@
+#include "lfdConsole.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
+
+#include <cstdio>
+#include <iostream>
+#include <set>
+#include <unistd.h>
+
+namespace
+{
+bool errorReported = false;
+std::set<std::string> reported;
+
+/// VTK formats errors as "ERROR: In <file>, line <n>\n<class> (<address>): <message>\n\n":
+/// keep the message only.
+std::string StripLocation(const char* text)
+{
+  std::string message(text ? text : "");
+  const std::size_t address = message.find("): ");
+  if (message.rfind("ERROR: In ", 0) == 0 || message.rfind("Warning: In ", 0) == 0)
+  {
+    if (address != std::string::npos)
+    {
+      message = message.substr(address + 3);
+    }
+  }
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+  {
+    message.pop_back();
+  }
+  return message;
+}
+
+class ConsoleOutputWindow : public vtkOutputWindow
+{
+public:
+  static ConsoleOutputWindow* New();
+  vtkTypeMacro(ConsoleOutputWindow, vtkOutputWindow);
+
+  void DisplayErrorText(const char* text) override { lfd::ReportError(StripLocation(text)); }
+  void DisplayWarningText(const char* text) override
+  {
+    std::cerr << "lfd: warning: " << StripLocation(text) << std::endl;
+  }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
+  void DisplayText(const char* text) override { std::cout << text; }
+  void DisplayDebugText(const char*) override {}
+};
+vtkStandardNewMacro(ConsoleOutputWindow);
+
+struct ProgressState
+{
+  std::string What;
+  int LastStep = -1;
+  bool Terminal = false;
+};
+
+void OnProgress(vtkObject*, unsigned long event, void* clientData, void* callData)
+{
+  auto* state = static_cast<ProgressState*>(clientData);
+  if (event == vtkCommand::DeleteEvent)
+  {
+    delete state;
+    return;
+  }
+  const double progress = *static_cast<double*>(callData);
+  const int percent = static_cast<int>(100.0 * progress + 0.5);
+  if (state->Terminal)
+  {
+    const int width = 30;
+    const int filled = static_cast<int>(width * progress + 0.5);
+    std::fprintf(stderr,
+      "\r%-12s [%s%s] %3d%%",
+      state->What.c_str(),
+      std::string(filled, '#').c_str(),
+      std::string(width - filled, '.').c_str(),
+      percent);
+    if (percent >= 100)
+    {
+      std::fputc('\n', stderr);
+    }
+    std::fflush(stderr);
+  }
+  else if (percent / 10 != state->LastStep)
+  {
+    state->LastStep = percent / 10;
+    std::fprintf(stderr, "%s: %d%%\n", state->What.c_str(), percent);
+  }
+}
+}
+
+namespace lfd
+{
+void InstallConsoleOutput()
+{
+  vtkNew<ConsoleOutputWindow> window;
+  vtkOutputWindow::SetInstance(window);
+}
+
+bool ErrorReported()
+{
+  return errorReported;
+}
+
+void ReportError(const std::string& message)
+{
+  errorReported = true;
+  if (reported.insert(message).second) // an error a class logged and returned is said once
+  {
+    std::cerr << "lfd: error: " << message << std::endl;
+  }
+}
+
+void ShowProgress(vtkAlgorithm* algorithm, const std::string& what)
+{
+  auto* state = new ProgressState{ what, -1, isatty(fileno(stderr)) != 0 };
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback(OnProgress);
+  callback->SetClientData(state);
+  algorithm->AddObserver(vtkCommand::ProgressEvent, callback);
+  algorithm->AddObserver(vtkCommand::DeleteEvent, callback);
+}
+}
