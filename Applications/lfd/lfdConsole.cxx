@@ -3,6 +3,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
@@ -43,7 +44,23 @@ public:
   static ConsoleOutputWindow* New();
   vtkTypeMacro(ConsoleOutputWindow, vtkOutputWindow);
 
-  void DisplayErrorText(const char* text) override { lfd::ReportError(StripLocation(text)); }
+  void DisplayErrorText(const char* text) override
+  {
+    const std::string message = StripLocation(text);
+    // The executive follows an algorithm's own error with "Algorithm
+    // vtkX(0x...) returned failure for request: <information dump>": say
+    // only that it failed, and only when the algorithm itself said nothing.
+    if (message.rfind("Algorithm ", 0) == 0 &&
+      message.find(" returned failure for request") != std::string::npos)
+    {
+      if (!lfd::ErrorReported())
+      {
+        lfd::ReportError(message.substr(10, message.find('(') - 10) + " failed");
+      }
+      return;
+    }
+    lfd::ReportError(message);
+  }
   void DisplayWarningText(const char* text) override
   {
     std::cerr << "lfd: warning: " << StripLocation(text) << std::endl;
@@ -101,6 +118,10 @@ void InstallConsoleOutput()
 {
   vtkNew<ConsoleOutputWindow> window;
   vtkOutputWindow::SetInstance(window);
+  // vtkLogger would print every error a second time, with a timestamp.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  // vtkLogger would print every error a second time, with a timestamp.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 }
 
 bool ErrorReported()

@@ -1,0 +1,111 @@
+"""The `lfd` command line: help on every subcommand, a small synth -> info ->
+render -> eval run, the demo's outputs, and bad input: one readable error
+line naming the file and field, exit status 1, and no output left behind."""
+
+import json
+import os
+import shutil
+import subprocess
+
+import lfdtesting as t
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+WORK = t.temp_path("cli", "x")[:-2]
+shutil.rmtree(WORK, ignore_errors=True)
+os.makedirs(WORK)
+
+
+def lfd(*args):
+    result = subprocess.run([t.LFD, *args], capture_output=True, text=True, timeout=600)
+    return result.returncode, result.stdout, result.stderr
+
+
+def expect_error(args, *words):
+    """Exit status 1 and exactly one 'lfd: error:' line containing every word."""
+    code, _, err = lfd(*args)
+    lines = [line for line in err.splitlines() if line.startswith("lfd: error:")]
+    ok = code == 1 and len(lines) == 1 and all(w in lines[0] for w in words)
+    t.check(ok, "lfd " + " ".join(args[:2]) + " -> " + " / ".join(words),
+            f"exit {code}: {err.strip()}")
+
+
+# Help.
+code, out, _ = lfd("--help")
+t.check(code == 0 and all(c in out for c in ("synth", "import", "info", "render", "eval", "bench",
+                                           "demo")), "lfd --help lists the subcommands", code)
+for sub in (["synth"], ["import", "middlebury"], ["info"], ["render"], ["eval", "loo"], ["bench"],
+            ["demo"]):
+    code, out, _ = lfd(*sub, "--help")
+    t.check(code == 0 and "Options" in out, "lfd " + " ".join(sub) + " --help", code)
+
+# synth -> info -> render -> eval.
+lf = os.path.join(WORK, "board.lf")
+code, out, err = lfd("synth", "--object", "checkerboard", "--views", "24", "--rows", "1",
+                     "--width", "64", "--height", "64", "--out", lf)
+t.check(code == 0 and os.path.isfile(os.path.join(lf, "lightfield.json")), "synth writes a dataset",
+        err.strip() or out.strip())
+code, out, _ = lfd("info", lf)
+t.check(code == 0 and "24 of 64 x 64" in out and "rows         1" in out, "info", out)
+
+scene = os.path.join(WORK, "scene.json")
+with open(scene, "w") as f:
+    json.dump({"format": "lfd-scene", "version": 1, "lightfield": "board.lf",
+               "camera": {"position": [0.4, 0.2, 4.0], "focal_point": [0, 0, 0],
+                          "view_up": [0, 1, 0], "view_angle": 30.0, "width": 80, "height": 60},
+               "render": {"focal_distance": 0.0, "subdivision": 1, "background": [0, 0, 0]}}, f)
+image = os.path.join(WORK, "view.png")
+code, out, err = lfd("render", scene, "--out", image)
+size = None
+if code == 0:
+    reader = vtkPNGReader()
+    reader.SetFileName(image)
+    reader.Update()
+    size = reader.GetOutput().GetDimensions()
+t.check(size == (80, 60, 1), "render writes an 80x60 PNG", size or err.strip())
+
+code, out, err = lfd("eval", "loo", lf, "--stride", "6")
+t.check(code == 0 and out.count("\n") == 6 and "mean" in out, "eval loo over 4 views", out)
+
+# Demo outputs.
+demo = os.path.join(WORK, "demo")
+code, out, err = lfd("demo", "--out", demo, "--frames", "4", "--size", "96")
+frames = sorted(os.listdir(os.path.join(demo, "frames"))) if code == 0 else []
+t.check(code == 0 and frames == [f"frame_000{i}.png" for i in range(4)], "demo writes 4 frames",
+        frames or err.strip())
+t.check(os.path.isfile(os.path.join(demo, "contact_sheet.png")), "demo writes a contact sheet",
+        code)
+
+# Bad input.
+bad = os.path.join(WORK, "bad.lf")
+shutil.copytree(lf, bad)
+manifest = os.path.join(bad, "lightfield.json")
+with open(manifest) as f:
+    text = f.read()
+with open(manifest, "w") as f:
+    f.write(text[: len(text) // 2])
+expect_error(["info", bad], "lightfield.json")
+
+shutil.rmtree(bad)
+shutil.copytree(lf, bad)
+os.remove(os.path.join(bad, "coaxial", sorted(os.listdir(os.path.join(bad, "coaxial")))[3]))
+expect_error(["info", bad], "coaxial")
+
+par = os.path.join(WORK, "broken_par.txt")
+with open(par, "w") as f:
+    f.write("1\nview.png 1 0 0 0 1 0 0 0 1 1 0 0 0 1 0 0 0 1 0 0\n")
+out_dir = os.path.join(WORK, "never.lf")
+expect_error(["import", "middlebury", par, "--out", out_dir], "broken_par.txt", "2")
+t.check(not os.path.exists(out_dir), "a failed import leaves no output", os.path.exists(out_dir))
+
+broken_scene = os.path.join(WORK, "broken_scene.json")
+with open(broken_scene, "w") as f:
+    json.dump({"format": "lfd-scene", "version": 1, "lightfield": "board.lf",
+               "cage": {"rest_points": [[0, 0, 0]] * 8,
+                        "boxes": [{"corners": [0, 1, 2, 3, 4, 5, 6, 9], "label": 1}]}}, f)
+expect_error(["render", broken_scene, "--out", os.path.join(WORK, "never.png")],
+             "broken_scene.json", "corners")
+t.check(not os.path.exists(os.path.join(WORK, "never.png")), "a failed render writes no image",
+        False)
+expect_error(["synth", "--mesh", os.path.join(WORK, "missing.ply"), "--out", out_dir],
+             "missing.ply")
+t.finish()
