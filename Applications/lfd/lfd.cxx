@@ -319,7 +319,8 @@ void AddSynthOptions(CLI::App* command, SynthOptions& options)
 // Novel views around a light field's rig
 
 /// A camera on a circle `scale` x the rig radius around the rig axis, at
-/// azimuth `phi` (radians from view 0) and `height` along the axis.
+/// azimuth `phi` (radians from view 0) and `height` along the axis, looking
+/// at the rig centre.
 void OrbitCamera(vtkCameraRig* rig,
   double phi,
   double scale,
@@ -344,8 +345,8 @@ void OrbitCamera(vtkCameraRig* rig,
   double position[3], focal[3];
   for (int c = 0; c < 3; ++c)
   {
-    focal[c] = center[c] + height * axis[c];
-    position[c] = focal[c] + r * (std::cos(phi) * x[c] + std::sin(phi) * y[c]);
+    focal[c] = center[c];
+    position[c] = center[c] + height * axis[c] + r * (std::cos(phi) * x[c] + std::sin(phi) * y[c]);
   }
   camera->SetPosition(position);
   camera->SetFocalPoint(focal);
@@ -604,7 +605,7 @@ int Demo(const std::string& out, int frames, int size)
     // Half-way between captured azimuths, a little above the middle row and
     // further out than the ring: none of these views was captured.
     const double phi = 2.0 * vtkMath::Pi() * f / frames + 0.5 * step;
-    OrbitCamera(rig, phi, 1.15, 0.1 * rig->GetRadius(), RigViewAngle(rig), camera);
+    OrbitCamera(rig, phi, 1.15, 0.1 * rig->GetRadius(), 0.6 * RigViewAngle(rig), camera);
     Run(renderer.Get(), "rendering frame " + std::to_string(f));
     auto frame = vtkSmartPointer<vtkImageData>::New();
     frame->DeepCopy(renderer->GetOutput());
