@@ -8,7 +8,13 @@ import shutil
 import subprocess
 
 import lfdtesting as t
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkIOPLY import vtkPLYWriter
+
+import lfd as lfd_module
 
 WORK = t.temp_path("cli", "x")[:-2]
 shutil.rmtree(WORK, ignore_errors=True)
@@ -65,6 +71,44 @@ t.check(size == (80, 60, 1), "render writes an 80x60 PNG", size or err.strip())
 
 code, out, err = lfd("eval", "loo", lf, "--stride", "6")
 t.check(code == 0 and out.count("\n") == 6 and "mean" in out, "eval loo over 4 views", out)
+
+# A mesh of the user's, split into parts by a scene's rest boxes.
+sphere = vtkSphereSource()
+sphere.SetThetaResolution(32)
+sphere.SetPhiResolution(32)
+sphere.Update()
+mesh = sphere.GetOutput()
+colors = vtkUnsignedCharArray()
+colors.SetName("RGB")
+colors.SetNumberOfComponents(3)
+for i in range(mesh.GetNumberOfPoints()):
+    x, y, z = mesh.GetPoint(i)
+    colors.InsertNextTuple3(128 + 120 * x, 128 + 120 * y, 200)
+mesh.GetPointData().AddArray(colors)
+ply = os.path.join(WORK, "sphere.ply")
+writer = vtkPLYWriter()
+writer.SetFileName(ply)
+writer.SetInputData(mesh)
+writer.SetArrayName("RGB")
+writer.Write()
+layers = [[[x, y, z] for x, z in ((-1, -1), (1, -1), (1, 1), (-1, 1))] for y in (-1, 0, 1)]
+boxes = os.path.join(WORK, "boxes.json")
+with open(boxes, "w") as f:
+    json.dump({"format": "lfd-scene", "version": 1, "lightfield": "sphere.lf",
+               "cage": {"rest_points": [p for layer in layers for p in layer],
+                        "boxes": [{"corners": list(range(0, 8)), "label": 1},
+                                  {"corners": list(range(4, 12)), "label": 2}]}}, f)
+sphere_lf = os.path.join(WORK, "sphere.lf")
+code, out, err = lfd("synth", "--mesh", ply, "--scene", boxes, "--views", "12", "--rows", "1",
+                     "--width", "48", "--height", "48", "--out", sphere_lf)
+labels = []
+if code == 0:
+    reader = lfd_module.vtkLightFieldReader()
+    reader.SetFileName(sphere_lf)
+    reader.Update()
+    labels = sorted(set(vtk_to_numpy(reader.GetOutput().GetPass(lfd_module.vtkLightField.LABEL))))
+t.check(labels == [0, 1, 2], "synth --mesh --scene: the boxes' labels reach the Label pass",
+        labels or err.strip())
 
 # Demo outputs.
 demo = os.path.join(WORK, "demo")
