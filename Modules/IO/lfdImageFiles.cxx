@@ -1,11 +1,14 @@
 #include "lfdImageFiles.h"
 
+#include "vtkDataArray.h"
+#include "vtkErrorCode.h"
 #include "vtkType.h"
 
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cstddef>
+#include <filesystem>
 #include <memory>
 
 namespace lfd
@@ -29,30 +32,33 @@ OIIO::TypeDesc ToTypeDesc(int scalarType)
   }
 }
 
-// Alpha stays as stored (no premultiplication on read or write), so that
-// 8-bit RGBA values round-trip exactly.
-OIIO::ImageSpec UnassociatedAlpha()
-{
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  return config;
-}
-
 std::string LastOIIOError(const std::string& fallback)
 {
   std::string message = OIIO::geterror();
   return message.empty() ? fallback : message;
+}
+
+// Opens `path` for reading; alpha stays as stored (no premultiplication on
+// read or write), so that 8-bit RGBA values round-trip exactly.
+OIIO::ImageInput::unique_ptr OpenImage(const std::string& path, std::string& error)
+{
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto input = OIIO::ImageInput::open(path, &config);
+  if (!input)
+  {
+    error = LastOIIOError("cannot open the image");
+  }
+  return input;
 }
 }
 
 //------------------------------------------------------------------------------
 bool ReadImageHeader(const std::string& path, ImageHeader& header, std::string& error)
 {
-  const OIIO::ImageSpec config = UnassociatedAlpha();
-  auto input = OIIO::ImageInput::open(path, &config);
+  auto input = OpenImage(path, error);
   if (!input)
   {
-    error = LastOIIOError("cannot open the image");
     return false;
   }
   const OIIO::ImageSpec& spec = input->spec();
@@ -83,6 +89,29 @@ bool ReadImageHeader(const std::string& path, ImageHeader& header, std::string& 
 }
 
 //------------------------------------------------------------------------------
+bool ReadImageHeader(const std::string& path,
+  ImageHeader& header,
+  std::string& error,
+  unsigned long& errorCode)
+{
+  if (ReadImageHeader(path, header, error))
+  {
+    return true;
+  }
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec))
+  {
+    errorCode = vtkErrorCode::FileFormatError;
+  }
+  else
+  {
+    errorCode = vtkErrorCode::FileNotFoundError;
+    error = "file not found";
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 bool ReadImagePixels(const std::string& path,
   const ImageHeader& header,
   int channels,
@@ -91,11 +120,9 @@ bool ReadImagePixels(const std::string& path,
   std::string& error)
 {
   const OIIO::TypeDesc type = ToTypeDesc(scalarType);
-  const OIIO::ImageSpec config = UnassociatedAlpha();
-  auto input = OIIO::ImageInput::open(path, &config);
+  auto input = OpenImage(path, error);
   if (!input)
   {
-    error = LastOIIOError("cannot open the image");
     return false;
   }
   const OIIO::ImageSpec& spec = input->spec();
@@ -141,6 +168,19 @@ bool ReadImagePixels(const std::string& path,
     }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool ReadViewPixels(const std::string& path,
+  const ImageHeader& header,
+  vtkDataArray* pass,
+  int view,
+  std::string& error)
+{
+  const int channels = pass->GetNumberOfComponents();
+  const vtkIdType viewValues = static_cast<vtkIdType>(header.Width) * header.Height * channels;
+  return ReadImagePixels(
+    path, header, channels, pass->GetDataType(), pass->GetVoidPointer(viewValues * view), error);
 }
 
 //------------------------------------------------------------------------------

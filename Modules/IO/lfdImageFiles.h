@@ -12,6 +12,8 @@
 
 #include <string>
 
+class vtkDataArray;
+
 namespace lfd
 {
 namespace io
@@ -35,6 +37,17 @@ struct ImageHeader
 bool ReadImageHeader(const std::string& path, ImageHeader& header, std::string& error);
 
 /**
+ * ReadImageHeader() that tells a missing file from an unreadable one: on
+ * failure `error` is "file not found" when `path` does not exist (the
+ * reader's message otherwise) and `errorCode` is vtkErrorCode's
+ * FileNotFoundError (FileFormatError otherwise).
+ */
+bool ReadImageHeader(const std::string& path,
+  ImageHeader& header,
+  std::string& error,
+  unsigned long& errorCode);
+
+/**
  * Reads the first subimage of `path` into `data` (Width x Height x
  * `channels` values of VTK type `scalarType`, bottom row first), converting
  * the pixel type. `header` receives the file's header. A file with 1
@@ -47,6 +60,17 @@ bool ReadImagePixels(const std::string& path,
   int channels,
   int scalarType,
   void* data,
+  std::string& error);
+
+/**
+ * ReadImagePixels() into view `view` of a vtkLightField pass array, whose
+ * components and scalar type give the channels and the type (each view holds
+ * header.Width x header.Height tuples).
+ */
+bool ReadViewPixels(const std::string& path,
+  const ImageHeader& header,
+  vtkDataArray* pass,
+  int view,
   std::string& error);
 
 /**

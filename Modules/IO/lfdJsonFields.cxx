@@ -29,18 +29,10 @@ bool ParseJsonFile(const std::string& path, Json& document, std::string& error)
   {
     document = Json::parse(stream);
   }
-  catch (const Json::parse_error& e)
-  {
-    // e.what() is "[json.exception.parse_error.101] parse error at line L, column C: ..."
-    std::string what = e.what();
-    const std::string::size_type start = what.find("] ");
-    error =
-      path + ": not valid JSON: " + (start == std::string::npos ? what : what.substr(start + 2));
-    return false;
-  }
   catch (const Json::exception& e)
   {
-    // Out-of-range numbers ("1e999") and invalid UTF-8 land here.
+    // Parse errors ("[json.exception.parse_error.101] parse error at line L,
+    // column C: ..."), out-of-range numbers ("1e999") and invalid UTF-8.
     std::string what = e.what();
     const std::string::size_type start = what.find("] ");
     error =

@@ -10,8 +10,6 @@
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
-#include <filesystem>
-
 vtkStandardNewMacro(vtkImageFileReader);
 
 //------------------------------------------------------------------------------
@@ -48,12 +46,10 @@ int vtkImageFileReader::RequestInformation(vtkInformation*,
   }
   lfd::io::ImageHeader header;
   std::string error;
-  if (!lfd::io::ReadImageHeader(this->FileName, header, error))
+  unsigned long errorCode = vtkErrorCode::NoError;
+  if (!lfd::io::ReadImageHeader(this->FileName, header, error, errorCode))
   {
-    std::error_code ec;
-    const bool exists = std::filesystem::exists(this->FileName, ec);
-    return this->Fail(exists ? vtkErrorCode::FileFormatError : vtkErrorCode::FileNotFoundError,
-      std::string(this->FileName) + ": " + (exists ? error : "file not found"));
+    return this->Fail(errorCode, std::string(this->FileName) + ": " + error);
   }
   vtkInformation* info = outputs->GetInformationObject(0);
   int extent[6] = { 0, header.Width - 1, 0, header.Height - 1, 0, 0 };

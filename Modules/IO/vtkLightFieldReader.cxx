@@ -3,6 +3,7 @@
 #include "lfdFileUtilities.h"
 #include "lfdImageFiles.h"
 #include "lfdJsonFields.h"
+#include "lfdLightFieldOutput.h"
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
@@ -12,7 +13,6 @@
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -215,6 +215,42 @@ void ParseManifest(const Json& document, Manifest& manifest)
       provenance->is_string() ? provenance->get<std::string>() : provenance->dump();
   }
 }
+
+// Reads and validates the manifest that FileName names. On failure returns
+// false with the vtkErrorCode and the one-line message.
+bool LoadManifest(const char* fileName,
+  Manifest& manifest,
+  unsigned long& errorCode,
+  std::string& error)
+{
+  if (!fileName || !*fileName)
+  {
+    errorCode = vtkErrorCode::NoFileNameError;
+    error = "vtkLightFieldReader: no FileName set";
+    return false;
+  }
+  manifest.Path = ManifestPath(fileName);
+  manifest.Folder = lfd::io::ParentFolder(manifest.Path);
+  Json document;
+  if (!lfd::io::ParseJsonFile(manifest.Path, document, error))
+  {
+    std::error_code ec;
+    errorCode = std::filesystem::exists(manifest.Path, ec) ? vtkErrorCode::FileFormatError
+                                                           : vtkErrorCode::FileNotFoundError;
+    return false;
+  }
+  try
+  {
+    ParseManifest(document, manifest);
+  }
+  catch (const std::exception& e)
+  {
+    errorCode = vtkErrorCode::FileFormatError;
+    error = manifest.Path + ": " + e.what();
+    return false;
+  }
+  return true;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -310,14 +346,7 @@ int vtkLightFieldReader::RequestDataObject(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputs)
 {
-  // VTK 9.1 cannot instantiate vtkLightField by name (PLATFORM-NOTES.md).
-  vtkInformation* info = outputs->GetInformationObject(0);
-  if (!vtkLightField::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT())))
-  {
-    vtkNew<vtkLightField> output;
-    info->Set(vtkDataObject::DATA_OBJECT(), output);
-  }
-  return 1;
+  return lfd::io::CreateLightFieldOutput(outputs);
 }
 
 //------------------------------------------------------------------------------
@@ -328,43 +357,16 @@ int vtkLightFieldReader::RequestInformation(vtkInformation*,
   this->SetErrorCode(vtkErrorCode::NoError);
   this->ErrorMessage.clear();
   vtkLightField* output = vtkLightField::GetData(outputs);
-  if (!this->FileName || !*this->FileName)
-  {
-    this->Fail(output, vtkErrorCode::NoFileNameError, "vtkLightFieldReader: no FileName set");
-    return 0;
-  }
   Manifest manifest;
-  manifest.Path = ManifestPath(this->FileName);
-  manifest.Folder = lfd::io::ParentFolder(manifest.Path);
-  Json document;
+  unsigned long errorCode = vtkErrorCode::NoError;
   std::string error;
-  if (!lfd::io::ParseJsonFile(manifest.Path, document, error))
+  if (!LoadManifest(this->FileName, manifest, errorCode, error))
   {
-    std::error_code ec;
-    this->Fail(output,
-      std::filesystem::exists(manifest.Path, ec) ? vtkErrorCode::FileFormatError
-                                                 : vtkErrorCode::FileNotFoundError,
-      error);
+    this->Fail(output, errorCode, error);
     return 0;
   }
-  try
-  {
-    ParseManifest(document, manifest);
-  }
-  catch (const std::exception& e)
-  {
-    this->Fail(output, vtkErrorCode::FileFormatError, manifest.Path + ": " + e.what());
-    return 0;
-  }
-  int extent[6] = {
-    0, manifest.Width - 1, 0, manifest.Height - 1, 0, static_cast<int>(manifest.Views.size()) - 1
-  };
-  vtkInformation* info = outputs->GetInformationObject(0);
-  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
-  const double spacing[3] = { 1.0, 1.0, 1.0 };
-  const double origin[3] = { 0.0, 0.0, 0.0 };
-  info->Set(vtkDataObject::SPACING(), spacing, 3);
-  info->Set(vtkDataObject::ORIGIN(), origin, 3);
+  lfd::io::SetLightFieldInformation(
+    outputs, manifest.Width, manifest.Height, static_cast<int>(manifest.Views.size()));
   return 1;
 }
 
@@ -376,28 +378,12 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
   this->SetErrorCode(vtkErrorCode::NoError);
   this->ErrorMessage.clear();
   vtkLightField* output = vtkLightField::GetData(outputs);
-  if (!this->FileName || !*this->FileName)
-  {
-    this->Fail(output, vtkErrorCode::NoFileNameError, "vtkLightFieldReader: no FileName set");
-    return 0;
-  }
   Manifest manifest;
-  manifest.Path = ManifestPath(this->FileName);
-  manifest.Folder = lfd::io::ParentFolder(manifest.Path);
-  Json document;
+  unsigned long errorCode = vtkErrorCode::NoError;
   std::string error;
-  if (!lfd::io::ParseJsonFile(manifest.Path, document, error))
+  if (!LoadManifest(this->FileName, manifest, errorCode, error))
   {
-    this->Fail(output, vtkErrorCode::FileFormatError, error);
-    return 0;
-  }
-  try
-  {
-    ParseManifest(document, manifest);
-  }
-  catch (const std::exception& e)
-  {
-    this->Fail(output, vtkErrorCode::FileFormatError, manifest.Path + ": " + e.what());
+    this->Fail(output, errorCode, error);
     return 0;
   }
 
@@ -433,10 +419,7 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
   {
     const std::string passKey = MemberPath("passes", vtkLightField::GetPassName(pass));
     const int channels = vtkLightField::GetPassComponents(pass);
-    const int scalarType = vtkLightField::GetPassScalarType(pass);
     vtkDataArray* array = output->AllocatePass(pass);
-    const vtkIdType viewValues =
-      static_cast<vtkIdType>(manifest.Width) * manifest.Height * channels;
     for (int i = 0; i < views; ++i)
     {
       std::string field = ElementPath(passKey, i);
@@ -447,13 +430,9 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
       const std::string& image = manifest.Images[pass][i];
       const std::string where = manifest.Path + ": field \"" + field + "\": image " + image;
       lfd::io::ImageHeader header;
-      if (!lfd::io::ReadImageHeader(image, header, error))
+      if (!lfd::io::ReadImageHeader(image, header, error, errorCode))
       {
-        std::error_code ec;
-        this->Fail(output,
-          std::filesystem::exists(image, ec) ? vtkErrorCode::FileFormatError
-                                             : vtkErrorCode::FileNotFoundError,
-          where + ": " + (std::filesystem::exists(image, ec) ? error : "file not found"));
+        this->Fail(output, errorCode, where + ": " + error);
         return 0;
       }
       if (header.Width != manifest.Width || header.Height != manifest.Height)
@@ -473,8 +452,7 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
             vtkLightField::GetPassName(pass) + " pass has " + std::to_string(channels));
         return 0;
       }
-      void* data = array->GetVoidPointer(viewValues * i);
-      if (!lfd::io::ReadImagePixels(image, header, channels, scalarType, data, error))
+      if (!lfd::io::ReadViewPixels(image, header, array, i, error))
       {
         this->Fail(output, vtkErrorCode::FileFormatError, where + ": " + error);
         return 0;
@@ -509,13 +487,7 @@ void vtkLightFieldReader::Fail(vtkLightField* output,
   unsigned long errorCode,
   const std::string& message)
 {
-  if (output)
-  {
-    output->Initialize();
-    vtkNew<vtkCameraRig> rig;
-    output->SetRig(rig);
-    output->SetProvenance(nullptr);
-  }
+  lfd::io::ClearLightField(output);
   this->SetErrorCode(errorCode);
   this->ErrorMessage = message;
   vtkErrorMacro(<< message);

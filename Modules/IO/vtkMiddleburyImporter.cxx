@@ -3,6 +3,7 @@
 #include "lfdFileUtilities.h"
 #include "lfdImageFiles.h"
 #include "lfdJsonFields.h"
+#include "lfdLightFieldOutput.h"
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
@@ -12,12 +13,10 @@
 #include "vtkLightField.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -159,6 +158,38 @@ std::vector<ParEntry> ParseParFile(const std::string& path)
   }
   return entries;
 }
+
+// Parses the par file that FileName names. On failure returns false with the
+// vtkErrorCode and the one-line message.
+bool LoadParFile(const char* fileName,
+  std::vector<ParEntry>& entries,
+  unsigned long& errorCode,
+  std::string& error)
+{
+  if (!fileName || !*fileName)
+  {
+    errorCode = vtkErrorCode::NoFileNameError;
+    error = "vtkMiddleburyImporter: no FileName set";
+    return false;
+  }
+  try
+  {
+    entries = ParseParFile(fileName);
+  }
+  catch (const ParError& e)
+  {
+    errorCode = vtkErrorCode::FileFormatError;
+    error = e.what();
+    return false;
+  }
+  catch (const std::exception& e)
+  {
+    errorCode = vtkErrorCode::FileNotFoundError;
+    error = e.what();
+    return false;
+  }
+  return true;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -212,14 +243,7 @@ int vtkMiddleburyImporter::RequestDataObject(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputs)
 {
-  // VTK 9.1 cannot instantiate vtkLightField by name (PLATFORM-NOTES.md).
-  vtkInformation* info = outputs->GetInformationObject(0);
-  if (!vtkLightField::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT())))
-  {
-    vtkNew<vtkLightField> output;
-    info->Set(vtkDataObject::DATA_OBJECT(), output);
-  }
-  return 1;
+  return lfd::io::CreateLightFieldOutput(outputs);
 }
 
 //------------------------------------------------------------------------------
@@ -230,28 +254,15 @@ int vtkMiddleburyImporter::RequestInformation(vtkInformation*,
   this->SetErrorCode(vtkErrorCode::NoError);
   this->ErrorMessage.clear();
   vtkLightField* output = vtkLightField::GetData(outputs);
-  if (!this->FileName || !*this->FileName)
-  {
-    this->Fail(output, vtkErrorCode::NoFileNameError, "vtkMiddleburyImporter: no FileName set");
-    return 0;
-  }
   std::vector<ParEntry> entries;
-  try
+  unsigned long errorCode = vtkErrorCode::NoError;
+  std::string error;
+  if (!LoadParFile(this->FileName, entries, errorCode, error))
   {
-    entries = ParseParFile(this->FileName);
-  }
-  catch (const ParError& e)
-  {
-    this->Fail(output, vtkErrorCode::FileFormatError, e.what());
-    return 0;
-  }
-  catch (const std::exception& e)
-  {
-    this->Fail(output, vtkErrorCode::FileNotFoundError, e.what());
+    this->Fail(output, errorCode, error);
     return 0;
   }
   lfd::io::ImageHeader header;
-  std::string error;
   if (!lfd::io::ReadImageHeader(entries[0].Image, header, error))
   {
     this->Fail(output,
@@ -260,15 +271,8 @@ int vtkMiddleburyImporter::RequestInformation(vtkInformation*,
         entries[0].Image + ": " + error);
     return 0;
   }
-  int extent[6] = {
-    0, header.Width - 1, 0, header.Height - 1, 0, static_cast<int>(entries.size()) - 1
-  };
-  vtkInformation* info = outputs->GetInformationObject(0);
-  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
-  const double spacing[3] = { 1.0, 1.0, 1.0 };
-  const double origin[3] = { 0.0, 0.0, 0.0 };
-  info->Set(vtkDataObject::SPACING(), spacing, 3);
-  info->Set(vtkDataObject::ORIGIN(), origin, 3);
+  lfd::io::SetLightFieldInformation(
+    outputs, header.Width, header.Height, static_cast<int>(entries.size()));
   return 1;
 }
 
@@ -280,33 +284,20 @@ int vtkMiddleburyImporter::RequestData(vtkInformation*,
   this->SetErrorCode(vtkErrorCode::NoError);
   this->ErrorMessage.clear();
   vtkLightField* output = vtkLightField::GetData(outputs);
-  if (!this->FileName || !*this->FileName)
+  std::vector<ParEntry> entries;
+  unsigned long errorCode = vtkErrorCode::NoError;
+  std::string error;
+  if (!LoadParFile(this->FileName, entries, errorCode, error))
   {
-    this->Fail(output, vtkErrorCode::NoFileNameError, "vtkMiddleburyImporter: no FileName set");
+    this->Fail(output, errorCode, error);
     return 0;
   }
   const std::string parFile = this->FileName;
-  std::vector<ParEntry> entries;
-  try
-  {
-    entries = ParseParFile(parFile);
-  }
-  catch (const ParError& e)
-  {
-    this->Fail(output, vtkErrorCode::FileFormatError, e.what());
-    return 0;
-  }
-  catch (const std::exception& e)
-  {
-    this->Fail(output, vtkErrorCode::FileNotFoundError, e.what());
-    return 0;
-  }
 
   const int views = static_cast<int>(entries.size());
   int width = 0;
   int height = 0;
   vtkDataArray* coaxial = nullptr;
-  std::string error;
   this->UpdateProgress(0.0);
   for (int i = 0; i < views; ++i)
   {
@@ -314,13 +305,9 @@ int vtkMiddleburyImporter::RequestData(vtkInformation*,
     const std::string where =
       parFile + ":" + std::to_string(entry.Line) + ": image " + entry.Image + ": ";
     lfd::io::ImageHeader header;
-    if (!lfd::io::ReadImageHeader(entry.Image, header, error))
+    if (!lfd::io::ReadImageHeader(entry.Image, header, error, errorCode))
     {
-      std::error_code ec;
-      const bool exists = std::filesystem::exists(entry.Image, ec);
-      this->Fail(output,
-        exists ? vtkErrorCode::FileFormatError : vtkErrorCode::FileNotFoundError,
-        where + (exists ? error : "file not found"));
+      this->Fail(output, errorCode, where + error);
       return 0;
     }
     if (i == 0)
@@ -348,13 +335,7 @@ int vtkMiddleburyImporter::RequestData(vtkInformation*,
           " channels, expected grey (1) or colour (3 or 4)");
       return 0;
     }
-    const vtkIdType viewValues = static_cast<vtkIdType>(width) * height * 3;
-    if (!lfd::io::ReadImagePixels(entry.Image,
-          header,
-          3,
-          VTK_UNSIGNED_CHAR,
-          coaxial->GetVoidPointer(viewValues * i),
-          error))
+    if (!lfd::io::ReadViewPixels(entry.Image, header, coaxial, i, error))
     {
       this->Fail(output, vtkErrorCode::FileFormatError, where + error);
       return 0;
@@ -390,13 +371,7 @@ void vtkMiddleburyImporter::Fail(vtkLightField* output,
   unsigned long errorCode,
   const std::string& message)
 {
-  if (output)
-  {
-    output->Initialize();
-    vtkNew<vtkCameraRig> rig;
-    output->SetRig(rig);
-    output->SetProvenance(nullptr);
-  }
+  lfd::io::ClearLightField(output);
   this->SetErrorCode(errorCode);
   this->ErrorMessage = message;
   vtkErrorMacro(<< message);

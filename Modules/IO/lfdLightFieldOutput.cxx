@@ -1,0 +1,50 @@
+#include "lfdLightFieldOutput.h"
+
+#include "vtkCameraRig.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLightField.h"
+#include "vtkNew.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+namespace lfd
+{
+namespace io
+{
+//------------------------------------------------------------------------------
+int CreateLightFieldOutput(vtkInformationVector* outputs)
+{
+  vtkInformation* info = outputs->GetInformationObject(0);
+  if (!vtkLightField::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT())))
+  {
+    vtkNew<vtkLightField> output;
+    info->Set(vtkDataObject::DATA_OBJECT(), output);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void SetLightFieldInformation(vtkInformationVector* outputs, int width, int height, int views)
+{
+  int extent[6] = { 0, width - 1, 0, height - 1, 0, views - 1 };
+  vtkInformation* info = outputs->GetInformationObject(0);
+  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  const double spacing[3] = { 1.0, 1.0, 1.0 };
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  info->Set(vtkDataObject::SPACING(), spacing, 3);
+  info->Set(vtkDataObject::ORIGIN(), origin, 3);
+}
+
+//------------------------------------------------------------------------------
+void ClearLightField(vtkLightField* output)
+{
+  if (output)
+  {
+    output->Initialize();
+    vtkNew<vtkCameraRig> rig;
+    output->SetRig(rig);
+    output->SetProvenance(nullptr);
+  }
+}
+}
+}

@@ -1,0 +1,40 @@
+/**
+ * @file   lfdLightFieldOutput.h
+ * @brief  pipeline steps shared by the sources of a vtkLightField (private to LFD::IO)
+ *
+ * vtkLightFieldReader and vtkMiddleburyImporter produce a vtkLightField on
+ * their only output port; these functions are the parts of their pipeline
+ * requests that do not depend on the file format.
+ */
+#ifndef lfdLightFieldOutput_h
+#define lfdLightFieldOutput_h
+
+class vtkInformationVector;
+class vtkLightField;
+
+namespace lfd
+{
+namespace io
+{
+/**
+ * REQUEST_DATA_OBJECT: puts a vtkLightField on output port 0 unless one is
+ * there (VTK 9.1 cannot instantiate vtkLightField by name,
+ * PLATFORM-NOTES.md). Returns 1.
+ */
+int CreateLightFieldOutput(vtkInformationVector* outputs);
+
+/**
+ * REQUEST_INFORMATION: the whole extent of `views` views of width x height
+ * pixels, unit spacing and zero origin.
+ */
+void SetLightFieldInformation(vtkInformationVector* outputs, int width, int height, int views);
+
+/**
+ * Empties `output` (no points, an empty rig, no provenance) after a failed
+ * request; does nothing when `output` is null.
+ */
+void ClearLightField(vtkLightField* output);
+}
+}
+
+#endif
