@@ -44,27 +44,6 @@ RGB Mix(const RGB& a, const RGB& b, double t)
   return { a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]) };
 }
 
-// An ellipsoid with the given centre and semi-axes, poles along X so the
-// stripes across the long axis of the fish follow the latitude rings.
-vtkSmartPointer<vtkPolyData> MakeEllipsoid(const double center[3],
-  const double semiAxes[3],
-  int resolution)
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(1.0);
-  sphere->SetThetaResolution(resolution);
-  sphere->SetPhiResolution(std::max(resolution / 2, 4));
-  vtkNew<vtkTransform> transform;
-  transform->Translate(center);
-  transform->Scale(semiAxes);
-  transform->RotateY(90.0);
-  vtkNew<vtkTransformPolyDataFilter> place;
-  place->SetInputConnection(sphere->GetOutputPort());
-  place->SetTransform(transform);
-  place->Update();
-  return place->GetOutput();
-}
-
 // A capped cylinder along +Y.
 vtkSmartPointer<vtkPolyData> MakeCylinder(const double center[3],
   double radius,
@@ -110,6 +89,33 @@ void SetPointColors(vtkPolyData* part, const ColorFunction& color)
     }
   }
   part->GetPointData()->AddArray(colors);
+}
+
+// A part of the fish: an ellipsoid with the given centre and semi-axes,
+// poles along X so the stripes across the long axis of the fish follow the
+// latitude rings, with point colours and a cell label.
+vtkSmartPointer<vtkPolyData> MakeFishPart(const double center[3],
+  const double semiAxes[3],
+  int resolution,
+  const ColorFunction& color,
+  int label)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(1.0);
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(std::max(resolution / 2, 4));
+  vtkNew<vtkTransform> transform;
+  transform->Translate(center);
+  transform->Scale(semiAxes);
+  transform->RotateY(90.0);
+  vtkNew<vtkTransformPolyDataFilter> place;
+  place->SetInputConnection(sphere->GetOutputPort());
+  place->SetTransform(transform);
+  place->Update();
+  vtkSmartPointer<vtkPolyData> part = place->GetOutput();
+  SetPointColors(part, color);
+  SetLabel(part, label);
+  return part;
 }
 
 // Texture coordinates wrapped around the vertical axis through `axisPoint`:
@@ -187,8 +193,10 @@ vtkSmartPointer<vtkPolyData> MakeFish(int resolution)
   const double tailCenter[3] = { -0.46, 0.0, 0.0 };
   const double tailAxes[3] = { 0.16, 0.20, 0.025 };
 
-  auto head = MakeEllipsoid(headCenter, headAxes, resolution);
-  SetPointColors(head,
+  auto head = MakeFishPart(
+    headCenter,
+    headAxes,
+    resolution,
     [](const double x[3]) -> RGB
     {
       // A yellow head with a fine dot pattern and a black-and-white eye on
@@ -207,11 +215,13 @@ vtkSmartPointer<vtkPolyData> MakeFish(int resolution)
         c = { 250, 250, 250 };
       }
       return c;
-    });
-  SetLabel(head, 1);
+    },
+    1);
 
-  auto body = MakeEllipsoid(bodyCenter, bodyAxes, resolution);
-  SetPointColors(body,
+  auto body = MakeFishPart(
+    bodyCenter,
+    bodyAxes,
+    resolution,
     [](const double x[3]) -> RGB
     {
       // Orange with dark vertical stripes and a pale belly.
@@ -224,11 +234,13 @@ vtkSmartPointer<vtkPolyData> MakeFish(int resolution)
         c = Mix(c, belly, std::min(1.0, (-0.08 - x[1]) / 0.06));
       }
       return c;
-    });
-  SetLabel(body, 2);
+    },
+    2);
 
-  auto tail = MakeEllipsoid(tailCenter, tailAxes, resolution);
-  SetPointColors(tail,
+  auto tail = MakeFishPart(
+    tailCenter,
+    tailAxes,
+    resolution,
     [](const double x[3]) -> RGB
     {
       // A blue fin with light rays fanning out from the body.
@@ -236,8 +248,8 @@ vtkSmartPointer<vtkPolyData> MakeFish(int resolution)
       const RGB ray = { 150, 180, 250 };
       const double angle = std::atan2(x[1], -0.30 - x[0]);
       return std::sin(18.0 * angle) > 0.0 ? ray : blue;
-    });
-  SetLabel(tail, 3);
+    },
+    3);
 
   vtkNew<vtkAppendPolyData> append;
   append->AddInputData(head);
@@ -280,6 +292,12 @@ vtkSmartPointer<vtkPolyData> MakeFigure(int resolution)
   return Triangulate(append);
 }
 
+// Side of the texture image: the figure's texture, or one white pixel.
+int TextureSide(int object)
+{
+  return object == vtkProceduralObjectSource::FIGURE ? FigureTextureSize : 1;
+}
+
 // Checks of 32 pixels (cream / red), navy bands every 64 rows and thin dark
 // lines every 16 columns: detail at several scales for the resampling tests.
 void FillFigureTexture(vtkImageData* image)
@@ -306,7 +324,7 @@ void FillFigureTexture(vtkImageData* image)
     }
   }
 }
-}
+} // namespace
 
 //------------------------------------------------------------------------------
 vtkProceduralObjectSource::vtkProceduralObjectSource()
@@ -387,7 +405,7 @@ int vtkProceduralObjectSource::RequestInformation(vtkInformation*,
   vtkInformationVector* outputVector)
 {
   vtkInformation* textureInfo = outputVector->GetInformationObject(1);
-  const int size = this->Object == FIGURE ? FigureTextureSize : 1;
+  const int size = TextureSide(this->Object);
   const int extent[6] = { 0, size - 1, 0, size - 1, 0, 0 };
   const double origin[3] = { 0.0, 0.0, 0.0 };
   const double spacing[3] = { 1.0, 1.0, 1.0 };
@@ -407,7 +425,8 @@ int vtkProceduralObjectSource::RequestData(vtkInformation*,
   vtkImageData* texture = vtkImageData::GetData(outputVector, 1);
   if (!mesh || !texture)
   {
-    vtkErrorMacro("Missing output data object (port 0 vtkPolyData, port 1 vtkImageData).");
+    vtkErrorMacro("Missing output data object (port 0 vtkPolyData, port 1 "
+                  "vtkImageData).");
     return 0;
   }
 
@@ -429,7 +448,7 @@ int vtkProceduralObjectSource::RequestData(vtkInformation*,
   }
   mesh->ShallowCopy(object);
 
-  const int size = this->Object == FIGURE ? FigureTextureSize : 1;
+  const int size = TextureSide(this->Object);
   texture->SetExtent(0, size - 1, 0, size - 1, 0, 0);
   texture->SetOrigin(0.0, 0.0, 0.0);
   texture->SetSpacing(1.0, 1.0, 1.0);

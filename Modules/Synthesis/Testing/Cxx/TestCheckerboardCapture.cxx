@@ -2,20 +2,13 @@
 // a ring of 8 views: view 0 (face-on) and view 1 (45 degrees) side by side.
 #include "lfdSynthesisTestUtilities.h"
 #include "vtkCellData.h"
-#include "vtkLightFieldCapture.h"
 #include "vtkPolyData.h"
-#include "vtkProceduralObjectSource.h"
 
 int TestCheckerboardCapture(int argc, char* argv[])
 {
   vtkNew<vtkProceduralObjectSource> source;
   source->SetObjectToCheckerboard();
-  vtkNew<vtkLightFieldCapture> capture;
-  capture->SetInputConnection(source->GetOutputPort());
-  capture->SetViewsPerRing(8);
-  capture->SetNumberOfRows(1);
-  capture->SetWidth(128);
-  capture->SetHeight(128);
+  auto capture = lfdtest::RingCapture(source);
   capture->CaptureLabelOff();
   capture->CaptureDepthOff();
   capture->Update();

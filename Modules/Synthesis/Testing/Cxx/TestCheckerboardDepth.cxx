@@ -1,8 +1,6 @@
 // The Depth pass of the checkerboard against the analytic distance along
 // each camera's optical axis to the plane z = 0.
 #include "lfdSynthesisTestUtilities.h"
-#include "vtkLightFieldCapture.h"
-#include "vtkProceduralObjectSource.h"
 
 #include <cmath>
 
@@ -10,12 +8,7 @@ int TestCheckerboardDepth(int, char*[])
 {
   vtkNew<vtkProceduralObjectSource> source;
   source->SetObjectToCheckerboard();
-  vtkNew<vtkLightFieldCapture> capture;
-  capture->SetInputConnection(source->GetOutputPort());
-  capture->SetViewsPerRing(8);
-  capture->SetNumberOfRows(1);
-  capture->SetWidth(128);
-  capture->SetHeight(128);
+  auto capture = lfdtest::RingCapture(source);
   capture->CaptureCoaxialOff();
   capture->Update();
   vtkLightField* lightField = capture->GetOutput();

@@ -6,8 +6,6 @@
 // degrees) and from behind (view 3, 135 degrees); under the fixed light the
 // back of the board gets ambient light only.
 #include "lfdSynthesisTestUtilities.h"
-#include "vtkLightFieldCapture.h"
-#include "vtkProceduralObjectSource.h"
 
 #include <cmath>
 
@@ -68,12 +66,7 @@ int TestCoaxialVersusSceneLight(int, char*[])
 {
   vtkNew<vtkProceduralObjectSource> source;
   source->SetObjectToCheckerboard();
-  vtkNew<vtkLightFieldCapture> capture;
-  capture->SetInputConnection(source->GetOutputPort());
-  capture->SetViewsPerRing(8);
-  capture->SetNumberOfRows(1);
-  capture->SetWidth(Size);
-  capture->SetHeight(Size);
+  auto capture = lfdtest::RingCapture(source, Size);
   capture->SetAmbient(Ambient);
   capture->CaptureLabelOff();
   capture->CaptureDepthOff();

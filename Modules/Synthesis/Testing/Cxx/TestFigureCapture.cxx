@@ -2,10 +2,8 @@
 // views 0 (from +Z) and 1 (45 degrees) side by side. The texture reaches
 // the capture through input port 1.
 #include "lfdSynthesisTestUtilities.h"
-#include "vtkLightFieldCapture.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkProceduralObjectSource.h"
 
 #include <set>
 
@@ -24,13 +22,8 @@ int TestFigureCapture(int argc, char* argv[])
     1,
     1);
 
-  vtkNew<vtkLightFieldCapture> capture;
-  capture->SetInputConnection(source->GetOutputPort(0));
+  auto capture = lfdtest::RingCapture(source);
   capture->SetTextureConnection(source->GetOutputPort(1));
-  capture->SetViewsPerRing(8);
-  capture->SetNumberOfRows(1);
-  capture->SetWidth(128);
-  capture->SetHeight(128);
   capture->CaptureDepthOff();
   capture->Update();
   vtkLightField* lightField = capture->GetOutput();

@@ -2,10 +2,8 @@
 // (view 0, from +Z) and the view from 45 degrees, side by side.
 #include "lfdSynthesisTestUtilities.h"
 #include "vtkCellData.h"
-#include "vtkLightFieldCapture.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkProceduralObjectSource.h"
 
 #include <cmath>
 
@@ -15,12 +13,7 @@ int TestFishCapture(int argc, char* argv[])
 {
   vtkNew<vtkProceduralObjectSource> source;
   source->SetObjectToFish();
-  vtkNew<vtkLightFieldCapture> capture;
-  capture->SetInputConnection(source->GetOutputPort());
-  capture->SetViewsPerRing(8);
-  capture->SetNumberOfRows(1);
-  capture->SetWidth(128);
-  capture->SetHeight(128);
+  auto capture = lfdtest::RingCapture(source);
   capture->CaptureDepthOff();
   capture->Update();
 

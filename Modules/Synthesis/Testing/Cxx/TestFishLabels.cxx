@@ -1,8 +1,6 @@
 // The Label pass of the fish: exact label values {0, 1, 2, 3} and parts
 // where the mesh puts them (head at +X, tail at -X).
 #include "lfdSynthesisTestUtilities.h"
-#include "vtkLightFieldCapture.h"
-#include "vtkProceduralObjectSource.h"
 
 #include <array>
 #include <set>
@@ -11,12 +9,7 @@ int TestFishLabels(int, char*[])
 {
   vtkNew<vtkProceduralObjectSource> source;
   source->SetObjectToFish();
-  vtkNew<vtkLightFieldCapture> capture;
-  capture->SetInputConnection(source->GetOutputPort());
-  capture->SetViewsPerRing(8);
-  capture->SetNumberOfRows(1);
-  capture->SetWidth(128);
-  capture->SetHeight(128);
+  auto capture = lfdtest::RingCapture(source);
   capture->CaptureCoaxialOff();
   capture->CaptureDepthOff();
   capture->Update();

@@ -1,6 +1,6 @@
 // Helpers shared by the Synthesis tests: checks that print their numbers,
-// views of a light field as images, regression comparison of an image and
-// the analytic rays of a rig's pixels.
+// the tests' capture set-up, views of a light field as images, regression
+// comparison of an image and the analytic rays of a rig's pixels.
 #ifndef lfdSynthesisTestUtilities_h
 #define lfdSynthesisTestUtilities_h
 
@@ -8,8 +8,10 @@
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldCapture.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkProceduralObjectSource.h"
 #include "vtkSmartPointer.h"
 #include "vtkTesting.h"
 #include "vtkTrivialProducer.h"
@@ -30,6 +32,20 @@ inline void Check(bool ok, const char* what, double value, double limit)
 {
   std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (limit " << limit << ")\n";
   Failures() += ok ? 0 : 1;
+}
+
+// A capture of the source's object from one ring of 8 views of
+// `size` x `size` pixels.
+inline vtkSmartPointer<vtkLightFieldCapture> RingCapture(vtkProceduralObjectSource* source,
+  int size = 128)
+{
+  auto capture = vtkSmartPointer<vtkLightFieldCapture>::New();
+  capture->SetInputConnection(source->GetOutputPort());
+  capture->SetViewsPerRing(8);
+  capture->SetNumberOfRows(1);
+  capture->SetWidth(size);
+  capture->SetHeight(size);
+  return capture;
 }
 
 // The Coaxial pass of the given views side by side, as an RGB image.
