@@ -12,18 +12,6 @@ namespace lfd
 namespace io
 {
 //------------------------------------------------------------------------------
-int CreateLightFieldOutput(vtkInformationVector* outputs)
-{
-  vtkInformation* info = outputs->GetInformationObject(0);
-  if (!vtkLightField::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT())))
-  {
-    vtkNew<vtkLightField> output;
-    info->Set(vtkDataObject::DATA_OBJECT(), output);
-  }
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 void SetLightFieldInformation(vtkInformationVector* outputs, int width, int height, int views)
 {
   int extent[6] = { 0, width - 1, 0, height - 1, 0, views - 1 };

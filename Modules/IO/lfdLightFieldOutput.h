@@ -17,13 +17,6 @@ namespace lfd
 namespace io
 {
 /**
- * REQUEST_DATA_OBJECT: puts a vtkLightField on output port 0 unless one is
- * there (VTK 9.1 cannot instantiate vtkLightField by name,
- * PLATFORM-NOTES.md). Returns 1.
- */
-int CreateLightFieldOutput(vtkInformationVector* outputs);
-
-/**
  * REQUEST_INFORMATION: the whole extent of `views` views of width x height
  * pixels, unit spacing and zero origin.
  */

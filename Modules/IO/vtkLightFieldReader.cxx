@@ -256,8 +256,6 @@ bool LoadManifest(const char* fileName,
 //------------------------------------------------------------------------------
 vtkLightFieldReader::vtkLightFieldReader()
 {
-  this->SetNumberOfInputPorts(0);
-  this->SetNumberOfOutputPorts(1);
   this->ReadAllPasses();
 }
 
@@ -306,47 +304,6 @@ void vtkLightFieldReader::ReadNoPasses()
     this->ReadPass[pass] = false;
   }
   this->Modified();
-}
-
-//------------------------------------------------------------------------------
-vtkLightField* vtkLightFieldReader::GetOutput()
-{
-  return vtkLightField::SafeDownCast(this->GetOutputDataObject(0));
-}
-
-//------------------------------------------------------------------------------
-int vtkLightFieldReader::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkLightField");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-vtkTypeBool vtkLightFieldReader::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inputs,
-  vtkInformationVector* outputs)
-{
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
-  {
-    return this->RequestDataObject(request, inputs, outputs);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
-  {
-    return this->RequestInformation(request, inputs, outputs);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inputs, outputs);
-  }
-  return this->Superclass::ProcessRequest(request, inputs, outputs);
-}
-
-//------------------------------------------------------------------------------
-int vtkLightFieldReader::RequestDataObject(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outputs)
-{
-  return lfd::io::CreateLightFieldOutput(outputs);
 }
 
 //------------------------------------------------------------------------------

@@ -29,17 +29,17 @@
 #ifndef vtkLightFieldReader_h
 #define vtkLightFieldReader_h
 
-#include "lfdIOModule.h" // For export macro
-#include "vtkAlgorithm.h"
+#include "lfdIOModule.h"   // For export macro
 #include "vtkLightField.h" // For NUMBER_OF_PASSES
+#include "vtkLightFieldAlgorithm.h"
 
 #include <string> // For std::string
 
-class LFDIO_EXPORT vtkLightFieldReader : public vtkAlgorithm
+class LFDIO_EXPORT vtkLightFieldReader : public vtkLightFieldAlgorithm
 {
 public:
   static vtkLightFieldReader* New();
-  vtkTypeMacro(vtkLightFieldReader, vtkAlgorithm);
+  vtkTypeMacro(vtkLightFieldReader, vtkLightFieldAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -69,28 +69,16 @@ public:
    */
   const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
-  /**
-   * The output light field.
-   */
-  vtkLightField* GetOutput();
-
 protected:
   vtkLightFieldReader();
   ~vtkLightFieldReader() override;
 
-  vtkTypeBool ProcessRequest(vtkInformation* request,
+  int RequestInformation(vtkInformation* request,
     vtkInformationVector** inputs,
     vtkInformationVector* outputs) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-  virtual int RequestDataObject(vtkInformation* request,
+  int RequestData(vtkInformation* request,
     vtkInformationVector** inputs,
-    vtkInformationVector* outputs);
-  virtual int RequestInformation(vtkInformation* request,
-    vtkInformationVector** inputs,
-    vtkInformationVector* outputs);
-  virtual int RequestData(vtkInformation* request,
-    vtkInformationVector** inputs,
-    vtkInformationVector* outputs);
+    vtkInformationVector* outputs) override;
 
   char* FileName = nullptr;
   bool ReadPass[vtkLightField::NUMBER_OF_PASSES];

@@ -193,57 +193,12 @@ bool LoadParFile(const char* fileName,
 }
 
 //------------------------------------------------------------------------------
-vtkMiddleburyImporter::vtkMiddleburyImporter()
-{
-  this->SetNumberOfInputPorts(0);
-  this->SetNumberOfOutputPorts(1);
-}
+vtkMiddleburyImporter::vtkMiddleburyImporter() = default;
 
 //------------------------------------------------------------------------------
 vtkMiddleburyImporter::~vtkMiddleburyImporter()
 {
   this->SetFileName(nullptr);
-}
-
-//------------------------------------------------------------------------------
-vtkLightField* vtkMiddleburyImporter::GetOutput()
-{
-  return vtkLightField::SafeDownCast(this->GetOutputDataObject(0));
-}
-
-//------------------------------------------------------------------------------
-int vtkMiddleburyImporter::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkLightField");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-vtkTypeBool vtkMiddleburyImporter::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inputs,
-  vtkInformationVector* outputs)
-{
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
-  {
-    return this->RequestDataObject(request, inputs, outputs);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
-  {
-    return this->RequestInformation(request, inputs, outputs);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inputs, outputs);
-  }
-  return this->Superclass::ProcessRequest(request, inputs, outputs);
-}
-
-//------------------------------------------------------------------------------
-int vtkMiddleburyImporter::RequestDataObject(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outputs)
-{
-  return lfd::io::CreateLightFieldOutput(outputs);
 }
 
 //------------------------------------------------------------------------------

@@ -34,17 +34,17 @@
 #define vtkMiddleburyImporter_h
 
 #include "lfdIOModule.h" // For export macro
-#include "vtkAlgorithm.h"
+#include "vtkLightFieldAlgorithm.h"
 
 #include <string> // For std::string
 
 class vtkLightField;
 
-class LFDIO_EXPORT vtkMiddleburyImporter : public vtkAlgorithm
+class LFDIO_EXPORT vtkMiddleburyImporter : public vtkLightFieldAlgorithm
 {
 public:
   static vtkMiddleburyImporter* New();
-  vtkTypeMacro(vtkMiddleburyImporter, vtkAlgorithm);
+  vtkTypeMacro(vtkMiddleburyImporter, vtkLightFieldAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -70,28 +70,16 @@ public:
    */
   const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
-  /**
-   * The output light field.
-   */
-  vtkLightField* GetOutput();
-
 protected:
   vtkMiddleburyImporter();
   ~vtkMiddleburyImporter() override;
 
-  vtkTypeBool ProcessRequest(vtkInformation* request,
+  int RequestInformation(vtkInformation* request,
     vtkInformationVector** inputs,
     vtkInformationVector* outputs) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-  virtual int RequestDataObject(vtkInformation* request,
+  int RequestData(vtkInformation* request,
     vtkInformationVector** inputs,
-    vtkInformationVector* outputs);
-  virtual int RequestInformation(vtkInformation* request,
-    vtkInformationVector** inputs,
-    vtkInformationVector* outputs);
-  virtual int RequestData(vtkInformation* request,
-    vtkInformationVector** inputs,
-    vtkInformationVector* outputs);
+    vtkInformationVector* outputs) override;
 
   char* FileName = nullptr;
   bool FitRigCylinder = true;

@@ -105,7 +105,6 @@ double BoundingRadius(const double bounds[6], const double center[3])
 vtkLightFieldCapture::vtkLightFieldCapture()
 {
   this->SetNumberOfInputPorts(2);
-  this->SetNumberOfOutputPorts(1);
 }
 
 //------------------------------------------------------------------------------
@@ -153,12 +152,6 @@ void vtkLightFieldCapture::SetTextureData(vtkImageData* texture)
 }
 
 //------------------------------------------------------------------------------
-vtkLightField* vtkLightFieldCapture::GetOutput()
-{
-  return vtkLightField::SafeDownCast(this->GetOutputDataObject(0));
-}
-
-//------------------------------------------------------------------------------
 int vtkLightFieldCapture::FillInputPortInformation(int port, vtkInformation* info)
 {
   if (port == 0)
@@ -173,52 +166,6 @@ int vtkLightFieldCapture::FillInputPortInformation(int port, vtkInformation* inf
     return 1;
   }
   return 0;
-}
-
-//------------------------------------------------------------------------------
-int vtkLightFieldCapture::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkLightField");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-vtkTypeBool vtkLightFieldCapture::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
-  {
-    return this->RequestDataObject(request, inputVector, outputVector);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
-  {
-    return this->RequestInformation(request, inputVector, outputVector);
-  }
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
-  {
-    return this->RequestUpdateExtent(request, inputVector, outputVector);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inputVector, outputVector);
-  }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
-}
-
-//------------------------------------------------------------------------------
-int vtkLightFieldCapture::RequestDataObject(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outputVector)
-{
-  // VTK 9.1 cannot create a vtkLightField from its type name.
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  if (!vtkLightField::GetData(outInfo))
-  {
-    vtkNew<vtkLightField> output;
-    outInfo->Set(vtkDataObject::DATA_OBJECT(), output);
-  }
-  return 1;
 }
 
 //------------------------------------------------------------------------------

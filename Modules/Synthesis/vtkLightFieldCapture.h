@@ -52,7 +52,7 @@
 #define vtkLightFieldCapture_h
 
 #include "lfdSynthesisModule.h" // For export macro
-#include "vtkAlgorithm.h"
+#include "vtkLightFieldAlgorithm.h"
 
 class vtkCameraRig;
 class vtkDoubleArray;
@@ -60,11 +60,11 @@ class vtkImageData;
 class vtkLightField;
 class vtkPolyData;
 
-class LFDSYNTHESIS_EXPORT vtkLightFieldCapture : public vtkAlgorithm
+class LFDSYNTHESIS_EXPORT vtkLightFieldCapture : public vtkLightFieldAlgorithm
 {
 public:
   static vtkLightFieldCapture* New();
-  vtkTypeMacro(vtkLightFieldCapture, vtkAlgorithm);
+  vtkTypeMacro(vtkLightFieldCapture, vtkLightFieldAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -196,37 +196,21 @@ public:
   void SetTextureData(vtkImageData* texture);
   ///@}
 
-  /**
-   * The captured light field.
-   */
-  vtkLightField* GetOutput();
-
-  /**
-   * Dispatches the pipeline requests to the Request* methods below.
-   */
-  vtkTypeBool ProcessRequest(vtkInformation* request,
-    vtkInformationVector** inInfo,
-    vtkInformationVector* outInfo) override;
-
 protected:
   vtkLightFieldCapture();
   ~vtkLightFieldCapture() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
 
-  virtual int RequestDataObject(vtkInformation* request,
+  int RequestInformation(vtkInformation* request,
     vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector);
-  virtual int RequestInformation(vtkInformation* request,
+    vtkInformationVector* outputVector) override;
+  int RequestUpdateExtent(vtkInformation* request,
     vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector);
-  virtual int RequestUpdateExtent(vtkInformation* request,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request,
     vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector);
-  virtual int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector);
+    vtkInformationVector* outputVector) override;
 
   /**
    * Builds the cylinder rig for a mesh with the given bounds (Rig unset).

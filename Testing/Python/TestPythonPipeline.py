@@ -8,7 +8,7 @@ from vtkmodules.vtkRenderingCore import vtkCamera
 
 import lfd
 
-for name in ("vtkLightField", "vtkCameraRig", "vtkLightFieldReader", "vtkLightFieldWriter",
+for name in ("vtkLightField", "vtkCameraRig", "vtkLightFieldAlgorithm", "vtkLightFieldReader", "vtkLightFieldWriter",
              "vtkMiddleburyImporter", "vtkLightFieldScene", "vtkProceduralObjectSource",
              "vtkLightFieldCapture", "vtkLabelCellsByBoxes", "vtkLightFieldRenderer",
              "vtkLeaveOneOutEvaluator", "vtkImageFileReader", "vtkImageFileWriter"):

@@ -1,0 +1,118 @@
+#include "vtkLightFieldAlgorithm.h"
+
+#include "vtkDemandDrivenPipeline.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLightField.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+vtkStandardNewMacro(vtkLightFieldAlgorithm);
+
+//------------------------------------------------------------------------------
+vtkLightFieldAlgorithm::vtkLightFieldAlgorithm()
+{
+  this->SetNumberOfInputPorts(0);
+  this->SetNumberOfOutputPorts(1);
+}
+
+//------------------------------------------------------------------------------
+vtkLightFieldAlgorithm::~vtkLightFieldAlgorithm() = default;
+
+//------------------------------------------------------------------------------
+vtkLightField* vtkLightFieldAlgorithm::GetOutput()
+{
+  return this->GetOutput(0);
+}
+
+//------------------------------------------------------------------------------
+vtkLightField* vtkLightFieldAlgorithm::GetOutput(int port)
+{
+  return vtkLightField::SafeDownCast(this->GetOutputDataObject(port));
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkLightFieldAlgorithm::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    return this->RequestDataObject(request, inputVector, outputVector);
+  }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
+  {
+    return this->RequestInformation(request, inputVector, outputVector);
+  }
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
+  {
+    return this->RequestUpdateExtent(request, inputVector, outputVector);
+  }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+  {
+    return this->RequestData(request, inputVector, outputVector);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldAlgorithm::RequestDataObject(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputVector)
+{
+  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
+  {
+    vtkInformation* outInfo = outputVector->GetInformationObject(port);
+    if (!vtkLightField::GetData(outInfo))
+    {
+      vtkNew<vtkLightField> output;
+      outInfo->Set(vtkDataObject::DATA_OBJECT(), output);
+    }
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldAlgorithm::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector*)
+{
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldAlgorithm::RequestUpdateExtent(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector*)
+{
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldAlgorithm::RequestData(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector*)
+{
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldAlgorithm::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkLightField");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldAlgorithm::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkLightField");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}
