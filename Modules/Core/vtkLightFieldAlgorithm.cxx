@@ -1,6 +1,8 @@
 #include "vtkLightFieldAlgorithm.h"
 
+#include "vtkCameraRig.h"
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkErrorCode.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLightField.h"
@@ -112,7 +114,33 @@ int vtkLightFieldAlgorithm::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+void vtkLightFieldAlgorithm::Fail(vtkLightField* output,
+  unsigned long errorCode,
+  const std::string& message)
+{
+  if (output)
+  {
+    output->Initialize();
+    vtkNew<vtkCameraRig> rig;
+    output->SetRig(rig);
+    output->SetProvenance(nullptr);
+  }
+  this->SetErrorCode(errorCode);
+  this->ErrorMessage = message;
+  vtkErrorMacro(<< message);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldAlgorithm::ClearError()
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
+  this->ErrorMessage.clear();
+}
+
+//------------------------------------------------------------------------------
 void vtkLightFieldAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "ErrorMessage: " << (this->ErrorMessage.empty() ? "(none)" : this->ErrorMessage)
+     << "\n";
 }

@@ -17,6 +17,8 @@
 #include "lfdCoreModule.h" // For export macro
 #include "vtkAlgorithm.h"
 
+#include <string> // For std::string
+
 class vtkLightField;
 
 class LFDCORE_EXPORT vtkLightFieldAlgorithm : public vtkAlgorithm
@@ -33,6 +35,13 @@ public:
   vtkLightField* GetOutput();
   vtkLightField* GetOutput(int port);
   ///@}
+
+  /**
+   * One line describing the last failure, naming the file and field (or
+   * line) that is wrong; empty after a successful update. GetErrorCode()
+   * tells the kind of failure.
+   */
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
   /**
    * Dispatches the pipeline requests to the Request* methods below.
@@ -69,6 +78,20 @@ protected:
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  /**
+   * Records a failure: empties `output` (no points, an empty rig, no
+   * provenance; may be null), sets the error code and message and reports
+   * the message with vtkErrorMacro.
+   */
+  void Fail(vtkLightField* output, unsigned long errorCode, const std::string& message);
+
+  /**
+   * Clears the error code and message at the start of a request.
+   */
+  void ClearError();
+
+  std::string ErrorMessage;
 
 private:
   vtkLightFieldAlgorithm(const vtkLightFieldAlgorithm&) = delete;

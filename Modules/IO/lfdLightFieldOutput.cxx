@@ -23,16 +23,5 @@ void SetLightFieldInformation(vtkInformationVector* outputs, int width, int heig
   info->Set(vtkDataObject::ORIGIN(), origin, 3);
 }
 
-//------------------------------------------------------------------------------
-void ClearLightField(vtkLightField* output)
-{
-  if (output)
-  {
-    output->Initialize();
-    vtkNew<vtkCameraRig> rig;
-    output->SetRig(rig);
-    output->SetProvenance(nullptr);
-  }
-}
 }
 }

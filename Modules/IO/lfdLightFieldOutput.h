@@ -22,11 +22,6 @@ namespace io
  */
 void SetLightFieldInformation(vtkInformationVector* outputs, int width, int height, int views);
 
-/**
- * Empties `output` (no points, an empty rig, no provenance) after a failed
- * request; does nothing when `output` is null.
- */
-void ClearLightField(vtkLightField* output);
 }
 }
 

@@ -311,8 +311,7 @@ int vtkLightFieldReader::RequestInformation(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputs)
 {
-  this->SetErrorCode(vtkErrorCode::NoError);
-  this->ErrorMessage.clear();
+  this->ClearError();
   vtkLightField* output = vtkLightField::GetData(outputs);
   Manifest manifest;
   unsigned long errorCode = vtkErrorCode::NoError;
@@ -332,8 +331,7 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputs)
 {
-  this->SetErrorCode(vtkErrorCode::NoError);
-  this->ErrorMessage.clear();
+  this->ClearError();
   vtkLightField* output = vtkLightField::GetData(outputs);
   Manifest manifest;
   unsigned long errorCode = vtkErrorCode::NoError;
@@ -437,17 +435,6 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
   output->SetProvenance(manifest.HasProvenance ? manifest.Provenance.c_str() : nullptr);
   this->UpdateProgress(1.0);
   return 1;
-}
-
-//------------------------------------------------------------------------------
-void vtkLightFieldReader::Fail(vtkLightField* output,
-  unsigned long errorCode,
-  const std::string& message)
-{
-  lfd::io::ClearLightField(output);
-  this->SetErrorCode(errorCode);
-  this->ErrorMessage = message;
-  vtkErrorMacro(<< message);
 }
 
 //------------------------------------------------------------------------------

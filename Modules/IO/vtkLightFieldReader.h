@@ -63,12 +63,6 @@ public:
   void ReadNoPasses();
   ///@}
 
-  /**
-   * The text of the last error, one line naming the file and the field, or
-   * an empty string after a successful read.
-   */
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
-
 protected:
   vtkLightFieldReader();
   ~vtkLightFieldReader() override;
@@ -86,10 +80,6 @@ protected:
 private:
   vtkLightFieldReader(const vtkLightFieldReader&) = delete;
   void operator=(const vtkLightFieldReader&) = delete;
-
-  void Fail(vtkLightField* output, unsigned long errorCode, const std::string& message);
-
-  std::string ErrorMessage;
 };
 
 #endif

@@ -206,8 +206,7 @@ int vtkMiddleburyImporter::RequestInformation(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputs)
 {
-  this->SetErrorCode(vtkErrorCode::NoError);
-  this->ErrorMessage.clear();
+  this->ClearError();
   vtkLightField* output = vtkLightField::GetData(outputs);
   std::vector<ParEntry> entries;
   unsigned long errorCode = vtkErrorCode::NoError;
@@ -236,8 +235,7 @@ int vtkMiddleburyImporter::RequestData(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputs)
 {
-  this->SetErrorCode(vtkErrorCode::NoError);
-  this->ErrorMessage.clear();
+  this->ClearError();
   vtkLightField* output = vtkLightField::GetData(outputs);
   std::vector<ParEntry> entries;
   unsigned long errorCode = vtkErrorCode::NoError;
@@ -319,17 +317,6 @@ int vtkMiddleburyImporter::RequestData(vtkInformation*,
   output->SetProvenance(provenance.dump().c_str());
   this->UpdateProgress(1.0);
   return 1;
-}
-
-//------------------------------------------------------------------------------
-void vtkMiddleburyImporter::Fail(vtkLightField* output,
-  unsigned long errorCode,
-  const std::string& message)
-{
-  lfd::io::ClearLightField(output);
-  this->SetErrorCode(errorCode);
-  this->ErrorMessage = message;
-  vtkErrorMacro(<< message);
 }
 
 //------------------------------------------------------------------------------

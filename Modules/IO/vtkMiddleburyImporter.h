@@ -64,12 +64,6 @@ public:
   vtkBooleanMacro(FitRigCylinder, bool);
   ///@}
 
-  /**
-   * The text of the last error (one line naming file and line), or an empty
-   * string after a successful import.
-   */
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
-
 protected:
   vtkMiddleburyImporter();
   ~vtkMiddleburyImporter() override;
@@ -87,10 +81,6 @@ protected:
 private:
   vtkMiddleburyImporter(const vtkMiddleburyImporter&) = delete;
   void operator=(const vtkMiddleburyImporter&) = delete;
-
-  void Fail(vtkLightField* output, unsigned long errorCode, const std::string& message);
-
-  std::string ErrorMessage;
 };
 
 #endif
