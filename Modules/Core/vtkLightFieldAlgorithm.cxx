@@ -114,6 +114,21 @@ int vtkLightFieldAlgorithm::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+void vtkLightFieldAlgorithm::SetOutputLayout(vtkInformationVector* outputVector,
+  int width,
+  int height,
+  int views)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int extent[6] = { 0, width - 1, 0, height - 1, 0, views - 1 };
+  const double spacing[3] = { 1.0, 1.0, 1.0 };
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+}
+
+//------------------------------------------------------------------------------
 void vtkLightFieldAlgorithm::Fail(vtkLightField* output,
   unsigned long errorCode,
   const std::string& message)

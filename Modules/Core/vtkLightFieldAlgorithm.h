@@ -80,6 +80,13 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   /**
+   * REQUEST_INFORMATION for output port 0: the whole extent of `views` views
+   * of width x height pixels, unit spacing, zero origin (vtkLightField's
+   * layout).
+   */
+  static void SetOutputLayout(vtkInformationVector* outputVector, int width, int height, int views);
+
+  /**
    * Records a failure: empties `output` (no points, an empty rig, no
    * provenance; may be null), sets the error code and message and reports
    * the message with vtkErrorMacro.

@@ -3,7 +3,6 @@
 #include "lfdFileUtilities.h"
 #include "lfdImageFiles.h"
 #include "lfdJsonFields.h"
-#include "lfdLightFieldOutput.h"
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
@@ -321,7 +320,7 @@ int vtkLightFieldReader::RequestInformation(vtkInformation*,
     this->Fail(output, errorCode, error);
     return 0;
   }
-  lfd::io::SetLightFieldInformation(
+  SetOutputLayout(
     outputs, manifest.Width, manifest.Height, static_cast<int>(manifest.Views.size()));
   return 1;
 }

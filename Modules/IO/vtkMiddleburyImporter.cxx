@@ -3,7 +3,6 @@
 #include "lfdFileUtilities.h"
 #include "lfdImageFiles.h"
 #include "lfdJsonFields.h"
-#include "lfdLightFieldOutput.h"
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
@@ -225,8 +224,7 @@ int vtkMiddleburyImporter::RequestInformation(vtkInformation*,
         entries[0].Image + ": " + error);
     return 0;
   }
-  lfd::io::SetLightFieldInformation(
-    outputs, header.Width, header.Height, static_cast<int>(entries.size()));
+  SetOutputLayout(outputs, header.Width, header.Height, static_cast<int>(entries.size()));
   return 1;
 }
 

@@ -195,13 +195,7 @@ int vtkLightFieldCapture::RequestInformation(vtkInformation*,
       : this->NumberOfRows;
     views = rows * this->ViewsPerRing;
   }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  const int extent[6] = { 0, width - 1, 0, height - 1, 0, views - 1 };
-  const double origin[3] = { 0.0, 0.0, 0.0 };
-  const double spacing[3] = { 1.0, 1.0, 1.0 };
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
-  outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
-  outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  SetOutputLayout(outputVector, width, height, views);
   return 1;
 }
 
