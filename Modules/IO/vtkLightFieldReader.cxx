@@ -253,7 +253,14 @@ bool LoadManifest(const char* fileName,
 }
 
 //------------------------------------------------------------------------------
+struct vtkLightFieldReader::Internals
+{
+  Manifest Parsed;
+};
+
+//------------------------------------------------------------------------------
 vtkLightFieldReader::vtkLightFieldReader()
+  : Internal(new Internals)
 {
   this->ReadAllPasses();
 }
@@ -312,7 +319,8 @@ int vtkLightFieldReader::RequestInformation(vtkInformation*,
 {
   this->ClearError();
   vtkLightField* output = vtkLightField::GetData(outputs);
-  Manifest manifest;
+  Manifest& manifest = this->Internal->Parsed;
+  manifest = Manifest();
   unsigned long errorCode = vtkErrorCode::NoError;
   std::string error;
   if (!LoadManifest(this->FileName, manifest, errorCode, error))
@@ -332,14 +340,9 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
 {
   this->ClearError();
   vtkLightField* output = vtkLightField::GetData(outputs);
-  Manifest manifest;
+  const Manifest& manifest = this->Internal->Parsed;
   unsigned long errorCode = vtkErrorCode::NoError;
   std::string error;
-  if (!LoadManifest(this->FileName, manifest, errorCode, error))
-  {
-    this->Fail(output, errorCode, error);
-    return 0;
-  }
 
   const int views = static_cast<int>(manifest.Views.size());
   output->Initialize();

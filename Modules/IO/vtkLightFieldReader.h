@@ -33,6 +33,8 @@
 #include "vtkLightField.h" // For NUMBER_OF_PASSES
 #include "vtkLightFieldAlgorithm.h"
 
+#include <memory> // For std::unique_ptr
+
 #include <string> // For std::string
 
 class LFDIO_EXPORT vtkLightFieldReader : public vtkLightFieldAlgorithm
@@ -80,6 +82,9 @@ protected:
 private:
   vtkLightFieldReader(const vtkLightFieldReader&) = delete;
   void operator=(const vtkLightFieldReader&) = delete;
+
+  struct Internals; // what RequestInformation parsed, for RequestData
+  std::unique_ptr<Internals> Internal;
 };
 
 #endif

@@ -192,7 +192,16 @@ bool LoadParFile(const char* fileName,
 }
 
 //------------------------------------------------------------------------------
-vtkMiddleburyImporter::vtkMiddleburyImporter() = default;
+struct vtkMiddleburyImporter::Internals
+{
+  std::vector<ParEntry> Parsed;
+};
+
+//------------------------------------------------------------------------------
+vtkMiddleburyImporter::vtkMiddleburyImporter()
+  : Internal(new Internals)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkMiddleburyImporter::~vtkMiddleburyImporter()
@@ -207,7 +216,8 @@ int vtkMiddleburyImporter::RequestInformation(vtkInformation*,
 {
   this->ClearError();
   vtkLightField* output = vtkLightField::GetData(outputs);
-  std::vector<ParEntry> entries;
+  std::vector<ParEntry>& entries = this->Internal->Parsed;
+  entries = std::vector<ParEntry>();
   unsigned long errorCode = vtkErrorCode::NoError;
   std::string error;
   if (!LoadParFile(this->FileName, entries, errorCode, error))
@@ -235,14 +245,9 @@ int vtkMiddleburyImporter::RequestData(vtkInformation*,
 {
   this->ClearError();
   vtkLightField* output = vtkLightField::GetData(outputs);
-  std::vector<ParEntry> entries;
+  const std::vector<ParEntry>& entries = this->Internal->Parsed;
   unsigned long errorCode = vtkErrorCode::NoError;
   std::string error;
-  if (!LoadParFile(this->FileName, entries, errorCode, error))
-  {
-    this->Fail(output, errorCode, error);
-    return 0;
-  }
   const std::string parFile = this->FileName;
 
   const int views = static_cast<int>(entries.size());

@@ -36,6 +36,8 @@
 #include "lfdIOModule.h" // For export macro
 #include "vtkLightFieldAlgorithm.h"
 
+#include <memory> // For std::unique_ptr
+
 #include <string> // For std::string
 
 class vtkLightField;
@@ -81,6 +83,9 @@ protected:
 private:
   vtkMiddleburyImporter(const vtkMiddleburyImporter&) = delete;
   void operator=(const vtkMiddleburyImporter&) = delete;
+
+  struct Internals; // what RequestInformation parsed, for RequestData
+  std::unique_ptr<Internals> Internal;
 };
 
 #endif
