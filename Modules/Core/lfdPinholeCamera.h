@@ -39,6 +39,26 @@ struct PinholeCamera
     return camera;
   }
 
+  /**
+   * A camera at `position` looking along `forward` with its image "up" as
+   * close to `up` as the view allows (camera rows: right, down, forward).
+   */
+  static PinholeCamera LookAt(const glm::dmat3& k,
+    const glm::dvec3& position,
+    glm::dvec3 forward,
+    glm::dvec3 up)
+  {
+    forward = glm::normalize(forward);
+    up = glm::normalize(up - glm::dot(up, forward) * forward);
+    const glm::dvec3 down = -up;
+    const glm::dvec3 right = glm::cross(down, forward);
+    PinholeCamera camera;
+    camera.K = k;
+    camera.R = glm::transpose(glm::dmat3(right, down, forward)); // rows
+    camera.t = -(camera.R * position);
+    return camera;
+  }
+
   glm::dvec3 Center() const { return -glm::transpose(this->R) * this->t; }
 
   /// Unit viewing direction (camera +z) in world space.

@@ -251,19 +251,6 @@ void vtkCameraRig::CameraToPinhole(vtkCamera* camera,
   double R[9],
   double t[3])
 {
-  const glm::dvec3 position = ToVec(camera->GetPosition());
-  const glm::dvec3 forward = glm::normalize(ToVec(camera->GetFocalPoint()) - position);
-  glm::dvec3 up = ToVec(camera->GetViewUp());
-  up = glm::normalize(up - glm::dot(up, forward) * forward);
-  const glm::dvec3 down = -up;
-  const glm::dvec3 right = glm::cross(down, forward);
-  glm::dmat3 rotation;
-  for (int col = 0; col < 3; ++col)
-  {
-    rotation[col][0] = right[col];
-    rotation[col][1] = down[col];
-    rotation[col][2] = forward[col];
-  }
   const double fy =
     0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(camera->GetViewAngle()));
   const double* wc = camera->GetWindowCenter();
@@ -272,9 +259,12 @@ void vtkCameraRig::CameraToPinhole(vtkCamera* camera,
   intrinsics[1][1] = fy;
   intrinsics[2][0] = 0.5 * width * (1.0 - wc[0]) - 0.5;
   intrinsics[2][1] = 0.5 * height * (1.0 + wc[1]) - 0.5;
-  ToRowMajor(intrinsics, K);
-  ToRowMajor(rotation, R);
-  FromVec(-(rotation * position), t);
+  const glm::dvec3 position = ToVec(camera->GetPosition());
+  const lfd::PinholeCamera pinhole = lfd::PinholeCamera::LookAt(
+    intrinsics, position, ToVec(camera->GetFocalPoint()) - position, ToVec(camera->GetViewUp()));
+  ToRowMajor(pinhole.K, K);
+  ToRowMajor(pinhole.R, R);
+  FromVec(pinhole.t, t);
 }
 
 //------------------------------------------------------------------------------
@@ -299,7 +289,11 @@ void vtkCameraRig::MakeCylinder(const double center[3],
   const glm::dvec3 refX = ReferenceDirection(a);
   const glm::dvec3 refY = glm::cross(a, refX);
   const double fy = 0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(viewAngle));
-  const double K[9] = { fy, 0.0, 0.5 * (width - 1), 0.0, fy, 0.5 * (height - 1), 0.0, 0.0, 1.0 };
+  glm::dmat3 intrinsics(1.0);
+  intrinsics[0][0] = fy;
+  intrinsics[1][1] = fy;
+  intrinsics[2][0] = 0.5 * (width - 1);
+  intrinsics[2][1] = 0.5 * (height - 1);
   this->SetImageSize(width, height);
   this->SetNumberOfViews(viewsPerRing * rows);
   for (int r = 0; r < rows; ++r)
@@ -309,18 +303,12 @@ void vtkCameraRig::MakeCylinder(const double center[3],
     {
       const double phi = lfd::TwoPi * k / viewsPerRing;
       const glm::dvec3 position = target + radius * (std::cos(phi) * refX + std::sin(phi) * refY);
-      const glm::dvec3 forward = glm::normalize(target - position);
-      const glm::dvec3 down = -a;
-      const glm::dvec3 right = glm::cross(down, forward);
-      const double R[9] = {
-        right.x, right.y, right.z, down.x, down.y, down.z, forward.x, forward.y, forward.z
-      };
-      const double t[3] = {
-        -glm::dot(right, position), -glm::dot(down, position), -glm::dot(forward, position)
-      };
-      this->SetView(r * viewsPerRing + k, K, R, t);
+      this->Internal->Cameras[r * viewsPerRing + k] =
+        lfd::PinholeCamera::LookAt(intrinsics, position, target - position, a);
     }
   }
+  this->ClearFit();
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------
