@@ -330,17 +330,8 @@ void OrbitCamera(vtkCameraRig* rig,
 {
   const double* axis = rig->GetAxis();
   const double* center = rig->GetCenter();
-  double first[3];
-  rig->GetCameraCenter(0, first);
-  double x[3] = { first[0] - center[0], first[1] - center[1], first[2] - center[2] };
-  const double along = vtkMath::Dot(x, axis);
-  for (int c = 0; c < 3; ++c)
-  {
-    x[c] -= along * axis[c];
-  }
-  vtkMath::Normalize(x);
-  double y[3];
-  vtkMath::Cross(axis, x, y);
+  double x[3], y[3];
+  rig->GetAzimuthFrame(x, y);
   const double r = scale * rig->GetRadius();
   double position[3], focal[3];
   for (int c = 0; c < 3; ++c)

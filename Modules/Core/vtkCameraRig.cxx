@@ -525,6 +525,13 @@ int vtkCameraRig::GetDuplicateOf(int i) const
 }
 
 //------------------------------------------------------------------------------
+void vtkCameraRig::GetAzimuthFrame(double zero[3], double quarter[3]) const
+{
+  FromVec(this->Internal->RefX, zero);
+  FromVec(this->Internal->RefY, quarter);
+}
+
+//------------------------------------------------------------------------------
 int vtkCameraRig::GetNumberOfRows() const
 {
   return this->Internal->Fitted ? static_cast<int>(this->Internal->RowHeights.size()) : 0;

@@ -198,6 +198,12 @@ public:
   int GetDuplicateOf(int i) const;
   ///@}
 
+  /**
+   * Unit directions of azimuth 0 (towards view 0, orthogonal to the axis)
+   * and azimuth pi/2 (Axis x the first), after FitCylinder().
+   */
+  void GetAzimuthFrame(double zero[3], double quarter[3]) const;
+
   ///@{
   /**
    * Rows found by FitCylinder() and their mean heights.

@@ -154,6 +154,10 @@ int TestCameraRig(int, char*[])
     c0[2],
     3.0);
 
+  double zero[3], quarter[3];
+  rows->GetAzimuthFrame(zero, quarter);
+  Check(zero[2] > 1.0 - 1e-12 && quarter[0] > 1.0 - 1e-12, "azimuth frame +Z, +X", zero[2], 1.0);
+
   // A degenerate rig is refused with an error.
   vtkNew<vtkCameraRig> line;
   line->SetNumberOfViews(3);
