@@ -3,6 +3,8 @@
 #   Utilities/run.sh demo [lfd demo options]   set up, build, run the demo
 #   Utilities/run.sh test [ctest options]      set up, build, run every test
 # Both run under xvfb-run: VTK's OpenGL needs an X server (Mesa llvmpipe).
+# -noreset: by default Xvfb resets when its last client disconnects, and a
+# test that connects during that reset aborts ("bad X server connection").
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -13,11 +15,11 @@ shift || true
 case "$what" in
   demo)
     "$here/Utilities/setup.sh"
-    exec xvfb-run -a -s "-screen 0 1280x1024x24" "$build/bin/lfd" demo "$@"
+    exec xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$build/bin/lfd" demo "$@"
     ;;
   test)
     "$here/Utilities/setup.sh"
-    exec xvfb-run -a -s "-screen 0 1280x1024x24" \
+    exec xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
       ctest --test-dir "$build" --output-on-failure "$@"
     ;;
   *)
