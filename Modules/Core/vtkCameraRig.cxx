@@ -121,13 +121,19 @@ int vtkCameraRig::GetNumberOfViews() const
 //------------------------------------------------------------------------------
 void vtkCameraRig::SetView(int i, const double K[9], const double R[9], const double t[3])
 {
+  this->SetView(i, lfd::PinholeCamera::FromRowMajor(K, R, t));
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::SetView(int i, const lfd::PinholeCamera& camera)
+{
   if (i < 0 || i >= this->GetNumberOfViews())
   {
     vtkErrorMacro(
       "SetView: view " << i << " out of range [0, " << this->GetNumberOfViews() << ").");
     return;
   }
-  this->Internal->Cameras[i] = lfd::PinholeCamera::FromRowMajor(K, R, t);
+  this->Internal->Cameras[i] = camera;
   this->ClearFit();
   this->Modified();
 }
@@ -303,12 +309,10 @@ void vtkCameraRig::MakeCylinder(const double center[3],
     {
       const double phi = lfd::TwoPi * k / viewsPerRing;
       const glm::dvec3 position = target + radius * (std::cos(phi) * refX + std::sin(phi) * refY);
-      this->Internal->Cameras[r * viewsPerRing + k] =
-        lfd::PinholeCamera::LookAt(intrinsics, position, target - position, a);
+      this->SetView(r * viewsPerRing + k,
+        lfd::PinholeCamera::LookAt(intrinsics, position, target - position, a));
     }
   }
-  this->ClearFit();
-  this->Modified();
 }
 
 //------------------------------------------------------------------------------

@@ -228,10 +228,14 @@ public:
   void DeepCopy(vtkCameraRig* source);
 
 #ifndef __VTK_WRAP__
+  ///@{
   /**
-   * The pinhole camera of view `i` (kernel type).
+   * The pinhole camera of view `i` (kernel type). Setting it clears the
+   * cylinder fit.
    */
+  void SetView(int i, const lfd::PinholeCamera& camera);
   const lfd::PinholeCamera& GetCamera(int i) const;
+  ///@}
 
   /**
    * The sampling layout over the views that are not duplicates and not in

@@ -30,23 +30,13 @@ void SetLookAt(vtkCameraRig* rig,
   const double target[3],
   const double up[3])
 {
-  double z[3] = { target[0] - position[0], target[1] - position[1], target[2] - position[2] };
-  vtkMath::Normalize(z);
-  double y[3] = { -up[0], -up[1], -up[2] };
-  const double d = vtkMath::Dot(y, z);
-  for (int c = 0; c < 3; ++c)
-  {
-    y[c] -= d * z[c];
-  }
-  vtkMath::Normalize(y);
-  double x[3];
-  vtkMath::Cross(y, z, x);
-  const double K[9] = { 500, 0, 319.5, 0, 500, 239.5, 0, 0, 1 };
-  const double R[9] = { x[0], x[1], x[2], y[0], y[1], y[2], z[0], z[1], z[2] };
-  const double t[3] = {
-    -vtkMath::Dot(x, position), -vtkMath::Dot(y, position), -vtkMath::Dot(z, position)
-  };
-  rig->SetView(view, K, R, t);
+  glm::dmat3 K(1.0);
+  K[0][0] = K[1][1] = 500.0;
+  K[2][0] = 319.5;
+  K[2][1] = 239.5;
+  const glm::dvec3 p(position[0], position[1], position[2]);
+  const glm::dvec3 f = glm::dvec3(target[0], target[1], target[2]) - p;
+  rig->SetView(view, lfd::PinholeCamera::LookAt(K, p, f, glm::dvec3(up[0], up[1], up[2])));
 }
 }
 
