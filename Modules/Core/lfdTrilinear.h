@@ -1,0 +1,132 @@
+/**
+ * @file   lfdTrilinear.h
+ * @brief  The trilinear box map of Chen, Ofek, Shum and Levoy 2005 (Sec. 5, Eq. 2).
+ *
+ * A box is a hexahedron of 8 corners in VTK's corner order: corners 0-3 are
+ * the bottom face counter-clockwise, 4-7 the top face above them, so corner
+ * i sits at the parametric point
+ *
+ *   0:(0,0,0) 1:(1,0,0) 2:(1,1,0) 3:(0,1,0) 4:(0,0,1) 5:(1,0,1) 6:(1,1,1) 7:(0,1,1).
+ *
+ * The map is p(u,v,w) = sum_i B_i(u,v,w) c_i with the 8 trilinear basis
+ * functions B_i. A deformation sends the rest box to the deformed box at
+ * the same (u,v,w).
+ *
+ * Plain C++17 + GLM, no VTK.
+ */
+#ifndef lfdTrilinear_h
+#define lfdTrilinear_h
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lfd
+{
+
+/// Parametric coordinates of the 8 corners, VTK hexahedron order.
+constexpr int HexCorner[8][3] = { { 0, 0, 0 },
+  { 1, 0, 0 },
+  { 1, 1, 0 },
+  { 0, 1, 0 },
+  { 0, 0, 1 },
+  { 1, 0, 1 },
+  { 1, 1, 1 },
+  { 0, 1, 1 } };
+
+struct Hexahedron
+{
+  glm::dvec3 Corners[8];
+};
+
+/// Eq. (2): the point of the box at parametric coordinates uvw.
+inline glm::dvec3 TrilinearMap(const Hexahedron& box, const glm::dvec3& uvw)
+{
+  glm::dvec3 p(0.0);
+  for (int i = 0; i < 8; ++i)
+  {
+    const double bu = HexCorner[i][0] ? uvw.x : 1.0 - uvw.x;
+    const double bv = HexCorner[i][1] ? uvw.y : 1.0 - uvw.y;
+    const double bw = HexCorner[i][2] ? uvw.z : 1.0 - uvw.z;
+    p += (bu * bv * bw) * box.Corners[i];
+  }
+  return p;
+}
+
+/// Jacobian d p / d (u,v,w) of the map; column k is the derivative along k.
+inline glm::dmat3 TrilinearJacobian(const Hexahedron& box, const glm::dvec3& uvw)
+{
+  glm::dmat3 jacobian(0.0);
+  for (int i = 0; i < 8; ++i)
+  {
+    const int a = HexCorner[i][0], b = HexCorner[i][1], c = HexCorner[i][2];
+    const double bu = a ? uvw.x : 1.0 - uvw.x;
+    const double bv = b ? uvw.y : 1.0 - uvw.y;
+    const double bw = c ? uvw.z : 1.0 - uvw.z;
+    const double du = a ? 1.0 : -1.0;
+    const double dv = b ? 1.0 : -1.0;
+    const double dw = c ? 1.0 : -1.0;
+    jacobian[0] += (du * bv * bw) * box.Corners[i];
+    jacobian[1] += (bu * dv * bw) * box.Corners[i];
+    jacobian[2] += (bu * bv * dw) * box.Corners[i];
+  }
+  return jacobian;
+}
+
+/// Length of the box's longest edge-spanning diagonal: the scale for tolerances.
+inline double BoxSize(const Hexahedron& box)
+{
+  return std::max(
+    glm::distance(box.Corners[0], box.Corners[6]), glm::distance(box.Corners[1], box.Corners[7]));
+}
+
+/**
+ * Inverse of the map by Newton's method from `uvw` (in: the start, out: the
+ * solution). Returns true when |p(uvw) - point| fell below `tolerance` x the
+ * box size. The solution may lie outside [0,1]^3: the caller decides what
+ * "inside" means (see Contains).
+ */
+inline bool InvertTrilinear(const Hexahedron& box,
+  const glm::dvec3& point,
+  glm::dvec3& uvw,
+  double tolerance = 1e-12,
+  int iterations = 30)
+{
+  const double limit = tolerance * std::max(BoxSize(box), 1e-300);
+  for (int k = 0; k < iterations; ++k)
+  {
+    const glm::dvec3 residual = TrilinearMap(box, uvw) - point;
+    if (glm::length(residual) <= limit)
+    {
+      return true;
+    }
+    const glm::dmat3 jacobian = TrilinearJacobian(box, uvw);
+    const double det = glm::determinant(jacobian);
+    if (!(std::abs(det) > 0.0))
+    {
+      return false;
+    }
+    uvw -= glm::inverse(jacobian) * residual;
+  }
+  return glm::length(TrilinearMap(box, uvw) - point) <= limit;
+}
+
+/// True when `point` maps back inside the box (parametric slack `epsilon`).
+inline bool Contains(const Hexahedron& box,
+  const glm::dvec3& point,
+  glm::dvec3& uvw,
+  double epsilon = 1e-9)
+{
+  uvw = glm::dvec3(0.5);
+  if (!InvertTrilinear(box, point, uvw))
+  {
+    return false;
+  }
+  return uvw.x >= -epsilon && uvw.x <= 1.0 + epsilon && uvw.y >= -epsilon &&
+    uvw.y <= 1.0 + epsilon && uvw.z >= -epsilon && uvw.z <= 1.0 + epsilon;
+}
+
+} // namespace lfd
+
+#endif
