@@ -1,0 +1,387 @@
+/**
+ * @file   lfdRayWarp.h
+ * @brief  The exact ray warp of Chen, Ofek, Shum and Levoy 2005 (Sec. 5).
+ *
+ * A view ray in *deformed* space crosses deformed boxes. Inside one box the
+ * warped ray is the straight rest-space line through the rest images of the
+ * points where the view ray enters and leaves the box (Sec. 5). The paper
+ * found those points with a rasterised look-up table; here they are exact:
+ * the faces of a trilinear box are bilinear patches, the ray is intersected
+ * with each face (a quadratic in one patch parameter, Ramsey, Potter and
+ * Hansen 2004; Reshetov 2019), and a hit at patch parameters (s,t) on face k
+ * is the box parametric point FaceToBox(k, (s,t)), whose rest image is
+ * TrilinearMap(rest, uvw) (DESIGN.md section 4.2).
+ *
+ * A twisted box is not convex, so a ray can enter and leave it several
+ * times; WarpRayThroughBox returns every interval.
+ *
+ * Faces follow VTK's hexahedron face numbering: 0 is u = 0, 1 is u = 1,
+ * 2 is v = 0, 3 is v = 1, 4 is w = 0, 5 is w = 1. On each face the patch
+ * parameter s runs along the first free box axis and t along the second
+ * (face 0: s = v, t = w; face 2: s = u, t = w; face 4: s = u, t = v).
+ *
+ * Plain C++17 + GLM, no VTK.
+ */
+#ifndef lfdRayWarp_h
+#define lfdRayWarp_h
+
+#include "lfdTrilinear.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lfd
+{
+
+/// A ray / patch hit: ray parameter T and patch parameters ST = (s,t).
+struct PatchHit
+{
+  double T;
+  glm::dvec2 ST;
+};
+
+/// Slack on the patch parameters, so that a ray through a patch edge is
+/// reported by both patches sharing the edge rather than by neither.
+constexpr double PatchParameterSlack = 1e-9;
+
+namespace detail
+{
+/// a*b - c*d without the cancellation of the naive form (Kahan's fma trick).
+inline double DifferenceOfProducts(double a, double b, double c, double d)
+{
+  const double cd = c * d;
+  const double error = std::fma(-c, d, cd);
+  return std::fma(a, b, -cd) + error;
+}
+
+/**
+ * Hits of the ray o + T d with the patch, solving first for s. For a fixed s
+ * the patch is the segment pa(s) + t (pb(s) - pa(s)), and the ray meets
+ * that line only when the two are coplanar:
+ *
+ *   f(s) = (pa(s) - o) . ((pb(s) - pa(s)) x d) = A s^2 + B s + C = 0
+ *
+ * (Reshetov 2019, Ray Tracing Gems ch. 8). Each root gives t and T as the
+ * point where the two lines meet. Returns -1 when f vanishes identically
+ * (every fixed-s line is coplanar with the ray: the ray is parallel to all
+ * of them, or lies in the surface), so s is undetermined and the caller
+ * solves for t instead; else returns the number of hits.
+ */
+inline int IntersectPatchAlongS(const glm::dvec3& p00,
+  const glm::dvec3& p10,
+  const glm::dvec3& p01,
+  const glm::dvec3& p11,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  PatchHit hits[2])
+{
+  const glm::dvec3 q = p00 - o;
+  const glm::dvec3 e10 = p10 - p00;
+  const glm::dvec3 e00 = p01 - p00;                   // the t-line at s = 0
+  const glm::dvec3 twist = (p11 - p10) - (p01 - p00); // zero for a parallelogram
+  const glm::dvec3 n0 = glm::cross(e00, d);
+  const glm::dvec3 nTwist = glm::cross(twist, d);
+  const double a = glm::dot(e10, nTwist);
+  const double b = glm::dot(q, nTwist) + glm::dot(e10, n0);
+  const double c = glm::dot(q, n0);
+
+  const double scale =
+    (glm::length(q) + glm::length(e10)) * (glm::length(e00) + glm::length(twist)) * glm::length(d);
+  const double vanishing = 1e-12 * scale;
+  if (std::abs(a) <= vanishing && std::abs(b) <= vanishing && std::abs(c) <= vanishing)
+  {
+    return -1;
+  }
+
+  // Roots in the cancellation-free form q/a, c/q. A root is only computed
+  // when its magnitude is bounded, so a tiny a (a near-parallelogram) or a
+  // tiny qq never turns into a division by almost zero.
+  const double discriminant = DifferenceOfProducts(b, b, 4.0 * a, c);
+  if (discriminant < 0.0)
+  {
+    return 0;
+  }
+  const double qq = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
+  double roots[2];
+  int nRoots = 0;
+  if (std::abs(qq) <= 2.0 * std::abs(a) && a != 0.0)
+  {
+    roots[nRoots++] = qq / a;
+  }
+  if (std::abs(c) <= 2.0 * std::abs(qq) && qq != 0.0)
+  {
+    const double root = c / qq;
+    if (nRoots == 0 || root != roots[0])
+    {
+      roots[nRoots++] = root;
+    }
+  }
+
+  int nHits = 0;
+  for (int k = 0; k < nRoots; ++k)
+  {
+    const double s = roots[k];
+    if (!(s >= -PatchParameterSlack && s <= 1.0 + PatchParameterSlack))
+    {
+      continue;
+    }
+    // The ray o + T d meets the line pa + t e where T d - t e = pa - o; with
+    // m = d x e, crossing with e and with d isolates T and t.
+    const glm::dvec3 pa = p00 + s * e10;
+    const glm::dvec3 e = (p01 + s * (p11 - p01)) - pa;
+    const glm::dvec3 w0 = pa - o;
+    const glm::dvec3 m = glm::cross(d, e);
+    const double mm = glm::dot(m, m);
+    // This fixed-s line is parallel to the ray: it either misses it or
+    // contains it (a grazing line contact); neither is a crossing.
+    if (!(mm > 1e-20 * glm::dot(e, e) * glm::dot(d, d)))
+    {
+      continue;
+    }
+    const double tNumerator = glm::dot(glm::cross(w0, d), m);
+    if (std::abs(tNumerator) > 2.0 * mm)
+    {
+      continue;
+    }
+    const double t = tNumerator / mm;
+    if (!(t >= -PatchParameterSlack && t <= 1.0 + PatchParameterSlack))
+    {
+      continue;
+    }
+    hits[nHits].T = glm::dot(glm::cross(w0, e), m) / mm;
+    hits[nHits].ST = glm::dvec2(s, t);
+    ++nHits;
+  }
+  return nHits;
+}
+} // namespace detail
+
+/**
+ * Intersection of the ray o + T d with the bilinear patch
+ *
+ *   P(s,t) = (1-s)(1-t) p00 + s(1-t) p10 + (1-s)t p01 + st p11.
+ *
+ * Writes every hit with s,t in [0,1] (within PatchParameterSlack, values
+ * are not clamped) and any T (the caller filters) to `hits`, returns their
+ * number (0, 1 or 2). Planar and parallelogram patches (where the quadratic
+ * degenerates to a linear equation) are handled. A ray that lies in the
+ * patch's surface, or runs parallel to a planar patch, touches it along a
+ * line or not at all and gets no hit.
+ */
+inline int IntersectBilinearPatch(const glm::dvec3& p00,
+  const glm::dvec3& p10,
+  const glm::dvec3& p01,
+  const glm::dvec3& p11,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  PatchHit hits[2])
+{
+  const int n = detail::IntersectPatchAlongS(p00, p10, p01, p11, o, d, hits);
+  if (n >= 0)
+  {
+    return n;
+  }
+  // s is undetermined along the ray; solve for t on the transposed patch.
+  const int nt = detail::IntersectPatchAlongS(p00, p01, p10, p11, o, d, hits);
+  for (int k = 0; k < nt; ++k)
+  {
+    hits[k].ST = glm::dvec2(hits[k].ST.y, hits[k].ST.x);
+  }
+  return std::max(nt, 0);
+}
+
+/// Corners of face k as a patch: p00, p10, p01, p11 (not VTK's cyclic order).
+constexpr int HexFacePatch[6][4] = { { 0, 3, 4, 7 },
+  { 1, 2, 5, 6 },
+  { 0, 1, 4, 5 },
+  { 3, 2, 7, 6 },
+  { 0, 1, 3, 2 },
+  { 4, 5, 7, 6 } };
+
+/// The box parametric point of face `face` at patch parameters `st`.
+inline glm::dvec3 FaceToBox(int face, const glm::dvec2& st)
+{
+  const int axis = face / 2;
+  glm::dvec3 uvw;
+  uvw[axis] = face % 2;
+  uvw[axis == 0 ? 1 : 0] = st.x;
+  uvw[axis == 2 ? 1 : 2] = st.y;
+  return uvw;
+}
+
+/// Rest image of a deformed-space point: the rest map at the deformed map's
+/// inverse. Returns false when the Newton inverse does not converge.
+inline bool WarpPoint(const Hexahedron& rest,
+  const Hexahedron& deformed,
+  const glm::dvec3& point,
+  glm::dvec3& restPoint,
+  glm::dvec3& uvw)
+{
+  uvw = glm::dvec3(0.5);
+  if (!InvertTrilinear(deformed, point, uvw))
+  {
+    return false;
+  }
+  restPoint = TrilinearMap(rest, uvw);
+  return true;
+}
+
+/// One interval of a view ray inside a deformed box, with its warp (Sec. 5).
+struct WarpedSegment
+{
+  double TEnter, TExit;           ///< ray parameters of the deformed entry and exit
+  glm::dvec3 RestEnter, RestExit; ///< their rest-space images: the warped ray
+  glm::dvec3 UvwEnter, UvwExit;   ///< their box parametric coordinates
+};
+
+/// A ray crosses the 6 faces at most 12 times, so the interior of a box is
+/// at most 6 separate intervals of the ray.
+constexpr int MaxWarpedSegments = 6;
+
+/**
+ * Every interval of the ray o + T d, T >= tMin, inside the deformed box,
+ * sorted by T, with the entry and exit points warped into the rest box
+ * (Sec. 5). Writes at most `maxSegments` (MaxWarpedSegments always
+ * suffices) and returns the number written.
+ *
+ * All face hits are sorted and hits closer than 1e-9 x the box size merged
+ * (a ray through an edge or a corner hits 2 or 3 faces at one point); each
+ * stretch between consecutive hits is inside or outside the box as its
+ * midpoint is, and adjacent inside stretches form one interval, so a ray
+ * touching a face from inside is not split. When the point at tMin is inside
+ * the box the first interval starts there, warped with the Newton inverse.
+ * Intervals shorter than 1e-7 x the box size (a ray grazing a face or an
+ * edge) are dropped. A ray lying in a planar face is on the closed box and
+ * gets the interval along the face.
+ */
+inline int WarpRayThroughBox(const Hexahedron& rest,
+  const Hexahedron& deformed,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  double tMin,
+  WarpedSegment* out,
+  int maxSegments)
+{
+  const double size = BoxSize(deformed);
+  const double speed = glm::length(d);
+  if (!(size > 0.0) || !(speed > 0.0))
+  {
+    return 0;
+  }
+  const double mergeT = 1e-9 * size / speed;
+  const double shortestT = 1e-7 * size / speed;
+
+  struct Crossing
+  {
+    double T;
+    glm::dvec3 Uvw;
+    bool OnFace; // false for the point at tMin, whose uvw is not known yet
+  };
+  Crossing crossings[13];
+  int n = 0;
+  for (int face = 0; face < 6; ++face)
+  {
+    const int* c = HexFacePatch[face];
+    PatchHit hits[2];
+    const int nHits = IntersectBilinearPatch(deformed.Corners[c[0]],
+      deformed.Corners[c[1]],
+      deformed.Corners[c[2]],
+      deformed.Corners[c[3]],
+      o,
+      d,
+      hits);
+    for (int k = 0; k < nHits; ++k)
+    {
+      if (hits[k].T >= tMin - mergeT)
+      {
+        crossings[n++] = {
+          std::max(hits[k].T, tMin), glm::clamp(FaceToBox(face, hits[k].ST), 0.0, 1.0), true
+        };
+      }
+    }
+  }
+  std::sort(
+    crossings, crossings + n, [](const Crossing& a, const Crossing& b) { return a.T < b.T; });
+
+  // Merge coincident hits; the point at tMin goes first unless a hit is there.
+  Crossing merged[13];
+  int m = 0;
+  if (std::isfinite(tMin) && (n == 0 || crossings[0].T > tMin + mergeT))
+  {
+    merged[m++] = { tMin, glm::dvec3(0.5), false };
+  }
+  for (int k = 0; k < n; ++k)
+  {
+    if (m == 0 || crossings[k].T > merged[m - 1].T + mergeT)
+    {
+      merged[m++] = crossings[k];
+    }
+  }
+
+  int written = 0;
+  int k = 0;
+  while (k + 1 < m && written < maxSegments)
+  {
+    // Extend the run of inside stretches starting at crossing k.
+    int last = k;
+    glm::dvec3 firstMidUvw(0.5);
+    for (int j = k; j + 1 < m; ++j)
+    {
+      const Crossing& a = merged[j];
+      const Crossing& b = merged[j + 1];
+      // Newton from the box centre can converge to a preimage outside
+      // [0,1]^3 (it does near the boundary of a strongly twisted box), so
+      // start from the parametric midpoint of the bounding hits.
+      glm::dvec3 uvw = a.OnFace ? 0.5 * (a.Uvw + b.Uvw) : b.Uvw;
+      const glm::dvec3 mid = o + (0.5 * (a.T + b.T)) * d;
+      const bool inside = (InvertTrilinear(deformed, mid, uvw) &&
+                            glm::all(glm::greaterThanEqual(uvw, glm::dvec3(-1e-9))) &&
+                            glm::all(glm::lessThanEqual(uvw, glm::dvec3(1.0 + 1e-9)))) ||
+        Contains(deformed, mid, uvw);
+      if (!inside)
+      {
+        break;
+      }
+      if (j == k)
+      {
+        firstMidUvw = uvw;
+      }
+      last = j + 1;
+    }
+    if (last == k)
+    {
+      ++k;
+      continue;
+    }
+    Crossing enter = merged[k];
+    const Crossing& exit = merged[last];
+    k = last;
+    if (!enter.OnFace)
+    {
+      enter.Uvw = firstMidUvw;
+      if (!InvertTrilinear(deformed, o + enter.T * d, enter.Uvw))
+      {
+        continue;
+      }
+      enter.Uvw = glm::clamp(enter.Uvw, 0.0, 1.0);
+    }
+    if (exit.T - enter.T < shortestT)
+    {
+      continue;
+    }
+    WarpedSegment& segment = out[written++];
+    segment.TEnter = enter.T;
+    segment.TExit = exit.T;
+    segment.UvwEnter = enter.Uvw;
+    segment.UvwExit = exit.Uvw;
+    segment.RestEnter = TrilinearMap(rest, enter.Uvw);
+    segment.RestExit = TrilinearMap(rest, exit.Uvw);
+  }
+  return written;
+}
+
+} // namespace lfd
+
+#endif
