@@ -331,9 +331,10 @@ inline int WarpRayThroughBox(const Hexahedron& rest,
     {
       const Crossing& a = merged[j];
       const Crossing& b = merged[j + 1];
-      // Newton from the box centre can converge to a preimage outside
-      // [0,1]^3 (it does near the boundary of a strongly twisted box), so
-      // start from the parametric midpoint of the bounding hits.
+      // Start Newton from the parametric midpoint of the bounding hits, which
+      // is close to the answer; from the box centre it may converge to a
+      // preimage outside [0,1]^3 of a strongly deformed box (Contains is the
+      // fallback when the close start fails).
       glm::dvec3 uvw = a.OnFace ? 0.5 * (a.Uvw + b.Uvw) : b.Uvw;
       const glm::dvec3 mid = o + (0.5 * (a.T + b.T)) * d;
       const bool inside = (InvertTrilinear(deformed, mid, uvw) &&
