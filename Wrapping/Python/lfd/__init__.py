@@ -9,4 +9,5 @@ Every public class of the C++ modules is available here::
 from .lfdCore import *  # noqa: F401,F403
 from .lfdIO import *  # noqa: F401,F403
 from .lfdSynthesis import *  # noqa: F401,F403
+from .lfdDeformation import *  # noqa: F401,F403
 from .lfdRendering import *  # noqa: F401,F403

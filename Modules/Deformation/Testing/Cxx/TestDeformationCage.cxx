@@ -1,0 +1,169 @@
+// The cage's data model: shared corners, rest and deformed positions,
+// labels, and InitializeFromGrid() on the grids a scene holds.
+#include "lfdDeformationTestUtilities.h"
+
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <cstdlib>
+
+int TestDeformationCage(int, char*[])
+{
+  using lfdtest::Check;
+  bool ok = true;
+
+  // Two unit boxes side by side along x sharing the face x = 1: 12 points.
+  vtkNew<vtkDeformationCage> cage;
+  vtkIdType a[8];
+  const double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 1 };
+  lfdtest::AddBoxPoints(cage, lo, hi, a);
+  const double far[4][3] = { { 2, 0, 0 }, { 2, 1, 0 }, { 2, 1, 1 }, { 2, 0, 1 } };
+  vtkIdType f[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    f[i] = cage->AddPoint(far[i]);
+  }
+  const vtkIdType b[8] = { a[1], f[0], f[1], a[2], a[5], f[3], f[2], a[6] };
+  const int first = cage->AddBox(a, 3);
+  const int second = cage->AddBox(b, 7);
+  std::printf("points %lld boxes %lld labels %d %d\n",
+    static_cast<long long>(cage->GetNumberOfPoints()),
+    static_cast<long long>(cage->GetNumberOfBoxes()),
+    cage->GetBoxLabel(0),
+    cage->GetBoxLabel(1));
+  ok &= Check(first == 0 && second == 1, "AddBox returns the box index");
+  ok &= Check(cage->GetNumberOfPoints() == 12, "shared corners are shared points (12)");
+  ok &= Check(cage->GetNumberOfBoxes() == 2, "2 boxes");
+  ok &= Check(cage->GetCellType(1) == VTK_HEXAHEDRON, "boxes are VTK_HEXAHEDRON cells");
+  ok &= Check(cage->GetBoxLabel(0) == 3 && cage->GetBoxLabel(1) == 7, "labels 3 and 7");
+  ok &= Check(cage->GetBoxLabel(2) == 0, "label of a missing box is 0");
+  ok &= Check(vtkIntArray::SafeDownCast(cage->GetCellData()->GetArray("Label")) != nullptr,
+    "Label is an int cell array");
+  ok &= Check(vtkDoubleArray::SafeDownCast(cage->GetRestPositions()) != nullptr &&
+      cage->GetRestPositions()->GetNumberOfTuples() == 12,
+    "RestPosition is a double point array, one tuple per point");
+
+  double rest[24], deformed[24];
+  ok &= Check(cage->GetRestCorners(1, rest), "rest corners of box 1");
+  ok &= Check(rest[0] == 1 && rest[3] == 2 && rest[6] == 2 && rest[7] == 1 && rest[20] == 1,
+    "box 1 rest corners in VTK order");
+  ok &= Check(!cage->GetRestCorners(2, rest) && !cage->GetDeformedCorners(-1, deformed),
+    "no corners for a missing box");
+  ok &= Check(!cage->IsDeformed(), "a new cage is at rest");
+  ok &= Check(cage->Validate(), cage->GetErrorMessage());
+
+  // Move the shared corner a[6] = (1,1,1): both boxes see it.
+  const double moved[3] = { 1.25, 1.5, 1.75 };
+  cage->SetDeformedPoint(a[6], moved);
+  ok &= Check(cage->IsDeformed(), "moving a point deforms the cage");
+  double deformedFirst[24];
+  cage->GetDeformedCorners(0, deformedFirst);
+  const bool inFirst =
+    deformedFirst[18] == 1.25 && deformedFirst[19] == 1.5 && deformedFirst[20] == 1.75;
+  cage->GetDeformedCorners(1, deformed);
+  const bool inSecond = deformed[21] == 1.25 && deformed[22] == 1.5 && deformed[23] == 1.75;
+  cage->GetRestCorners(0, rest);
+  std::printf("moved corner: box 0 corner 6 (%g %g %g), box 1 corner 7 (%g %g %g), rest (%g %g "
+              "%g)\n",
+    deformedFirst[18],
+    deformedFirst[19],
+    deformedFirst[20],
+    deformed[21],
+    deformed[22],
+    deformed[23],
+    rest[18],
+    rest[19],
+    rest[20]);
+  ok &= Check(inFirst && inSecond, "the shared corner moves in both boxes");
+  ok &= Check(rest[18] == 1 && rest[19] == 1 && rest[20] == 1, "the rest corner stays");
+  ok &= Check(cage->Validate(), cage->GetErrorMessage());
+  cage->SetPointsToRest();
+  ok &= Check(!cage->IsDeformed(), "SetPointsToRest undoes the deformation");
+  double p[3];
+  cage->GetDeformedPoint(a[6], p);
+  ok &= Check(p[0] == 1 && p[1] == 1 && p[2] == 1, "point back at rest");
+
+  // A scene grid without RestPosition is undeformed; its Label may be any type.
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkPoints> points;
+  for (vtkIdType i = 0; i < 8; ++i)
+  {
+    double x[3];
+    cage->GetDeformedPoint(i, x);
+    points->InsertNextPoint(x);
+  }
+  grid->SetPoints(points);
+  grid->AllocateEstimate(1, 8);
+  grid->InsertNextCell(VTK_HEXAHEDRON, 8, a);
+  vtkNew<vtkUnsignedCharArray> byteLabels;
+  byteLabels->SetName("Label");
+  byteLabels->InsertNextValue(5);
+  grid->GetCellData()->AddArray(byteLabels);
+
+  vtkNew<vtkDeformationCage> fromGrid;
+  fromGrid->InitializeFromGrid(grid);
+  std::printf("from grid: points %lld boxes %lld label %d deformed %d\n",
+    static_cast<long long>(fromGrid->GetNumberOfPoints()),
+    static_cast<long long>(fromGrid->GetNumberOfBoxes()),
+    fromGrid->GetBoxLabel(0),
+    fromGrid->IsDeformed() ? 1 : 0);
+  ok &= Check(
+    fromGrid->GetNumberOfPoints() == 8 && fromGrid->GetNumberOfBoxes() == 1, "the grid is copied");
+  ok &= Check(fromGrid->GetBoxLabel(0) == 5 &&
+      vtkIntArray::SafeDownCast(fromGrid->GetCellData()->GetArray("Label")),
+    "the label becomes an int array");
+  ok &= Check(!fromGrid->IsDeformed() && fromGrid->GetRestPositions() &&
+      fromGrid->GetRestPositions()->GetNumberOfTuples() == 8,
+    "missing RestPosition: rest = points");
+  ok &= Check(fromGrid->Validate(), fromGrid->GetErrorMessage());
+
+  // With a float RestPosition different from the points: deformed, stored as doubles.
+  vtkNew<vtkFloatArray> restPositions;
+  restPositions->SetName("RestPosition");
+  restPositions->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < 8; ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    x[2] -= 0.5;
+    restPositions->InsertNextTuple(x);
+  }
+  grid->GetPointData()->AddArray(restPositions);
+  fromGrid->InitializeFromGrid(grid);
+  fromGrid->GetRestCorners(0, rest);
+  fromGrid->GetDeformedCorners(0, deformed);
+  std::printf("from grid with RestPosition: rest z %g %g, deformed z %g %g\n",
+    rest[2],
+    rest[14],
+    deformed[2],
+    deformed[14]);
+  ok &= Check(fromGrid->IsDeformed(), "RestPosition differs from the points: deformed");
+  ok &= Check(vtkDoubleArray::SafeDownCast(fromGrid->GetRestPositions()) != nullptr,
+    "RestPosition converted to doubles");
+  ok &= Check(rest[2] == -0.5 && rest[14] == 0.5 && deformed[2] == 0 && deformed[14] == 1,
+    "rest and deformed corners read from their arrays");
+  fromGrid->SetPointsToRest();
+  ok &= Check(!fromGrid->IsDeformed(), "SetPointsToRest on a scene cage");
+
+  // The grid given is copied, not shared.
+  points->SetPoint(0, 9, 9, 9);
+  fromGrid->GetDeformedPoint(0, p);
+  ok &= Check(p[0] == 0, "InitializeFromGrid copies");
+
+  fromGrid->InitializeFromGrid(nullptr);
+  ok &= Check(fromGrid->GetNumberOfBoxes() == 0 && fromGrid->GetNumberOfPoints() == 0,
+    "a null grid empties the cage");
+  const double o[3] = { 0, 0, 0 };
+  vtkIdType ids[8];
+  lfdtest::AddBoxPoints(fromGrid, o, hi, ids);
+  ok &=
+    Check(fromGrid->AddBox(ids, 1) == 0 && fromGrid->Validate(), "an emptied cage takes new boxes");
+
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

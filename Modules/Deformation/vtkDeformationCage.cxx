@@ -1,0 +1,564 @@
+#include "vtkDeformationCage.h"
+
+#include "lfdTrilinear.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkLightField.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <array>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkDeformationCage);
+
+namespace
+{
+constexpr const char* RestPositionName = "RestPosition";
+constexpr const char* LabelName = "Label";
+
+lfd::Hexahedron ToHexahedron(const double corners[24])
+{
+  lfd::Hexahedron box;
+  for (int i = 0; i < 8; ++i)
+  {
+    box.Corners[i] = glm::dvec3(corners[3 * i], corners[3 * i + 1], corners[3 * i + 2]);
+  }
+  return box;
+}
+
+std::string FormatPoint(const glm::dvec3& p)
+{
+  std::ostringstream text;
+  text << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+  return text.str();
+}
+
+/**
+ * Why the trilinear map of `box` is not one-to-one, or "" when it is: its
+ * Jacobian determinant must be positive on a 5 x 5 x 5 parametric lattice
+ * (corners, centre, edge and face midpoints, interior points at 1/4 and 3/4).
+ * A positive determinant at the corners alone does not exclude a fold
+ * inside a strongly twisted box; the lattice catches the usual ones.
+ */
+std::string FindFold(const lfd::Hexahedron& box)
+{
+  const double size = lfd::BoxSize(box);
+  // Below this the box is flat (a volume ~1e-12 of its bounding cube).
+  const double flat = 1e-12 * size * size * size;
+  double minimum = VTK_DOUBLE_MAX, maximum = -VTK_DOUBLE_MAX;
+  glm::dvec3 where(0.5);
+  for (int k = 0; k <= 4; ++k)
+  {
+    for (int j = 0; j <= 4; ++j)
+    {
+      for (int i = 0; i <= 4; ++i)
+      {
+        const glm::dvec3 uvw(0.25 * i, 0.25 * j, 0.25 * k);
+        const double det = glm::determinant(lfd::TrilinearJacobian(box, uvw));
+        if (det < minimum)
+        {
+          minimum = det;
+          where = uvw;
+        }
+        maximum = std::max(maximum, det);
+      }
+    }
+  }
+  std::ostringstream why;
+  if (!(size > 0.0))
+  {
+    why << "is collapsed to a point";
+  }
+  else if (maximum < -flat)
+  {
+    why << "is inverted (Jacobian determinant negative everywhere, " << minimum << " at uvw "
+        << FormatPoint(where) << "; corners not in VTK hexahedron order?)";
+  }
+  else if (minimum < -flat)
+  {
+    why << "folds (Jacobian determinant " << minimum << " at uvw " << FormatPoint(where)
+        << ", up to " << maximum << " elsewhere)";
+  }
+  else if (!(minimum > flat))
+  {
+    why << "collapses (Jacobian determinant " << minimum << " at uvw " << FormatPoint(where)
+        << ", up to " << maximum << " elsewhere)";
+  }
+  return why.str();
+}
+
+/// Points of the box interior used to detect overlaps: a 5 x 5 x 5 lattice
+/// whose outer layer lies 1e-3 inside the faces, so shared faces never count.
+std::vector<glm::dvec3> InteriorSamples(const lfd::Hexahedron& box)
+{
+  constexpr double t[5] = { 1e-3, 0.25, 0.5, 0.75, 1.0 - 1e-3 };
+  std::vector<glm::dvec3> samples;
+  samples.reserve(125);
+  for (double w : t)
+  {
+    for (double v : t)
+    {
+      for (double u : t)
+      {
+        samples.push_back(lfd::TrilinearMap(box, glm::dvec3(u, v, w)));
+      }
+    }
+  }
+  return samples;
+}
+
+struct AxisBounds
+{
+  glm::dvec3 Min, Max;
+};
+
+AxisBounds BoxBounds(const lfd::Hexahedron& box)
+{
+  AxisBounds bounds{ box.Corners[0], box.Corners[0] };
+  for (const glm::dvec3& c : box.Corners)
+  {
+    bounds.Min = glm::min(bounds.Min, c);
+    bounds.Max = glm::max(bounds.Max, c);
+  }
+  return bounds;
+}
+
+bool BoundsOverlap(const AxisBounds& a, const AxisBounds& b)
+{
+  return a.Min.x < b.Max.x && b.Min.x < a.Max.x && a.Min.y < b.Max.y && b.Min.y < a.Max.y &&
+    a.Min.z < b.Max.z && b.Min.z < a.Max.z;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkDeformationCage::vtkDeformationCage()
+{
+  this->GetOrCreateRestPositions();
+  this->GetOrCreateLabels();
+}
+
+//------------------------------------------------------------------------------
+vtkDeformationCage::~vtkDeformationCage() = default;
+
+//------------------------------------------------------------------------------
+void vtkDeformationCage::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfBoxes: " << this->GetNumberOfBoxes() << "\n";
+  os << indent << "Deformed: " << (this->IsDeformed() ? "yes" : "no") << "\n";
+  os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkDeformationCage::GetRestPositions()
+{
+  return this->GetPointData()->GetArray(RestPositionName);
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkDeformationCage::GetOrCreateRestPositions()
+{
+  vtkDataArray* rest = this->GetRestPositions();
+  if (rest && rest->GetNumberOfComponents() == 3 && rest->IsA("vtkDoubleArray"))
+  {
+    return rest;
+  }
+  vtkNew<vtkDoubleArray> positions;
+  positions->SetName(RestPositionName);
+  positions->SetNumberOfComponents(3);
+  const vtkIdType count = this->GetNumberOfPoints();
+  positions->SetNumberOfTuples(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double x[3];
+    if (rest && rest->GetNumberOfComponents() == 3 && i < rest->GetNumberOfTuples())
+    {
+      rest->GetTuple(i, x);
+    }
+    else
+    {
+      this->GetPoint(i, x);
+    }
+    positions->SetTypedTuple(i, x);
+  }
+  this->GetPointData()->AddArray(positions);
+  return positions;
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkDeformationCage::GetOrCreateLabels()
+{
+  vtkDataArray* labels = this->GetCellData()->GetArray(LabelName);
+  if (labels && labels->GetNumberOfComponents() == 1 && labels->IsA("vtkIntArray"))
+  {
+    return labels;
+  }
+  vtkNew<vtkIntArray> values;
+  values->SetName(LabelName);
+  const vtkIdType count = this->GetNumberOfCells();
+  values->SetNumberOfTuples(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const bool known =
+      labels && labels->GetNumberOfComponents() == 1 && i < labels->GetNumberOfTuples();
+    values->SetValue(i, known ? static_cast<int>(labels->GetComponent(i, 0)) : 0);
+  }
+  this->GetCellData()->AddArray(values);
+  return values;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeformationCage::InitializeFromGrid(vtkUnstructuredGrid* grid)
+{
+  this->Initialize();
+  if (grid)
+  {
+    this->DeepCopy(grid);
+  }
+  this->GetOrCreateRestPositions();
+  this->GetOrCreateLabels();
+  this->ErrorMessage.clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkDeformationCage::AddPoint(const double rest[3])
+{
+  return this->AddPoint(rest, rest);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkDeformationCage::AddPoint(const double rest[3], const double deformed[3])
+{
+  if (!this->GetPoints())
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    this->SetPoints(points);
+  }
+  vtkDataArray* positions = this->GetOrCreateRestPositions();
+  const vtkIdType id = this->GetPoints()->InsertNextPoint(deformed);
+  positions->InsertTuple(id, rest);
+  this->Modified();
+  return id;
+}
+
+//------------------------------------------------------------------------------
+void vtkDeformationCage::GetRestPoint(vtkIdType id, double rest[3])
+{
+  this->GetOrCreateRestPositions()->GetTuple(id, rest);
+}
+
+//------------------------------------------------------------------------------
+void vtkDeformationCage::SetRestPoint(vtkIdType id, const double rest[3])
+{
+  vtkDataArray* positions = this->GetOrCreateRestPositions();
+  positions->SetTuple(id, rest);
+  positions->Modified();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkDeformationCage::GetDeformedPoint(vtkIdType id, double deformed[3])
+{
+  this->GetPoint(id, deformed);
+}
+
+//------------------------------------------------------------------------------
+void vtkDeformationCage::SetDeformedPoint(vtkIdType id, const double deformed[3])
+{
+  this->GetPoints()->SetPoint(id, deformed);
+  this->GetPoints()->Modified();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkDeformationCage::AddBox(const vtkIdType corners[8], int label)
+{
+  vtkDataArray* labels = this->GetOrCreateLabels();
+  if (!this->Connectivity)
+  {
+    // Initialize() drops the cell storage the constructor allocated.
+    this->AllocateEstimate(16, 8);
+  }
+  const vtkIdType box = this->InsertNextCell(VTK_HEXAHEDRON, 8, corners);
+  labels->InsertTuple1(box, label);
+  this->Modified();
+  return static_cast<int>(box);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkDeformationCage::GetNumberOfBoxes()
+{
+  return this->GetNumberOfCells();
+}
+
+//------------------------------------------------------------------------------
+int vtkDeformationCage::GetBoxLabel(vtkIdType box)
+{
+  vtkDataArray* labels = this->GetCellData()->GetArray(LabelName);
+  if (!labels || box < 0 || box >= labels->GetNumberOfTuples() || box >= this->GetNumberOfCells())
+  {
+    return 0;
+  }
+  return static_cast<int>(labels->GetComponent(box, 0));
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeformationCage::GetCorners(vtkIdType box, bool rest, double corners[24])
+{
+  if (box < 0 || box >= this->GetNumberOfCells() || this->GetCellType(box) != VTK_HEXAHEDRON)
+  {
+    return false;
+  }
+  vtkDataArray* positions = rest ? this->GetRestPositions() : nullptr;
+  if (rest && (!positions || positions->GetNumberOfComponents() != 3))
+  {
+    return false;
+  }
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  this->GetCellPoints(box, count, ids);
+  const vtkIdType points = rest ? positions->GetNumberOfTuples() : this->GetNumberOfPoints();
+  if (count != 8 ||
+    std::any_of(ids, ids + 8, [points](vtkIdType id) { return id < 0 || id >= points; }))
+  {
+    return false;
+  }
+  for (int i = 0; i < 8; ++i)
+  {
+    if (rest)
+    {
+      positions->GetTuple(ids[i], corners + 3 * i);
+    }
+    else
+    {
+      this->GetPoint(ids[i], corners + 3 * i);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeformationCage::GetRestCorners(vtkIdType box, double corners[24])
+{
+  return this->GetCorners(box, true, corners);
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeformationCage::GetDeformedCorners(vtkIdType box, double corners[24])
+{
+  return this->GetCorners(box, false, corners);
+}
+
+//------------------------------------------------------------------------------
+void vtkDeformationCage::SetPointsToRest()
+{
+  vtkDataArray* positions = this->GetRestPositions();
+  vtkPoints* points = this->GetPoints();
+  if (!positions || !points)
+  {
+    return;
+  }
+  const vtkIdType count = std::min(points->GetNumberOfPoints(), positions->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    points->SetPoint(i, positions->GetTuple3(i));
+  }
+  points->Modified();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeformationCage::IsDeformed()
+{
+  vtkDataArray* positions = this->GetRestPositions();
+  const vtkIdType count = this->GetNumberOfPoints();
+  if (!positions)
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < count && i < positions->GetNumberOfTuples(); ++i)
+  {
+    double rest[3], deformed[3];
+    positions->GetTuple(i, rest);
+    this->GetPoint(i, deformed);
+    if (rest[0] != deformed[0] || rest[1] != deformed[1] || rest[2] != deformed[2])
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeformationCage::Fail(const std::string& message)
+{
+  this->ErrorMessage = message;
+  vtkErrorMacro(<< message);
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeformationCage::Validate(vtkLightField* lightField)
+{
+  this->ErrorMessage.clear();
+  const vtkIdType numberOfPoints = this->GetNumberOfPoints();
+  const vtkIdType numberOfBoxes = this->GetNumberOfBoxes();
+
+  vtkDataArray* positions = this->GetRestPositions();
+  if (!positions || positions->GetNumberOfComponents() != 3 ||
+    positions->GetNumberOfTuples() != numberOfPoints)
+  {
+    return this->Fail("cage: the point array \"RestPosition\" is missing or does not hold 3 "
+                      "components per point");
+  }
+  vtkDataArray* labels = this->GetCellData()->GetArray(LabelName);
+  if (!labels || labels->GetNumberOfComponents() != 1 ||
+    labels->GetNumberOfTuples() != numberOfBoxes)
+  {
+    return this->Fail(
+      "cage: the cell array \"Label\" is missing or does not hold one value per box");
+  }
+
+  // Which labels the light field's Label pass holds: a box moves the rays of
+  // its label only (paper Sec. 4), so a label that never occurs is an error.
+  std::array<bool, 256> labelPresent{};
+  vtkDataArray* labelPass = lightField ? lightField->GetPass(vtkLightField::LABEL) : nullptr;
+  if (labelPass)
+  {
+    if (auto* bytes = vtkUnsignedCharArray::SafeDownCast(labelPass))
+    {
+      const unsigned char* values = bytes->GetPointer(0);
+      const vtkIdType count = bytes->GetNumberOfValues();
+      for (vtkIdType i = 0; i < count; ++i)
+      {
+        labelPresent[values[i]] = true;
+      }
+    }
+    else
+    {
+      const vtkIdType count = labelPass->GetNumberOfTuples();
+      for (vtkIdType i = 0; i < count; ++i)
+      {
+        const double value = labelPass->GetComponent(i, 0);
+        if (value >= 0.0 && value <= 255.0)
+        {
+          labelPresent[static_cast<int>(value)] = true;
+        }
+      }
+    }
+  }
+
+  std::vector<lfd::Hexahedron> restBoxes(numberOfBoxes);
+  for (vtkIdType b = 0; b < numberOfBoxes; ++b)
+  {
+    const int label = this->GetBoxLabel(b);
+    std::ostringstream name;
+    name << "cage: box " << b << " (label " << label << ")";
+
+    if (this->GetCellType(b) != VTK_HEXAHEDRON)
+    {
+      return this->Fail(name.str() + " is not a hexahedron (VTK cell type " +
+        std::to_string(this->GetCellType(b)) + ", expected " + std::to_string(VTK_HEXAHEDRON) +
+        ")");
+    }
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    this->GetCellPoints(b, count, ids);
+    if (count != 8)
+    {
+      return this->Fail(name.str() + " has " + std::to_string(count) + " corners, expected 8");
+    }
+    for (int i = 0; i < 8; ++i)
+    {
+      if (ids[i] < 0 || ids[i] >= numberOfPoints)
+      {
+        return this->Fail(name.str() + ": corner " + std::to_string(i) + " is point " +
+          std::to_string(ids[i]) + ", out of range [0, " + std::to_string(numberOfPoints) + ")");
+      }
+    }
+    if (label < 1 || label > 255)
+    {
+      return this->Fail(name.str() + ": label out of range [1, 255]");
+    }
+    if (labelPass && !labelPresent[label])
+    {
+      return this->Fail(name.str() + ": the light field's Label pass has no sub-light field " +
+        std::to_string(label));
+    }
+
+    double corners[24];
+    this->GetRestCorners(b, corners);
+    restBoxes[b] = ToHexahedron(corners);
+    std::string fold = FindFold(restBoxes[b]);
+    if (!fold.empty())
+    {
+      return this->Fail(name.str() + ": the rest box " + fold);
+    }
+    this->GetDeformedCorners(b, corners);
+    fold = FindFold(ToHexahedron(corners));
+    if (!fold.empty())
+    {
+      return this->Fail(name.str() + ": the deformed box " + fold);
+    }
+  }
+
+  // Rest boxes must not overlap: a rest-space point belongs to one part.
+  std::vector<AxisBounds> bounds(numberOfBoxes);
+  std::vector<std::vector<glm::dvec3>> samples(numberOfBoxes);
+  for (vtkIdType b = 0; b < numberOfBoxes; ++b)
+  {
+    bounds[b] = BoxBounds(restBoxes[b]);
+    samples[b] = InteriorSamples(restBoxes[b]);
+  }
+  for (vtkIdType a = 0; a < numberOfBoxes; ++a)
+  {
+    for (vtkIdType b = a + 1; b < numberOfBoxes; ++b)
+    {
+      if (!BoundsOverlap(bounds[a], bounds[b]))
+      {
+        continue;
+      }
+      for (int pass = 0; pass < 2; ++pass)
+      {
+        const vtkIdType inner = pass ? b : a;
+        const vtkIdType outer = pass ? a : b;
+        for (const glm::dvec3& p : samples[inner])
+        {
+          glm::dvec3 uvw;
+          // A negative slack: touching faces do not count, only interiors.
+          if (lfd::Contains(restBoxes[outer], p, uvw, -1e-9))
+          {
+            std::ostringstream message;
+            message << "cage: box " << b << " (label " << this->GetBoxLabel(b) << ") overlaps box "
+                    << a << " (label " << this->GetBoxLabel(a) << ") in rest space: the point "
+                    << FormatPoint(p) << " of box " << inner << " lies inside box " << outer;
+            return this->Fail(message.str());
+          }
+        }
+      }
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkDeformationCage* vtkDeformationCage::GetData(vtkInformation* info)
+{
+  return info ? vtkDeformationCage::SafeDownCast(info->Get(DATA_OBJECT())) : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkDeformationCage* vtkDeformationCage::GetData(vtkInformationVector* v, int i)
+{
+  return vtkDeformationCage::GetData(v->GetInformationObject(i));
+}
