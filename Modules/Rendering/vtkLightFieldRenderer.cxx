@@ -2,9 +2,13 @@
 
 #include "lfdCylinderSampling.h"
 #include "lfdPinholeCamera.h"
+#include "lfdRayWarp.h"
+#include "lfdTrilinear.h"
 
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -15,19 +19,134 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 vtkStandardNewMacro(vtkLightFieldRenderer);
 vtkCxxSetObjectMacro(vtkLightFieldRenderer, Camera, vtkCamera);
 
 namespace
 {
-/// One ray per pixel through the cylindrical sampler, rows in parallel.
+/// A box of the cage as the renderer uses it: rest and deformed corners, the
+/// label it owns and the bounds of the deformed box (to skip missed boxes).
+struct CageBox
+{
+  lfd::Hexahedron Rest;
+  lfd::Hexahedron Deformed;
+  int Label = 0;
+  glm::dvec3 Low{ 0.0 };
+  glm::dvec3 High{ 0.0 };
+};
+
+/// Slab test of the line o + t d (t >= 0) against an axis-aligned box.
+bool HitsBounds(const glm::dvec3& o,
+  const glm::dvec3& d,
+  const glm::dvec3& low,
+  const glm::dvec3& high)
+{
+  double t0 = 0.0;
+  double t1 = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3; ++a)
+  {
+    if (d[a] == 0.0)
+    {
+      if (o[a] < low[a] || o[a] > high[a])
+      {
+        return false;
+      }
+      continue;
+    }
+    double near = (low[a] - o[a]) / d[a];
+    double far = (high[a] - o[a]) / d[a];
+    if (near > far)
+    {
+      std::swap(near, far);
+    }
+    t0 = std::max(t0, near);
+    t1 = std::min(t1, far);
+    if (t0 > t1)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The boxes of a cage grid; false (with an error on `self`) when it is malformed.
+bool CollectBoxes(vtkObject* self, vtkUnstructuredGrid* cage, std::vector<CageBox>& boxes)
+{
+  vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
+  vtkDataArray* labels = cage->GetCellData()->GetArray("Label");
+  if (!labels)
+  {
+    vtkErrorWithObjectMacro(
+      self, "The cage has no cell array 'Label': every box needs the label of its part.");
+    return false;
+  }
+  for (vtkIdType cell = 0; cell < cage->GetNumberOfCells(); ++cell)
+  {
+    if (cage->GetCellType(cell) != VTK_HEXAHEDRON)
+    {
+      vtkErrorWithObjectMacro(self, "Cage cell " << cell << " is not a hexahedron.");
+      return false;
+    }
+    CageBox box;
+    box.Label = static_cast<int>(labels->GetComponent(cell, 0));
+    if (box.Label < 1 || box.Label > 255)
+    {
+      vtkErrorWithObjectMacro(
+        self, "Box " << cell << " has label " << box.Label << "; labels are 1..255.");
+      return false;
+    }
+    vtkIdType npts;
+    const vtkIdType* ids;
+    cage->GetCellPoints(cell, npts, ids);
+    box.Low = glm::dvec3(std::numeric_limits<double>::infinity());
+    box.High = -box.Low;
+    for (int c = 0; c < 8; ++c)
+    {
+      double p[3], r[3];
+      cage->GetPoint(ids[c], p);
+      if (rest)
+      {
+        rest->GetTuple(ids[c], r);
+      }
+      box.Deformed.Corners[c] = glm::dvec3(p[0], p[1], p[2]);
+      box.Rest.Corners[c] = rest ? glm::dvec3(r[0], r[1], r[2]) : box.Deformed.Corners[c];
+      box.Low = glm::min(box.Low, box.Deformed.Corners[c]);
+      box.High = glm::max(box.High, box.Deformed.Corners[c]);
+    }
+    boxes.push_back(box);
+  }
+  return true;
+}
+
+/// A segment of a view ray inside one deformed box.
+struct BoxSegment
+{
+  lfd::WarpedSegment Segment;
+  int Box;
+};
+
+/**
+ * One ray per pixel, rows in parallel. Without a cage the ray is looked up
+ * as it is. With a cage this is the paper's RENDER_VIEW (Sec. 6): the
+ * segments of the view ray inside the deformed boxes, front to back, each
+ * warped back to rest space (a straight warped ray through the rest images
+ * of its entry and exit points) and looked up; the first segment whose
+ * looked-up label is its box's label gives the pixel. Rays that match no
+ * segment see the undeformed light field, but only the parts that no box
+ * owns (a part that has a box is wherever its box put it).
+ */
 struct RenderRows
 {
   const lfd::LightFieldSampler& Sampler;
+  const std::vector<CageBox>& Boxes;
+  const std::array<bool, 256>& Owned; // labels that have a box
   glm::dvec3 Origin;
   glm::dmat3 PixelToDirection;
   int Width;
@@ -37,9 +156,75 @@ struct RenderRows
   std::uint8_t* Radiance; // output, VTK row order
   std::uint8_t* Labels;
 
-  void operator()(vtkIdType begin, vtkIdType end) const
+  static constexpr int MaxSegments = 64;
+
+  /// Label and colour seen along the view ray; label -1 when nothing is seen.
+  int Shade(const glm::dvec3& d, glm::dvec3& color) const
   {
     lfd::RaySamples samples;
+    BoxSegment segments[MaxSegments];
+    int count = 0;
+    for (std::size_t b = 0; b < this->Boxes.size() && count < MaxSegments; ++b)
+    {
+      const CageBox& box = this->Boxes[b];
+      if (!HitsBounds(this->Origin, d, box.Low, box.High))
+      {
+        continue;
+      }
+      lfd::WarpedSegment found[lfd::MaxWarpedSegments];
+      const int n = lfd::WarpRayThroughBox(
+        box.Rest, box.Deformed, this->Origin, d, 0.0, found, lfd::MaxWarpedSegments);
+      for (int k = 0; k < n && count < MaxSegments; ++k)
+      {
+        segments[count++] = { found[k], static_cast<int>(b) };
+      }
+    }
+    std::sort(segments,
+      segments + count,
+      [](const BoxSegment& a, const BoxSegment& b) { return a.Segment.TEnter < b.Segment.TEnter; });
+    for (int k = 0; k < count; ++k)
+    {
+      const lfd::WarpedSegment& segment = segments[k].Segment;
+      const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
+      if (glm::dot(direction, direction) <= 0.0 ||
+        !this->Sampler.Gather(segment.RestEnter, direction, samples))
+      {
+        continue;
+      }
+      const int label = this->Boxes[segments[k].Box].Label;
+      if (lfd::VoteLabel(samples) == label)
+      {
+        lfd::BlendLabel(samples, label, color);
+        return label;
+      }
+    }
+    if (!this->Sampler.Gather(this->Origin, d, samples))
+    {
+      return -1;
+    }
+    if (!this->UseLabels)
+    {
+      lfd::BlendLabel(samples, 0, color);
+      return 0;
+    }
+    // The heaviest label that no box owns (background included).
+    for (int i = 0; i < samples.Count; ++i)
+    {
+      if (this->Owned[samples.Samples[i].Label])
+      {
+        samples.Samples[i].Weight = 0.0;
+      }
+    }
+    const int label = lfd::VoteLabel(samples);
+    if (label >= 0)
+    {
+      lfd::BlendLabel(samples, label, color);
+    }
+    return label;
+  }
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
     for (vtkIdType j = begin; j < end; ++j)
     {
       const double y = static_cast<double>(this->Height - 1 - j); // OpenCV row
@@ -47,16 +232,10 @@ struct RenderRows
       {
         const vtkIdType id = j * this->Width + x;
         std::uint8_t* rgb = this->Radiance + 3 * id;
-        const glm::dvec3 d = this->PixelToDirection * glm::dvec3(x, y, 1.0);
-        int label = 0;
         glm::dvec3 color;
-        if (this->Sampler.Gather(this->Origin, d, samples))
-        {
-          label = this->UseLabels ? lfd::VoteLabel(samples) : 0;
-          lfd::BlendLabel(samples, label, color);
-        }
-        this->Labels[id] = static_cast<std::uint8_t>(label);
-        if (samples.Count == 0 || (this->UseLabels && label == 0))
+        const int label = this->Shade(this->PixelToDirection * glm::dvec3(x, y, 1.0), color);
+        this->Labels[id] = static_cast<std::uint8_t>(std::max(label, 0));
+        if (label < 0 || (this->UseLabels && label == 0))
         {
           std::copy(this->Background, this->Background + 3, rgb);
           continue;
@@ -74,7 +253,7 @@ struct RenderRows
 //------------------------------------------------------------------------------
 vtkLightFieldRenderer::vtkLightFieldRenderer()
 {
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
 }
 
@@ -129,10 +308,28 @@ vtkMTimeType vtkLightFieldRenderer::GetMTime()
 }
 
 //------------------------------------------------------------------------------
-int vtkLightFieldRenderer::FillInputPortInformation(int, vtkInformation* info)
+int vtkLightFieldRenderer::FillInputPortInformation(int port, vtkInformation* info)
 {
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkLightField");
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldRenderer::SetCageData(vtkUnstructuredGrid* cage)
+{
+  this->SetInputDataInternal(1, cage);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldRenderer::SetCageConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
 }
 
 //------------------------------------------------------------------------------
@@ -196,6 +393,19 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     vtkErrorMacro("No cylinder could be fitted to the rig, or every view is excluded.");
     return 0;
   }
+  std::vector<CageBox> boxes;
+  std::array<bool, 256> owned{};
+  if (vtkUnstructuredGrid* cage = vtkUnstructuredGrid::GetData(inputVector[1]))
+  {
+    if (!CollectBoxes(this, cage, boxes))
+    {
+      return 0;
+    }
+    for (const CageBox& box : boxes)
+    {
+      owned[box.Label] = true;
+    }
+  }
   std::vector<lfd::PinholeCamera> cameras(views);
   for (int v = 0; v < views; ++v)
   {
@@ -239,6 +449,8 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   imageLabels->SetNumberOfTuples(image->GetNumberOfTuples());
 
   RenderRows functor{ sampler,
+    boxes,
+    owned,
     eye.Center(),
     eye.PixelToDirection(),
     this->Width,

@@ -36,6 +36,7 @@
 #include <vector> // For std::vector
 
 class vtkCamera;
+class vtkUnstructuredGrid;
 
 class LFDRENDERING_EXPORT vtkLightFieldRenderer : public vtkImageAlgorithm
 {
@@ -108,6 +109,19 @@ public:
   int GetNumberOfExcludedViews() const;
   ///@}
 
+  ///@{
+  /**
+   * The deformation cage (optional input port 1): a vtkUnstructuredGrid of
+   * VTK_HEXAHEDRON boxes whose points are the deformed corners, with the
+   * rest corners in the point array "RestPosition" and each box's part in the
+   * cell array "Label" (vtkDeformationCage, or the cage of a scene file).
+   * With a cage the renderer draws the deformed light field (paper Sec. 6);
+   * validate the cage first (vtkDeformationCage::Validate).
+   */
+  void SetCageData(vtkUnstructuredGrid* cage);
+  void SetCageConnection(vtkAlgorithmOutput* output);
+  ///@}
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -138,6 +152,7 @@ protected:
 
 private:
   vtkLightFieldRenderer(const vtkLightFieldRenderer&) = delete;
+
   void operator=(const vtkLightFieldRenderer&) = delete;
 };
 
