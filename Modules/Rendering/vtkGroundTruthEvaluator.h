@@ -1,0 +1,117 @@
+/**
+ * @class   vtkGroundTruthEvaluator
+ * @brief   measures a deformed light-field render against the deformed source mesh
+ *
+ * For a synthetic light field the source mesh is known (DESIGN.md section
+ * 4.5): the evaluator deforms the mesh with the same cage map
+ * (vtkCageTransform), renders it with the same coaxial light from the same
+ * camera (vtkLightFieldCapture from a one-view rig), renders the light field
+ * through the cage (vtkLightFieldRenderer) and compares the two images:
+ * PSNR and SSIM over the object pixels (where either image shows a part),
+ * the IoU of the two silhouettes and the fraction of object pixels whose
+ * part label agrees.
+ *
+ * Inputs: port 0 the vtkLightField, port 1 the source vtkPolyData (with its
+ * "Label" cell array and colours or texture coordinates), port 2 the cage
+ * (vtkUnstructuredGrid as vtkLightFieldRenderer takes it; optional: without
+ * it both images are undeformed), port 3 the texture image (optional).
+ * Outputs: port 0 the light-field render, port 1 the ground truth, each an
+ * RGB image with a "Label" array.
+ *
+ * @sa vtkLightFieldRenderer vtkCageTransform vtkLightFieldCapture
+ */
+#ifndef vtkGroundTruthEvaluator_h
+#define vtkGroundTruthEvaluator_h
+
+#include "lfdRenderingModule.h" // For export macro
+#include "vtkImageAlgorithm.h"
+
+class vtkCamera;
+
+class LFDRENDERING_EXPORT vtkGroundTruthEvaluator : public vtkImageAlgorithm
+{
+public:
+  static vtkGroundTruthEvaluator* New();
+  vtkTypeMacro(vtkGroundTruthEvaluator, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The inputs (see above).
+   */
+  void SetMeshConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetMeshData(vtkDataObject* mesh) { this->SetInputData(1, mesh); }
+  void SetCageConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
+  void SetCageData(vtkDataObject* cage) { this->SetInputData(2, cage); }
+  void SetTextureConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(3, output); }
+  void SetTextureData(vtkDataObject* texture) { this->SetInputData(3, texture); }
+  ///@}
+
+  ///@{
+  /**
+   * The camera both images are rendered from, and their size (default
+   * 256 x 256).
+   */
+  virtual void SetCamera(vtkCamera* camera);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  vtkSetClampMacro(Width, int, 1, VTK_INT_MAX);
+  vtkGetMacro(Width, int);
+  vtkSetClampMacro(Height, int, 1, VTK_INT_MAX);
+  vtkGetMacro(Height, int);
+  ///@}
+
+  ///@{
+  /**
+   * Focal distance of the light-field render (vtkLightFieldRenderer).
+   */
+  vtkSetMacro(FocalDistance, double);
+  vtkGetMacro(FocalDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * The figures, after Update(): PSNR (dB, 100 when equal) and SSIM (mean
+   * over 7x7 windows centred on object pixels, luminance) over the object
+   * pixels, silhouette IoU, label agreement over the object pixels, and the
+   * number of object pixels.
+   */
+  vtkGetMacro(PSNR, double);
+  vtkGetMacro(SSIM, double);
+  vtkGetMacro(IoU, double);
+  vtkGetMacro(LabelAgreement, double);
+  vtkGetMacro(ObjectPixels, vtkIdType);
+  ///@}
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkGroundTruthEvaluator();
+  ~vtkGroundTruthEvaluator() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestUpdateExtent(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  vtkCamera* Camera = nullptr;
+  int Width = 256;
+  int Height = 256;
+  double FocalDistance = 0.0;
+  double PSNR = 0.0;
+  double SSIM = 0.0;
+  double IoU = 0.0;
+  double LabelAgreement = 0.0;
+  vtkIdType ObjectPixels = 0;
+
+private:
+  vtkGroundTruthEvaluator(const vtkGroundTruthEvaluator&) = delete;
+  void operator=(const vtkGroundTruthEvaluator&) = delete;
+};
+
+#endif
