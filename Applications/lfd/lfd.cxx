@@ -6,12 +6,16 @@
 // non-zero exit status.
 #include "lfdConsole.h"
 
+#include "vtkCagePoseFilter.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
+#include "vtkDeformationCage.h"
+#include "vtkGroundTruthEvaluator.h"
 #include "vtkImageData.h"
 #include "vtkImageFileReader.h"
 #include "vtkImageFileWriter.h"
 #include "vtkImageResize.h"
+#include "vtkKeyframeInterpolator.h"
 #include "vtkLabelCellsByBoxes.h"
 #include "vtkLeaveOneOutEvaluator.h"
 #include "vtkLightField.h"
@@ -25,7 +29,9 @@
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
+#include "vtkPartCageSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataReader.h"
 #include "vtkProceduralObjectSource.h"
@@ -44,6 +50,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -158,23 +165,6 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   return mesh;
 }
 
-/// True when any cage point differs from its "RestPosition".
-bool CageIsDeformed(vtkUnstructuredGrid* cage)
-{
-  vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
-  for (vtkIdType i = 0; rest && i < cage->GetNumberOfPoints(); ++i)
-  {
-    double p[3], r[3];
-    cage->GetPoint(i, p);
-    rest->GetTuple(i, r);
-    if (p[0] != r[0] || p[1] != r[1] || p[2] != r[2])
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
 vtkSmartPointer<vtkLightFieldScene> ReadScene(const std::string& path)
 {
   auto scene = vtkSmartPointer<vtkLightFieldScene>::New();
@@ -198,6 +188,54 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
   auto lightField = vtkSmartPointer<vtkLightField>::New();
   lightField->ShallowCopy(reader->GetOutput());
   return lightField;
+}
+
+/**
+ * The scene's cage, validated against the light field (nullptr when the scene
+ * has none). With keyframes and a time, the cage points are the keyframes'
+ * Catmull-Rom interpolation at that time.
+ */
+vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
+  vtkLightField* lightField,
+  const double* time = nullptr)
+{
+  if (!scene->HasCage())
+  {
+    return nullptr;
+  }
+  auto cage = vtkSmartPointer<vtkDeformationCage>::New();
+  cage->InitializeFromGrid(scene->GetCage());
+  if (time && scene->GetNumberOfKeyframes() > 0)
+  {
+    vtkNew<vtkKeyframeInterpolator> keyframes;
+    for (int k = 0; k < scene->GetNumberOfKeyframes(); ++k)
+    {
+      keyframes->AddKeyframe(scene->GetKeyframeTime(k), scene->GetKeyframePoints(k));
+    }
+    vtkNew<vtkPoints> points;
+    keyframes->InterpolatePoints(*time, points);
+    cage->SetPoints(points);
+  }
+  if (!cage->Validate(lightField))
+  {
+    Fail(std::string(scene->GetFileName()) + ": " + cage->GetErrorMessage());
+  }
+  return cage;
+}
+
+/// A renderer of the scene's light field from the scene's camera.
+void ConfigureRenderer(vtkLightFieldRenderer* renderer,
+  vtkLightFieldScene* scene,
+  vtkLightField* lightField,
+  vtkDeformationCage* cage)
+{
+  renderer->SetInputData(lightField);
+  renderer->SetCageData(cage);
+  renderer->SetCamera(scene->GetCamera());
+  renderer->SetWidth(scene->GetWidth());
+  renderer->SetHeight(scene->GetHeight());
+  renderer->SetFocalDistance(scene->GetFocalDistance());
+  renderer->SetBackground(scene->GetBackground());
 }
 
 void WriteLightField(vtkLightField* lightField, const std::string& directory)
@@ -466,27 +504,140 @@ int Info(const std::string& path)
   return 0;
 }
 
-int Render(const std::string& scenePath, const std::string& out)
+int Render(const std::string& scenePath, const std::string& out, const double* time)
 {
   const double start = vtkTimerLog::GetUniversalTime();
   auto scene = ReadScene(scenePath);
-  if (scene->HasCage() && CageIsDeformed(scene->GetCage()))
-  {
-    Fail("scene '" + scenePath +
-      "' deforms its cage; rendering deformed light fields is not available in this version");
-  }
   auto lightField = ReadLightField(scene->GetResolvedLightFieldPath());
+  auto cage = SceneCage(scene, lightField, time);
   vtkNew<vtkLightFieldRenderer> renderer;
-  renderer->SetInputData(lightField);
-  renderer->SetCamera(scene->GetCamera());
-  renderer->SetWidth(scene->GetWidth());
-  renderer->SetHeight(scene->GetHeight());
-  renderer->SetFocalDistance(scene->GetFocalDistance());
-  renderer->SetBackground(scene->GetBackground());
+  ConfigureRenderer(renderer, scene, lightField, cage);
   Run(renderer.Get(), "rendering");
   WriteImage(renderer->GetOutput(), out);
   std::cout << "wrote " << out << " (" << scene->GetWidth() << "x" << scene->GetHeight() << ") in "
             << Seconds(start) << " s\n";
+  return 0;
+}
+
+/// Encodes frame_%04d.png of a folder into an MP4 with ffmpeg, when installed.
+bool EncodeMovie(const std::string& frameDir, const std::string& movie)
+{
+  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0)
+  {
+    return false;
+  }
+  const std::string partial = movie + ".partial.mp4";
+  const std::string command = "ffmpeg -y -loglevel error -framerate 24 -i '" + frameDir +
+    "/frame_%04d.png' -pix_fmt yuv420p '" + partial + "'";
+  if (std::system(command.c_str()) != 0 || std::rename(partial.c_str(), movie.c_str()) != 0)
+  {
+    std::remove(partial.c_str());
+    Fail("ffmpeg could not encode '" + movie + "'");
+  }
+  return true;
+}
+
+/**
+ * Renders `frames` frames of a scene's keyframes (evenly from the first to
+ * the last keyframe time) into out/frame_%04d.png, and an MP4 when ffmpeg is
+ * installed. Returns the frames.
+ */
+std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldScene* scene,
+  vtkLightField* lightField,
+  int frames,
+  const std::string& out)
+{
+  vtksys::SystemTools::MakeDirectory(out);
+  const double t0 = scene->GetKeyframeTime(0);
+  const double t1 = scene->GetKeyframeTime(scene->GetNumberOfKeyframes() - 1);
+  vtkNew<vtkLightFieldRenderer> renderer;
+  std::vector<vtkSmartPointer<vtkImageData>> images;
+  const double start = vtkTimerLog::GetUniversalTime();
+  for (int f = 0; f < frames; ++f)
+  {
+    const double time = t0 + (t1 - t0) * f / std::max(frames - 1, 1);
+    auto cage = SceneCage(scene, lightField, &time);
+    ConfigureRenderer(renderer, scene, lightField, cage);
+    Run(renderer.Get(), "rendering frame " + std::to_string(f));
+    auto frame = vtkSmartPointer<vtkImageData>::New();
+    frame->DeepCopy(renderer->GetOutput());
+    char name[64];
+    std::snprintf(name, sizeof(name), "/frame_%04d.png", f);
+    WriteImage(frame, out + name);
+    images.push_back(frame);
+    std::fprintf(stderr, "animating: frame %d/%d\n", f + 1, frames);
+  }
+  std::printf("frames    %d of %dx%d in %s/frame_*.png (%.1f ms/frame)\n",
+    frames,
+    scene->GetWidth(),
+    scene->GetHeight(),
+    out.c_str(),
+    1000.0 * Seconds(start) / frames);
+  if (EncodeMovie(out, out + "/animation.mp4"))
+  {
+    std::printf("movie     %s/animation.mp4\n", out.c_str());
+  }
+  return images;
+}
+
+int Animate(const std::string& scenePath, int frames, const std::string& out)
+{
+  auto scene = ReadScene(scenePath);
+  if (scene->GetNumberOfKeyframes() < 2)
+  {
+    Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
+  }
+  auto lightField = ReadLightField(scene->GetResolvedLightFieldPath());
+  RenderAnimation(scene, lightField, frames, out);
+  return 0;
+}
+
+/// The source mesh (and texture) of a ground-truth comparison: a built-in
+/// object by name, or a mesh file.
+vtkSmartPointer<vtkPolyData> SourceMesh(const std::string& name,
+  vtkSmartPointer<vtkImageData>& texture)
+{
+  const int object = vtkProceduralObjectSource::GetObjectFromString(name.c_str());
+  if (object < 0)
+  {
+    return ReadMesh(name);
+  }
+  vtkNew<vtkProceduralObjectSource> source;
+  source->SetObject(object);
+  source->Update();
+  texture = source->GetTextureOutput();
+  return source->GetOutput();
+}
+
+int EvalGroundTruth(const std::string& scenePath,
+  const std::string& meshName,
+  const std::string& out)
+{
+  auto scene = ReadScene(scenePath);
+  auto lightField = ReadLightField(scene->GetResolvedLightFieldPath());
+  auto cage = SceneCage(scene, lightField);
+  vtkSmartPointer<vtkImageData> texture;
+  auto mesh = SourceMesh(meshName, texture);
+  vtkNew<vtkGroundTruthEvaluator> evaluator;
+  evaluator->SetInputData(lightField);
+  evaluator->SetMeshData(mesh);
+  evaluator->SetCageData(cage);
+  evaluator->SetTextureData(texture);
+  evaluator->SetCamera(scene->GetCamera());
+  evaluator->SetWidth(scene->GetWidth());
+  evaluator->SetHeight(scene->GetHeight());
+  evaluator->SetFocalDistance(scene->GetFocalDistance());
+  Run(evaluator.Get(), "ground-truth evaluation");
+  std::printf("object PSNR       %.2f dB\n", evaluator->GetPSNR());
+  std::printf("object SSIM       %.4f\n", evaluator->GetSSIM());
+  std::printf("silhouette IoU    %.4f\n", evaluator->GetIoU());
+  std::printf("label agreement   %.4f\n", evaluator->GetLabelAgreement());
+  std::printf("object pixels     %lld\n", static_cast<long long>(evaluator->GetObjectPixels()));
+  if (!out.empty())
+  {
+    WriteImage(evaluator->GetOutput(0), out + "_lightfield.png");
+    WriteImage(evaluator->GetOutput(1), out + "_groundtruth.png");
+  }
   return 0;
 }
 
@@ -575,53 +726,56 @@ int Demo(const std::string& out, int frames, int size)
   auto lightField = Synthesize(options);
   const double captureTime = Seconds(start);
   start = vtkTimerLog::GetUniversalTime();
-  const std::string dataset = out + "/fish.lf";
-  WriteLightField(lightField, dataset);
+  WriteLightField(lightField, out + "/fish.lf");
   const double writeTime = Seconds(start);
 
-  vtkCameraRig* rig = lightField->GetRig();
-  const std::string frameDir = out + "/frames";
-  vtksys::SystemTools::MakeDirectory(frameDir);
-  vtkNew<vtkLightFieldRenderer> renderer;
-  renderer->SetInputData(lightField);
-  renderer->SetWidth(size);
-  renderer->SetHeight(size);
-  vtkNew<vtkCamera> camera;
-  renderer->SetCamera(camera);
-  std::vector<vtkSmartPointer<vtkImageData>> images;
-  start = vtkTimerLog::GetUniversalTime();
-  const double step = 2.0 * vtkMath::Pi() / rig->GetNumberOfViews() * rig->GetNumberOfRows();
-  for (int f = 0; f < frames; ++f)
+  // Paper Fig. 13: three boxes (tail, body, head) around the fish's parts, a
+  // travelling wave through the shared box faces; head and tail turn with
+  // the bending body. Bending about the camera's viewing axis keeps the
+  // motion in the picture (a ring light field has horizontal parallax only).
+  vtkNew<vtkProceduralObjectSource> fish;
+  fish->SetObjectToFish();
+  vtkNew<vtkPartCageSource> parts;
+  parts->SetInputConnection(fish->GetOutputPort());
+  Run(parts.Get(), "building the fish's cage");
+  vtkNew<vtkLightFieldScene> scene;
+  scene->SetLightFieldPath("fish.lf");
+  scene->SetCage(parts->GetOutput());
+  vtkNew<vtkCagePoseFilter> pose;
+  pose->SetInputConnection(parts->GetOutputPort());
+  pose->SetModeToSwim();
+  pose->SetAngle(20.0);
+  pose->SetTurnAxis(0.0, 0.0, 1.0);
+  const int keyframes = 8;
+  for (int k = 0; k <= keyframes; ++k)
   {
-    // Half-way between captured azimuths, a little above the middle row and
-    // further out than the ring: none of these views was captured.
-    const double phi = 2.0 * vtkMath::Pi() * f / frames + 0.5 * step;
-    OrbitCamera(rig, phi, 1.15, 0.1 * rig->GetRadius(), 0.6 * RigViewAngle(rig), camera);
-    Run(renderer.Get(), "rendering frame " + std::to_string(f));
-    auto frame = vtkSmartPointer<vtkImageData>::New();
-    frame->DeepCopy(renderer->GetOutput());
-    char name[64];
-    std::snprintf(name, sizeof(name), "/frame_%04d.png", f);
-    WriteImage(frame, frameDir + name);
-    images.push_back(frame);
+    pose->SetPhase(2.0 * vtkMath::Pi() * k / keyframes);
+    Run(pose.Get(), "posing the cage");
+    scene->AddKeyframe(k, pose->GetOutput()->GetPoints());
   }
-  const double renderTime = Seconds(start);
-  const std::string sheet = out + "/contact_sheet.png";
-  WriteImage(ContactSheet(images, 6, 128), sheet);
+  vtkCameraRig* rig = lightField->GetRig();
+  const double step = 2.0 * vtkMath::Pi() / rig->GetNumberOfViews() * rig->GetNumberOfRows();
+  // Half-way between two captured views, further out than the ring.
+  OrbitCamera(rig, 0.5 * step, 1.15, 0.0, 0.7 * RigViewAngle(rig), scene->GetCamera());
+  scene->SetWidth(size);
+  scene->SetHeight(size);
+  const std::string scenePath = out + "/swim.json";
+  if (!scene->Write(scenePath.c_str()))
+  {
+    Fail(scene->GetErrorMessage());
+  }
 
-  std::printf("capture   %3d views of %dx%d        %7.2f s\n",
+  std::printf("capture   %d views of %dx%d in %.2f s; written to %s/fish.lf in %.2f s\n",
     lightField->GetNumberOfViews(),
     lightField->GetWidth(),
     lightField->GetHeight(),
-    captureTime);
-  std::printf("write     %-26s %7.2f s\n", dataset.c_str(), writeTime);
-  std::printf("render    %3d novel views of %dx%d   %7.2f s (%.1f ms/frame)\n",
-    frames,
-    size,
-    size,
-    renderTime,
-    1000.0 * renderTime / frames);
-  std::printf("frames    %s/frame_*.png\n", frameDir.c_str());
+    captureTime,
+    out.c_str(),
+    writeTime);
+  std::printf("scene     %s (3 boxes, %d keyframes)\n", scenePath.c_str(), keyframes + 1);
+  const auto images = RenderAnimation(scene, lightField, frames, out + "/frames");
+  const std::string sheet = out + "/contact_sheet.png";
+  WriteImage(ContactSheet(images, 6, 128), sheet);
   std::printf("sheet     %s\n", sheet.c_str());
   return 0;
 }
@@ -662,12 +816,35 @@ int main(int argc, char* argv[])
   infoCommand->add_option("DIR", infoPath, "light-field directory")->required();
 
   std::string scenePath, renderOut;
-  auto* renderCommand = app.add_subcommand("render", "render a scene's camera view");
+  double renderTime = 0.0;
+  auto* renderCommand = app.add_subcommand(
+    "render", "render a scene's camera view of its light field, deformed by its cage");
   renderCommand->add_option("SCENE", scenePath, "scene.json")->required();
   renderCommand->add_option("--out", renderOut, "output image (.png, .exr, ...)")->required();
+  auto* timeOption = renderCommand->add_option(
+    "--time", renderTime, "time of the keyframes to render (default: the cage's points)");
+
+  std::string animateScene, animateOut;
+  int animateFrames = 48;
+  auto* animateCommand = app.add_subcommand("animate",
+    "render the scene's keyframes (Catmull-Rom) as PNG frames, and an MP4 when ffmpeg is "
+    "installed");
+  animateCommand->add_option("SCENE", animateScene, "scene.json with keyframes")->required();
+  animateCommand->add_option("--frames", animateFrames, "number of frames")->capture_default_str();
+  animateCommand->add_option("--out", animateOut, "output folder")->required();
 
   auto* evalCommand = app.add_subcommand("eval", "measure rendering quality");
   evalCommand->require_subcommand(1);
+  std::string gtScene, gtMesh, gtOut;
+  auto* groundTruth = evalCommand->add_subcommand("groundtruth",
+    "render the source mesh deformed by the scene's cage and compare it with the deformed "
+    "light field: object PSNR, SSIM, silhouette IoU, label agreement");
+  groundTruth->add_option("SCENE", gtScene, "scene.json")->required();
+  groundTruth
+    ->add_option(
+      "--mesh", gtMesh, "the light field's source: fish, figure, checkerboard or a mesh file")
+    ->required();
+  groundTruth->add_option("--out", gtOut, "also write OUT_lightfield.png and OUT_groundtruth.png");
   std::string looPath;
   int looStride = 1;
   std::vector<int> looViews;
@@ -692,8 +869,9 @@ int main(int argc, char* argv[])
 
   std::string demoOut = "lfd-demo";
   int demoFrames = 36, demoSize = 512;
-  auto* demoCommand = app.add_subcommand(
-    "demo", "synthesise the fish and render a turntable of novel views (frames + contact sheet)");
+  auto* demoCommand = app.add_subcommand("demo",
+    "synthesise the fish, give it a cage of 3 boxes and render it swimming (frames, contact "
+    "sheet, scene file, MP4 with ffmpeg)");
   demoCommand->add_option("--out", demoOut, "output folder")->capture_default_str();
   demoCommand->add_option("--frames", demoFrames, "number of frames")->capture_default_str();
   demoCommand->add_option("--size", demoSize, "frame width and height")->capture_default_str();
@@ -715,7 +893,15 @@ int main(int argc, char* argv[])
     }
     if (*renderCommand)
     {
-      return Render(scenePath, renderOut);
+      return Render(scenePath, renderOut, *timeOption ? &renderTime : nullptr);
+    }
+    if (*animateCommand)
+    {
+      return Animate(animateScene, animateFrames, animateOut);
+    }
+    if (*groundTruth)
+    {
+      return EvalGroundTruth(gtScene, gtMesh, gtOut);
     }
     if (*loo)
     {
