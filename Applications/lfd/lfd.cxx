@@ -7,6 +7,7 @@
 #include "lfdConsole.h"
 
 #include "vtkCagePoseFilter.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
@@ -216,6 +217,10 @@ vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
     keyframes->InterpolatePoints(*time, points);
     cage->SetPoints(points);
   }
+  // The refusal is said once, with the scene's file name: the observer keeps
+  // the cage's own error event from the console.
+  vtkNew<vtkCallbackCommand> quiet;
+  cage->AddObserver(vtkCommand::ErrorEvent, quiet);
   if (!cage->Validate(lightField))
   {
     Fail(std::string(scene->GetFileName()) + ": " + cage->GetErrorMessage());

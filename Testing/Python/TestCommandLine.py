@@ -3,6 +3,7 @@ render -> eval run, the demo's outputs, and bad input: one readable error
 line naming the file and field, exit status 1, and no output left behind."""
 
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -39,8 +40,8 @@ def expect_error(args, *words):
 code, out, _ = lfd("--help")
 t.check(code == 0 and all(c in out for c in ("synth", "import", "info", "render", "eval", "bench",
                                            "demo")), "lfd --help lists the subcommands", code)
-for sub in (["synth"], ["import", "middlebury"], ["info"], ["render"], ["eval", "loo"], ["bench"],
-            ["demo"]):
+for sub in (["synth"], ["import", "middlebury"], ["info"], ["render"], ["animate"], ["eval", "loo"],
+            ["eval", "groundtruth"], ["bench"], ["demo"]):
     code, out, _ = lfd(*sub, "--help")
     t.check(code == 0 and "Options" in out, "lfd " + " ".join(sub) + " --help", code)
 
@@ -71,6 +72,45 @@ t.check(size == (80, 60, 1), "render writes an 80x60 PNG", size or err.strip())
 
 code, out, err = lfd("eval", "loo", lf, "--stride", "6")
 t.check(code == 0 and out.count("\n") == 6 and "mean" in out, "eval loo over 4 views", out)
+
+# A deformed scene: one box around the board, its top twisted by 30 degrees.
+# VTK hexahedron order: each face counter-clockwise seen from +y (its top).
+corners = [[x, y, z] for y in (-0.7, 0.7) for x, z in ((-0.7, 0.2), (0.7, 0.2), (0.7, -0.2),
+                                                        (-0.7, -0.2))]
+def twisted(degrees):
+    a = math.radians(degrees)
+    return [p if p[1] < 0 else [p[0] * math.cos(a) + p[2] * math.sin(a), p[1],
+                                 -p[0] * math.sin(a) + p[2] * math.cos(a)] for p in corners]
+twist_scene = os.path.join(WORK, "twist.json")
+with open(twist_scene, "w") as f:
+    json.dump({"format": "lfd-scene", "version": 1, "lightfield": "board.lf",
+               "cage": {"rest_points": corners, "points": twisted(30),
+                        "boxes": [{"corners": list(range(8)), "label": 1}]},
+               "keyframes": [{"time": 0.0, "points": corners},
+                             {"time": 1.0, "points": twisted(30)}],
+               "camera": {"position": [0.3, 0.05, 4.0], "focal_point": [0, 0, 0],
+                          "view_up": [0, 1, 0], "view_angle": 30.0, "width": 64, "height": 64},
+               "render": {"focal_distance": 0.0, "subdivision": 1, "background": [0, 0, 0]}}, f)
+code, out, err = lfd("render", twist_scene, "--out", os.path.join(WORK, "twist.png"))
+t.check(code == 0 and os.path.isfile(os.path.join(WORK, "twist.png")), "render a deformed scene",
+        err.strip() or out.strip())
+code, out, err = lfd("eval", "groundtruth", twist_scene, "--mesh", "checkerboard")
+iou = float(out.split("silhouette IoU")[1].split()[0]) if code == 0 else 0.0
+t.check(iou > 0.9, "eval groundtruth of the twisted board: silhouette IoU > 0.9",
+        err.strip() or iou)
+code, out, err = lfd("animate", twist_scene, "--frames", "3", "--out", os.path.join(WORK, "anim"))
+frames = sorted(f for f in os.listdir(os.path.join(WORK, "anim")) if f.endswith(".png")) \
+    if code == 0 else []
+t.check(frames == ["frame_0000.png", "frame_0001.png", "frame_0002.png"], "animate writes 3 frames",
+        frames or err.strip())
+folded = os.path.join(WORK, "folded.json")
+with open(folded, "w") as f:
+    points = [list(p) for p in corners]
+    points[6] = [-2.0, -2.0, -2.0]
+    json.dump({"format": "lfd-scene", "version": 1, "lightfield": "board.lf",
+               "cage": {"rest_points": corners, "points": points,
+                        "boxes": [{"corners": list(range(8)), "label": 1}]}}, f)
+expect_error(["render", folded, "--out", os.path.join(WORK, "never.png")], "folded.json", "box 0")
 
 # A mesh of the user's, split into parts by a scene's rest boxes.
 sphere = vtkSphereSource()

@@ -11,7 +11,9 @@ import lfd
 for name in ("vtkLightField", "vtkCameraRig", "vtkLightFieldAlgorithm", "vtkLightFieldReader", "vtkLightFieldWriter",
              "vtkMiddleburyImporter", "vtkLightFieldScene", "vtkProceduralObjectSource",
              "vtkLightFieldCapture", "vtkLabelCellsByBoxes", "vtkLightFieldRenderer",
-             "vtkLeaveOneOutEvaluator", "vtkImageFileReader", "vtkImageFileWriter"):
+             "vtkLeaveOneOutEvaluator", "vtkImageFileReader", "vtkImageFileWriter",
+             "vtkDeformationCage", "vtkCageTransform", "vtkKeyframeInterpolator",
+             "vtkPartCageSource", "vtkCagePoseFilter", "vtkGroundTruthEvaluator"):
     t.check(hasattr(lfd, name), f"lfd.{name} exposed", hasattr(lfd, name))
 
 fish = lfd.vtkProceduralObjectSource()
