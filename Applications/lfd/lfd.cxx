@@ -240,6 +240,7 @@ void ConfigureRenderer(vtkLightFieldRenderer* renderer,
   renderer->SetWidth(scene->GetWidth());
   renderer->SetHeight(scene->GetHeight());
   renderer->SetFocalDistance(scene->GetFocalDistance());
+  renderer->SetSubdivision(scene->GetSubdivision()); // 0 = "auto" in both
   renderer->SetBackground(scene->GetBackground());
 }
 
@@ -632,6 +633,7 @@ int EvalGroundTruth(const std::string& scenePath,
   evaluator->SetWidth(scene->GetWidth());
   evaluator->SetHeight(scene->GetHeight());
   evaluator->SetFocalDistance(scene->GetFocalDistance());
+  evaluator->SetSubdivision(scene->GetSubdivision());
   Run(evaluator.Get(), "ground-truth evaluation");
   std::printf("object PSNR       %.2f dB\n", evaluator->GetPSNR());
   std::printf("object SSIM       %.4f\n", evaluator->GetSSIM());

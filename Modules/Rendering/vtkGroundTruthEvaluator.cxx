@@ -171,6 +171,7 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
   renderer->SetWidth(this->Width);
   renderer->SetHeight(this->Height);
   renderer->SetFocalDistance(this->FocalDistance);
+  renderer->SetSubdivision(this->Subdivision);
 
   // The mesh through the same map, captured with the same light from the
   // same camera.
@@ -256,6 +257,7 @@ void vtkGroundTruthEvaluator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Width: " << this->Width << "\n";
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
+  os << indent << "Subdivision: " << this->Subdivision << "\n";
   os << indent << "PSNR: " << this->PSNR << "\n";
   os << indent << "SSIM: " << this->SSIM << "\n";
   os << indent << "IoU: " << this->IoU << "\n";

@@ -62,10 +62,13 @@ public:
 
   ///@{
   /**
-   * Focal distance of the light-field render (vtkLightFieldRenderer).
+   * Focal distance and box subdivision of the light-field render (see
+   * vtkLightFieldRenderer; subdivision 0 = automatic).
    */
   vtkSetMacro(FocalDistance, double);
   vtkGetMacro(FocalDistance, double);
+  vtkSetClampMacro(Subdivision, int, 0, 64);
+  vtkGetMacro(Subdivision, int);
   ///@}
 
   ///@{
@@ -103,6 +106,7 @@ protected:
   int Width = 256;
   int Height = 256;
   double FocalDistance = 0.0;
+  int Subdivision = 1;
   double PSNR = 0.0;
   double SSIM = 0.0;
   double IoU = 0.0;

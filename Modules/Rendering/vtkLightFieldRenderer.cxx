@@ -76,8 +76,75 @@ bool HitsBounds(const glm::dvec3& o,
   return true;
 }
 
-/// The boxes of a cage grid; false (with an error on `self`) when it is malformed.
-bool CollectBoxes(vtkObject* self, vtkUnstructuredGrid* cage, std::vector<CageBox>& boxes)
+/**
+ * Distance of the box's map from the affine map through corners 0, 1, 3 and
+ * 4, at the face centres and the centre: the second-order part of the
+ * trilinear map, which bends the true inverse image of a straight ray.
+ */
+double Nonlinearity(const lfd::Hexahedron& box)
+{
+  const glm::dvec3& c0 = box.Corners[0];
+  const glm::dmat3 affine(box.Corners[1] - c0, box.Corners[3] - c0, box.Corners[4] - c0);
+  const glm::dvec3 probes[7] = { { 0.5, 0.5, 0.5 },
+    { 0.0, 0.5, 0.5 },
+    { 1.0, 0.5, 0.5 },
+    { 0.5, 0.0, 0.5 },
+    { 0.5, 1.0, 0.5 },
+    { 0.5, 0.5, 0.0 },
+    { 0.5, 0.5, 1.0 } };
+  double deviation = 0.0;
+  for (const glm::dvec3& uvw : probes)
+  {
+    deviation = std::max(deviation, glm::distance(lfd::TrilinearMap(box, uvw), c0 + affine * uvw));
+  }
+  return deviation;
+}
+
+/**
+ * Tessellation (DESIGN.md 4.4): box `box` split into k x k x k sub-boxes whose
+ * corners are the rest and deformed maps of the parametric sub-grid, so the
+ * deformation stays the same while each warped ray becomes piecewise linear.
+ */
+void Subdivide(const CageBox& box, int k, std::vector<CageBox>& boxes)
+{
+  for (int i = 0; i < k; ++i)
+  {
+    for (int j = 0; j < k; ++j)
+    {
+      for (int l = 0; l < k; ++l)
+      {
+        CageBox sub;
+        sub.Label = box.Label;
+        sub.Low = glm::dvec3(std::numeric_limits<double>::infinity());
+        sub.High = -sub.Low;
+        for (int c = 0; c < 8; ++c)
+        {
+          const glm::dvec3 uvw =
+            glm::dvec3(
+              i + lfd::HexCorner[c][0], j + lfd::HexCorner[c][1], l + lfd::HexCorner[c][2]) /
+            static_cast<double>(k);
+          sub.Rest.Corners[c] = lfd::TrilinearMap(box.Rest, uvw);
+          sub.Deformed.Corners[c] = lfd::TrilinearMap(box.Deformed, uvw);
+          sub.Low = glm::min(sub.Low, sub.Deformed.Corners[c]);
+          sub.High = glm::max(sub.High, sub.Deformed.Corners[c]);
+        }
+        boxes.push_back(sub);
+      }
+    }
+  }
+}
+
+/**
+ * The boxes of a cage grid, each tessellated into subdivision^3 sub-boxes
+ * (subdivision 0: the smallest k, up to 8, that brings the map's
+ * nonlinearity under `tolerance` x the box size; it falls as 1 / k^2).
+ * False (with an error on `self`) when the grid is malformed.
+ */
+bool CollectBoxes(vtkObject* self,
+  vtkUnstructuredGrid* cage,
+  int subdivision,
+  double tolerance,
+  std::vector<CageBox>& boxes)
 {
   vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
   vtkDataArray* labels = cage->GetCellData()->GetArray("Label");
@@ -120,7 +187,14 @@ bool CollectBoxes(vtkObject* self, vtkUnstructuredGrid* cage, std::vector<CageBo
       box.Low = glm::min(box.Low, box.Deformed.Corners[c]);
       box.High = glm::max(box.High, box.Deformed.Corners[c]);
     }
-    boxes.push_back(box);
+    int k = subdivision;
+    if (k == 0)
+    {
+      const double error = std::max(Nonlinearity(box.Rest), Nonlinearity(box.Deformed)) /
+        std::max(lfd::BoxSize(box.Deformed), 1e-300);
+      k = std::clamp(static_cast<int>(std::ceil(std::sqrt(error / tolerance))), 1, 8);
+    }
+    Subdivide(box, k, boxes);
   }
   return true;
 }
@@ -397,7 +471,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   std::array<bool, 256> owned{};
   if (vtkUnstructuredGrid* cage = vtkUnstructuredGrid::GetData(inputVector[1]))
   {
-    if (!CollectBoxes(this, cage, boxes))
+    if (!CollectBoxes(this, cage, this->Subdivision, this->SubdivisionTolerance, boxes))
     {
       return 0;
     }
@@ -498,6 +572,9 @@ void vtkLightFieldRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Background: " << this->Background[0] << " " << this->Background[1] << " "
      << this->Background[2] << "\n";
   os << indent << "UseLabels: " << this->UseLabels << "\n";
+  os << indent << "Subdivision: " << this->Subdivision << (this->Subdivision ? "" : " (auto)")
+     << "\n";
+  os << indent << "SubdivisionTolerance: " << this->SubdivisionTolerance << "\n";
   os << indent << "ExcludedViews:";
   for (int v : this->ExcludedViews)
   {

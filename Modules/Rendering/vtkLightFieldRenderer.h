@@ -101,6 +101,22 @@ public:
 
   ///@{
   /**
+   * Tessellation of the cage's boxes (DESIGN.md 4.4): each box is split into
+   * k x k x k sub-boxes with the same deformation, which makes the warped
+   * rays piecewise linear and closer to the true, curved inverse images of
+   * the view rays. Subdivision k >= 1 (default 1: the paper's single straight
+   * warped ray per box); 0 = automatic: per box, the smallest k (up to 8)
+   * that brings the map's nonlinearity under SubdivisionTolerance x the box
+   * size (default 0.001).
+   */
+  vtkSetClampMacro(Subdivision, int, 0, 64);
+  vtkGetMacro(Subdivision, int);
+  vtkSetClampMacro(SubdivisionTolerance, double, 1e-9, 1.0);
+  vtkGetMacro(SubdivisionTolerance, double);
+  ///@}
+
+  ///@{
+  /**
    * Views left out of the sampling, with their near-duplicates
    * (leave-one-out evaluation).
    */
@@ -148,6 +164,8 @@ protected:
   double FocalDistance = 0.0;
   double Background[3] = { 0.0, 0.0, 0.0 };
   bool UseLabels = true;
+  int Subdivision = 1;
+  double SubdivisionTolerance = 1e-3;
   std::vector<int> ExcludedViews;
 
 private:

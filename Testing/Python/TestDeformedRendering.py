@@ -48,13 +48,14 @@ def side_camera(rig, azimuth=0.35, angle=22.0):
     return camera
 
 
-def evaluate(name, source, lf, cage, camera):
+def evaluate(name, source, lf, cage, camera, subdivision=1):
     ev = lfd.vtkGroundTruthEvaluator()
     ev.SetInputData(lf)
     ev.SetMeshConnection(source.GetOutputPort())
     ev.SetTextureConnection(source.GetOutputPort(1))
     ev.SetCageData(cage)
     ev.SetCamera(camera)
+    ev.SetSubdivision(subdivision)
     ev.SetWidth(SIZE)
     ev.SetHeight(SIZE)
     ev.Update()
@@ -144,6 +145,20 @@ figure_parts.Update()
 camera = side_camera(figure_lf.GetRig(), azimuth=0.2, angle=26.0)
 twist = posed(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 45.0)
 expect("figure twist", evaluate("figure twist", figure, figure_lf, twist, camera), *TWIST)
+# Tessellation (beyond the paper): a 90-degree twist bends the inverse images
+# of view rays; splitting the boxes into 2^3 sub-boxes (or the automatic
+# choice) follows them better (measured: 15.09 -> 17.26 dB, SSIM 0.627 ->
+# 0.756 at k = 2; 16.53 dB automatic).
+strong = posed(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 90.0)
+plain = evaluate("twist 90 k=1", figure, figure_lf, strong, camera, 1)
+split = evaluate("twist 90 k=2", figure, figure_lf, strong, camera, 2)
+automatic = evaluate("twist 90 auto", figure, figure_lf, strong, camera, 0)
+t.check(split.GetPSNR() > plain.GetPSNR() + 1.5, "subdivision 2 gains > 1.5 dB on a 90-degree twist",
+        split.GetPSNR() - plain.GetPSNR())
+t.check(split.GetSSIM() > plain.GetSSIM() + 0.05, "subdivision 2 gains > 0.05 SSIM",
+        split.GetSSIM() - plain.GetSSIM())
+t.check(automatic.GetPSNR() > plain.GetPSNR() + 1.0, "automatic subdivision gains > 1 dB",
+        automatic.GetPSNR() - plain.GetPSNR())
 bend = posed(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.BEND, 30.0, (0, 0, 1))
 expect("figure bend", evaluate("figure bend", figure, figure_lf, bend, camera), *BEND)
 t.finish()
