@@ -617,11 +617,12 @@ vtkSmartPointer<vtkPolyData> SourceMesh(const std::string& name,
 
 int EvalGroundTruth(const std::string& scenePath,
   const std::string& meshName,
-  const std::string& out)
+  const std::string& out,
+  const double* time)
 {
   auto scene = ReadScene(scenePath);
   auto lightField = ReadLightField(scene->GetResolvedLightFieldPath());
-  auto cage = SceneCage(scene, lightField);
+  auto cage = SceneCage(scene, lightField, time);
   vtkSmartPointer<vtkImageData> texture;
   auto mesh = SourceMesh(meshName, texture);
   vtkNew<vtkGroundTruthEvaluator> evaluator;
@@ -898,6 +899,9 @@ int main(int argc, char* argv[])
       "--mesh", gtMesh, "the light field's source: fish, figure, checkerboard or a mesh file")
     ->required();
   groundTruth->add_option("--out", gtOut, "also write OUT_lightfield.png and OUT_groundtruth.png");
+  double gtTime = 0.0;
+  auto* gtTimeOption = groundTruth->add_option(
+    "--time", gtTime, "time of the keyframes to evaluate (default: the cage's points)");
   std::string looPath;
   int looStride = 1;
   std::vector<int> looViews;
@@ -954,7 +958,7 @@ int main(int argc, char* argv[])
     }
     if (*groundTruth)
     {
-      return EvalGroundTruth(gtScene, gtMesh, gtOut);
+      return EvalGroundTruth(gtScene, gtMesh, gtOut, *gtTimeOption ? &gtTime : nullptr);
     }
     if (*loo)
     {
