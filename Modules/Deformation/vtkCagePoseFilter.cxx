@@ -49,11 +49,7 @@ void ArcTerms(double phi, double& sinc, double& cosc)
 }
 
 //------------------------------------------------------------------------------
-vtkCagePoseFilter::vtkCagePoseFilter()
-{
-  this->SetNumberOfInputPorts(1);
-  this->SetNumberOfOutputPorts(1);
-}
+vtkCagePoseFilter::vtkCagePoseFilter() {}
 
 //------------------------------------------------------------------------------
 vtkCagePoseFilter::~vtkCagePoseFilter() = default;
@@ -75,59 +71,9 @@ void vtkCagePoseFilter::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-void vtkCagePoseFilter::SetInputData(vtkDataObject* input)
-{
-  this->SetInputDataObject(0, input);
-}
-
-//------------------------------------------------------------------------------
-vtkDeformationCage* vtkCagePoseFilter::GetOutput()
-{
-  return vtkDeformationCage::SafeDownCast(this->GetOutputDataObject(0));
-}
-
-//------------------------------------------------------------------------------
 int vtkCagePoseFilter::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkCagePoseFilter::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDeformationCage");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-vtkTypeBool vtkCagePoseFilter::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inInfo,
-  vtkInformationVector* outInfo)
-{
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
-  {
-    return this->RequestDataObject(request, inInfo, outInfo);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inInfo, outInfo);
-  }
-  return this->Superclass::ProcessRequest(request, inInfo, outInfo);
-}
-
-//------------------------------------------------------------------------------
-int vtkCagePoseFilter::RequestDataObject(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outInfo)
-{
-  // VTK 9.1 cannot instantiate module types from DATA_TYPE_NAME.
-  vtkInformation* info = outInfo->GetInformationObject(0);
-  if (!vtkDeformationCage::GetData(info))
-  {
-    vtkNew<vtkDeformationCage> cage;
-    info->Set(vtkDataObject::DATA_OBJECT(), cage);
-  }
   return 1;
 }
 

@@ -41,15 +41,15 @@
 #define vtkCagePoseFilter_h
 
 #include "lfdDeformationModule.h" // For export macro
-#include "vtkAlgorithm.h"
+#include "vtkDeformationCageAlgorithm.h"
 
 class vtkDeformationCage;
 
-class LFDDEFORMATION_EXPORT vtkCagePoseFilter : public vtkAlgorithm
+class LFDDEFORMATION_EXPORT vtkCagePoseFilter : public vtkDeformationCageAlgorithm
 {
 public:
   static vtkCagePoseFilter* New();
-  vtkTypeMacro(vtkCagePoseFilter, vtkAlgorithm);
+  vtkTypeMacro(vtkCagePoseFilter, vtkDeformationCageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum PoseMode
@@ -130,28 +130,12 @@ public:
    */
   vtkGetMacro(NumberOfLayers, int);
 
-  /**
-   * Sets the cage to pose (input port 0).
-   */
-  void SetInputData(vtkDataObject* input);
-
-  /**
-   * The posed cage (output port 0).
-   */
-  vtkDeformationCage* GetOutput();
-
-  vtkTypeBool ProcessRequest(vtkInformation* request,
-    vtkInformationVector** inInfo,
-    vtkInformationVector* outInfo) override;
-
 protected:
   vtkCagePoseFilter();
   ~vtkCagePoseFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Mode = TWIST;
   double Angle = 45.0;

@@ -1,5 +1,7 @@
 #include "vtkPartCageSource.h"
 
+#include "lfdTrilinear.h"
+
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -36,11 +38,7 @@ struct PartExtent
 }
 
 //------------------------------------------------------------------------------
-vtkPartCageSource::vtkPartCageSource()
-{
-  this->SetNumberOfInputPorts(1);
-  this->SetNumberOfOutputPorts(1);
-}
+vtkPartCageSource::vtkPartCageSource() {}
 
 //------------------------------------------------------------------------------
 vtkPartCageSource::~vtkPartCageSource() = default;
@@ -55,59 +53,9 @@ void vtkPartCageSource::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-void vtkPartCageSource::SetInputData(vtkDataObject* input)
-{
-  this->SetInputDataObject(0, input);
-}
-
-//------------------------------------------------------------------------------
-vtkDeformationCage* vtkPartCageSource::GetOutput()
-{
-  return vtkDeformationCage::SafeDownCast(this->GetOutputDataObject(0));
-}
-
-//------------------------------------------------------------------------------
 int vtkPartCageSource::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkPartCageSource::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDeformationCage");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-vtkTypeBool vtkPartCageSource::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inInfo,
-  vtkInformationVector* outInfo)
-{
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
-  {
-    return this->RequestDataObject(request, inInfo, outInfo);
-  }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-  {
-    return this->RequestData(request, inInfo, outInfo);
-  }
-  return this->Superclass::ProcessRequest(request, inInfo, outInfo);
-}
-
-//------------------------------------------------------------------------------
-int vtkPartCageSource::RequestDataObject(vtkInformation*,
-  vtkInformationVector**,
-  vtkInformationVector* outInfo)
-{
-  // VTK 9.1 cannot instantiate module types from DATA_TYPE_NAME.
-  vtkInformation* info = outInfo->GetInformationObject(0);
-  if (!vtkDeformationCage::GetData(info))
-  {
-    vtkNew<vtkDeformationCage> cage;
-    info->Set(vtkDataObject::DATA_OBJECT(), cage);
-  }
   return 1;
 }
 
@@ -271,14 +219,7 @@ int vtkPartCageSource::RequestData(vtkInformation*,
       }
     }
   }
-  constexpr int corner[8][3] = { { 0, 0, 0 },
-    { 1, 0, 0 },
-    { 1, 1, 0 },
-    { 0, 1, 0 },
-    { 0, 0, 1 },
-    { 1, 0, 1 },
-    { 1, 1, 1 },
-    { 0, 1, 1 } };
+  const auto& corner = lfd::HexCorner; // VTK hexahedron order
   for (size_t k = 0; k < numberOfParts; ++k)
   {
     vtkIdType ids[8];

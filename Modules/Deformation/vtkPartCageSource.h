@@ -39,15 +39,15 @@
 #define vtkPartCageSource_h
 
 #include "lfdDeformationModule.h" // For export macro
-#include "vtkAlgorithm.h"
+#include "vtkDeformationCageAlgorithm.h"
 
 class vtkDeformationCage;
 
-class LFDDEFORMATION_EXPORT vtkPartCageSource : public vtkAlgorithm
+class LFDDEFORMATION_EXPORT vtkPartCageSource : public vtkDeformationCageAlgorithm
 {
 public:
   static vtkPartCageSource* New();
-  vtkTypeMacro(vtkPartCageSource, vtkAlgorithm);
+  vtkTypeMacro(vtkPartCageSource, vtkDeformationCageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -75,28 +75,12 @@ public:
    */
   vtkGetMacro(UsedAxis, int);
 
-  /**
-   * Sets the labelled mesh (input port 0).
-   */
-  void SetInputData(vtkDataObject* input);
-
-  /**
-   * The cage (output port 0).
-   */
-  vtkDeformationCage* GetOutput();
-
-  vtkTypeBool ProcessRequest(vtkInformation* request,
-    vtkInformationVector** inInfo,
-    vtkInformationVector* outInfo) override;
-
 protected:
   vtkPartCageSource();
   ~vtkPartCageSource() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Axis = -1;
   double Margin = 0.05;

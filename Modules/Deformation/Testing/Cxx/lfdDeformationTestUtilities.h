@@ -5,6 +5,7 @@
 #ifndef lfdDeformationTestUtilities_h
 #define lfdDeformationTestUtilities_h
 
+#include "lfdTrilinear.h"
 #include "vtkDeformationCage.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -23,14 +24,7 @@ inline void AddBoxPoints(vtkDeformationCage* cage,
   const double hi[3],
   vtkIdType ids[8])
 {
-  constexpr int corner[8][3] = { { 0, 0, 0 },
-    { 1, 0, 0 },
-    { 1, 1, 0 },
-    { 0, 1, 0 },
-    { 0, 0, 1 },
-    { 1, 0, 1 },
-    { 1, 1, 1 },
-    { 0, 1, 1 } };
+  const auto& corner = lfd::HexCorner;
   for (int i = 0; i < 8; ++i)
   {
     const double p[3] = {
