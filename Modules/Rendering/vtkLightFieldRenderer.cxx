@@ -9,6 +9,7 @@
 #include "vtkCameraRig.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -229,11 +230,18 @@ struct RenderRows
   std::uint8_t Background[3];
   std::uint8_t* Radiance; // output, VTK row order
   std::uint8_t* Labels;
+  float* Depths;
+  glm::dvec3 Forward; // the camera's optical axis: d's camera z is 1
 
   static constexpr int MaxSegments = 64;
 
-  /// Label and colour seen along the view ray; label -1 when nothing is seen.
-  int Shade(const glm::dvec3& d, glm::dvec3& color) const
+  /**
+   * Label and colour seen along the view ray d (camera z component 1);
+   * label -1 when nothing is seen. `depth` (camera z) approximates where:
+   * the middle of the accepted segment in its box, or the focal point of a
+   * ray that matched no box.
+   */
+  int Shade(const glm::dvec3& d, glm::dvec3& color, double& depth) const
   {
     lfd::RaySamples samples;
     BoxSegment segments[MaxSegments];
@@ -269,6 +277,7 @@ struct RenderRows
       if (lfd::VoteLabel(samples) == label)
       {
         lfd::BlendLabel(samples, label, color);
+        depth = 0.5 * (segment.TEnter + segment.TExit);
         return label;
       }
     }
@@ -276,6 +285,10 @@ struct RenderRows
     {
       return -1;
     }
+    depth = glm::dot(
+      lfd::FocalPoint(this->Sampler.Layout->Cyl, this->Origin, d, this->Sampler.FocalDistance) -
+        this->Origin,
+      this->Forward);
     if (!this->UseLabels)
     {
       lfd::BlendLabel(samples, 0, color);
@@ -307,13 +320,16 @@ struct RenderRows
         const vtkIdType id = j * this->Width + x;
         std::uint8_t* rgb = this->Radiance + 3 * id;
         glm::dvec3 color;
-        const int label = this->Shade(this->PixelToDirection * glm::dvec3(x, y, 1.0), color);
+        double depth = 0.0;
+        const int label = this->Shade(this->PixelToDirection * glm::dvec3(x, y, 1.0), color, depth);
         this->Labels[id] = static_cast<std::uint8_t>(std::max(label, 0));
         if (label < 0 || (this->UseLabels && label == 0))
         {
           std::copy(this->Background, this->Background + 3, rgb);
+          this->Depths[id] = 0.0f;
           continue;
         }
+        this->Depths[id] = static_cast<float>(depth);
         for (int c = 0; c < 3; ++c)
         {
           rgb[c] = static_cast<std::uint8_t>(std::clamp(std::lround(color[c]), 0L, 255L));
@@ -521,6 +537,9 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   vtkNew<vtkUnsignedCharArray> imageLabels;
   imageLabels->SetName("Label");
   imageLabels->SetNumberOfTuples(image->GetNumberOfTuples());
+  vtkNew<vtkFloatArray> imageDepths;
+  imageDepths->SetName("Depth");
+  imageDepths->SetNumberOfTuples(image->GetNumberOfTuples());
 
   RenderRows functor{ sampler,
     boxes,
@@ -532,7 +551,9 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     useLabels,
     {},
     image->GetPointer(0),
-    imageLabels->GetPointer(0) };
+    imageLabels->GetPointer(0),
+    imageDepths->GetPointer(0),
+    eye.Forward() };
   for (int c = 0; c < 3; ++c)
   {
     functor.Background[c] =
@@ -542,6 +563,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
 
   output->GetPointData()->SetScalars(image);
   output->GetPointData()->AddArray(imageLabels);
+  output->GetPointData()->AddArray(imageDepths);
   return 1;
 }
 

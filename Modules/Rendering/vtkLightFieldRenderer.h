@@ -22,7 +22,9 @@
  *
  * The output is a Width x Height vtkImageData in VTK row order (bottom row
  * first) with the point arrays `Radiance` (RGB uint8, the active scalars)
- * and `Label` (uint8, the winning label; 0 also where no view sees the ray).
+ * `Label` (uint8, the winning label; 0 also where no view sees the ray) and
+ * `Depth` (float, camera z of the seen point, approximate: the middle of the
+ * accepted segment inside its box, or the focal point; 0 on background).
  * Rendering runs in parallel over image rows with vtkSMPTools.
  *
  * @sa vtkLightField vtkCameraRig vtkLeaveOneOutEvaluator

@@ -1,0 +1,114 @@
+/**
+ * @class   vtkLightFieldMapper
+ * @brief   draws a (deformed) light field inside a vtkRenderer
+ *
+ * vtkLightFieldMapper is the image-based mapper of a vtkLightFieldActor: at
+ * each render it asks vtkLightFieldRenderer for the view of the renderer's
+ * active camera at the viewport's size (input port 0: the vtkLightField;
+ * port 1, optional: the deformation cage) and draws it as a full-viewport
+ * quad that also writes depth, so ordinary VTK actors (the cage outline,
+ * widgets) composite with it. Depth is approximate (see
+ * vtkLightFieldRenderer's `Depth` array): the middle of the part's box along
+ * the ray. Background pixels are not drawn.
+ *
+ * The image is recomputed only when the camera, the cage, the light field or
+ * the viewport size change (pipeline modification times). While the render
+ * window renders at an interactive rate (DesiredUpdateRate at least
+ * InteractiveUpdateRate, which vtkRenderWindowInteractor sets during
+ * interaction) the image is computed at 1 / InteractiveSubsampling of the
+ * resolution and magnified; the next still render is full resolution
+ * (progressive refinement).
+ *
+ * @sa vtkLightFieldActor vtkLightFieldRenderer
+ */
+#ifndef vtkLightFieldMapper_h
+#define vtkLightFieldMapper_h
+
+#include "lfdRenderingModule.h" // For export macro
+#include "vtkAbstractMapper3D.h"
+
+#include <memory> // For std::unique_ptr
+
+class vtkLightFieldRenderer;
+class vtkRenderer;
+class vtkWindow;
+
+class LFDRENDERING_EXPORT vtkLightFieldMapper : public vtkAbstractMapper3D
+{
+public:
+  static vtkLightFieldMapper* New();
+  vtkTypeMacro(vtkLightFieldMapper, vtkAbstractMapper3D);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The light field (port 0) and the optional cage (port 1).
+   */
+  void SetInputConnection(vtkAlgorithmOutput* output)
+  {
+    this->Superclass::SetInputConnection(output);
+  }
+  void SetInputData(vtkDataObject* lightField);
+  void SetCageConnection(vtkAlgorithmOutput* output);
+  void SetCageData(vtkDataObject* cage);
+  ///@}
+
+  ///@{
+  /**
+   * Interactive renders: at or above this desired update rate (frames per
+   * second) the image is computed at 1 / InteractiveSubsampling of the
+   * viewport's resolution. Defaults 1.0 and 4.
+   */
+  vtkSetMacro(InteractiveUpdateRate, double);
+  vtkGetMacro(InteractiveUpdateRate, double);
+  vtkSetClampMacro(InteractiveSubsampling, int, 1, 64);
+  vtkGetMacro(InteractiveSubsampling, int);
+  ///@}
+
+  /**
+   * The light-field renderer the mapper drives (for focal distance,
+   * subdivision, background...).
+   */
+  vtkLightFieldRenderer* GetLightFieldRenderer();
+
+  /**
+   * Size of the image computed by the last render (smaller than the viewport
+   * while interacting).
+   */
+  vtkGetVector2Macro(LastImageSize, int);
+
+  /**
+   * Computes the view of `renderer`'s active camera and draws it.
+   */
+  void Render(vtkRenderer* renderer);
+
+  ///@{
+  /**
+   * Bounds of what the light field can show: the deformed cage's bounds
+   * joined with a box of half the rig radius around the rig centre.
+   */
+  double* GetBounds() override;
+  using vtkAbstractMapper3D::GetBounds;
+  ///@}
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkLightFieldMapper();
+  ~vtkLightFieldMapper() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  double InteractiveUpdateRate = 1.0;
+  int InteractiveSubsampling = 4;
+  int LastImageSize[2] = { 0, 0 };
+
+private:
+  vtkLightFieldMapper(const vtkLightFieldMapper&) = delete;
+  void operator=(const vtkLightFieldMapper&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

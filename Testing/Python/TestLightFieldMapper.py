@@ -1,0 +1,120 @@
+"""vtkLightFieldActor / vtkLightFieldMapper in a vtkRenderer: the swimming
+fish drawn with its cage outline (regression image, as VTK's tests do), depth
+compositing with ordinary actors (a plane in front of the fish hides it, one
+behind does not), and progressive refinement (a quarter of the resolution
+while the window renders at an interactive rate, full resolution when
+still)."""
+
+import os
+
+import lfdtesting as t
+from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
+from vtkmodules.vtkFiltersSources import vtkPlaneSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow,
+                                         vtkRenderer, vtkWindowToImageFilter)
+from vtkmodules.vtkTestingRendering import vtkTesting
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factory)
+
+import lfd
+
+fish = lfd.vtkProceduralObjectSource()
+fish.SetObjectToFish()
+capture = lfd.vtkLightFieldCapture()
+capture.SetInputConnection(fish.GetOutputPort())
+capture.SetNumberOfRows(1)
+capture.SetViewsPerRing(60)
+capture.SetWidth(128)
+capture.SetHeight(128)
+capture.CaptureDepthOff()
+parts = lfd.vtkPartCageSource()
+parts.SetInputConnection(fish.GetOutputPort())
+pose = lfd.vtkCagePoseFilter()
+pose.SetInputConnection(parts.GetOutputPort())
+pose.SetModeToSwim()
+pose.SetAngle(20)
+pose.SetTurnAxis(0, 0, 1)
+pose.SetPhase(1.0)
+
+mapper = lfd.vtkLightFieldMapper()
+mapper.SetInputConnection(capture.GetOutputPort())
+mapper.SetCageConnection(pose.GetOutputPort())
+actor = lfd.vtkLightFieldActor()
+actor.SetMapper(mapper)
+edges = vtkExtractEdges()
+edges.SetInputConnection(pose.GetOutputPort())
+outline_mapper = vtkPolyDataMapper()
+outline_mapper.SetInputConnection(edges.GetOutputPort())
+outline = vtkActor()
+outline.SetMapper(outline_mapper)
+outline.GetProperty().SetColor(1.0, 0.2, 0.2)
+outline.GetProperty().SetLineWidth(2)
+
+renderer = vtkRenderer()
+renderer.AddActor(actor)
+renderer.AddActor(outline)
+renderer.SetBackground(0.1, 0.1, 0.2)
+window = vtkRenderWindow()
+window.SetSize(300, 300)
+window.SetMultiSamples(0)
+window.AddRenderer(renderer)
+camera = renderer.GetActiveCamera()
+camera.SetPosition(0.6, 0.05, 3.0)
+camera.SetFocalPoint(0, 0, 0)
+camera.SetViewUp(0, 1, 0)
+camera.SetViewAngle(30)
+renderer.ResetCameraClippingRange()
+window.Render()
+t.check(tuple(mapper.GetLastImageSize()) == (300, 300), "still render at full resolution",
+        mapper.GetLastImageSize())
+
+testing = vtkTesting()
+for arg in ("-V", os.path.join(t.BASELINE_DIR, "TestLightFieldMapper.png"), "-T", t.TEMP_DIR):
+    testing.AddArgument(arg)
+testing.SetRenderWindow(window)
+result = testing.RegressionTest(10.0)
+t.check(result == vtkTesting.PASSED, "fish and cage outline match the baseline", result)
+
+
+def fish_pixels_left():
+    """Pixels of the left half that show the fish (not background, not plane)."""
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    rgb = t.image_array(grab.GetOutput())[:, :140, :3].astype(int)
+    background = (abs(rgb[..., 0] - 26) < 4) & (abs(rgb[..., 2] - 51) < 4)
+    green_plane = (rgb[..., 1] > 200) & (rgb[..., 0] < 60)
+    return int((~background & ~green_plane).sum())
+
+
+renderer.RemoveActor(outline)
+plane = vtkPlaneSource()
+plane.SetOrigin(-3.0, -1.5, 0.0)
+plane.SetPoint1(0.1, -1.5, 0.0)
+plane.SetPoint2(-3.0, 1.5, 0.0)
+plane_mapper = vtkPolyDataMapper()
+plane_mapper.SetInputConnection(plane.GetOutputPort())
+plane_actor = vtkActor()
+plane_actor.SetMapper(plane_mapper)
+plane_actor.GetProperty().SetColor(0.0, 1.0, 0.0)
+plane_actor.GetProperty().LightingOff()
+renderer.AddActor(plane_actor)
+visible = {}
+for name, z in (("in front", 0.6), ("behind", -0.6)):
+    plane_actor.SetPosition(0.0, 0.0, z)
+    renderer.ResetCameraClippingRange()
+    window.Render()
+    visible[name] = fish_pixels_left()
+print("fish pixels in the left half:", visible)
+t.check(visible["in front"] < 50, "a plane in front of the fish hides it", visible["in front"])
+t.check(visible["behind"] > 2000, "a plane behind the fish does not", visible["behind"])
+
+window.SetDesiredUpdateRate(15.0)
+window.Render()
+t.check(tuple(mapper.GetLastImageSize()) == (75, 75), "interactive render at a quarter resolution",
+        mapper.GetLastImageSize())
+window.SetDesiredUpdateRate(0.0001)
+window.Render()
+t.check(tuple(mapper.GetLastImageSize()) == (300, 300), "back to full resolution when still",
+        mapper.GetLastImageSize())
+t.finish()
