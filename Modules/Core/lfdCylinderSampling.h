@@ -323,20 +323,33 @@ struct LightFieldSampler
 /// Weighted vote of the samples' labels; -1 when there is no sample.
 inline int VoteLabel(const RaySamples& samples)
 {
-  int best = -1;
-  double bestWeight = 0.0;
+  // The distinct labels in order of first appearance and their weights
+  // (at most 16), then the heaviest; ties go to the first seen.
+  int labels[16];
+  double weights[16];
+  int distinct = 0;
   for (int i = 0; i < samples.Count; ++i)
   {
-    const int label = samples.Samples[i].Label;
-    double weight = 0.0;
-    for (int j = 0; j < samples.Count; ++j)
+    int k = 0;
+    while (k < distinct && labels[k] != samples.Samples[i].Label)
     {
-      weight += samples.Samples[j].Label == label ? samples.Samples[j].Weight : 0.0;
+      ++k;
     }
-    if (weight > bestWeight)
+    if (k == distinct)
     {
-      best = label;
-      bestWeight = weight;
+      labels[distinct] = samples.Samples[i].Label;
+      weights[distinct++] = 0.0;
+    }
+    weights[k] += samples.Samples[i].Weight;
+  }
+  int best = -1;
+  double bestWeight = 0.0;
+  for (int k = 0; k < distinct; ++k)
+  {
+    if (weights[k] > bestWeight)
+    {
+      best = labels[k];
+      bestWeight = weights[k];
     }
   }
   return best;
