@@ -22,22 +22,8 @@
 
 namespace
 {
-/// The text of a vtkErrorMacro event without its "ERROR: In file, line"
-/// header and object address, so that ctest's "ERROR: " regex stays quiet.
-std::string ErrorText(const std::string& event)
-{
-  const size_t line = event.find('\n');
-  const size_t text = event.find("): ", line == std::string::npos ? 0 : line);
-  const std::string body = text == std::string::npos ? event : event.substr(text + 3);
-  return body.substr(0, body.find('\n'));
-}
-
-bool Near(const char* what, double value, double expected, double tolerance = 1e-9)
-{
-  const bool ok = std::abs(value - expected) <= tolerance;
-  std::printf("%s %s: %.12g (expected %.12g)\n", ok ? "ok  " : "FAIL", what, value, expected);
-  return ok;
-}
+using lfdtest::ErrorText;
+using lfdtest::Near;
 
 /// The turn in degrees of layer k (points 4k..4k+3 of a slab cage along x)
 /// about `axis`: the rotation of its z edge (points 4k -> 4k+1).

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace lfdtest
 {
@@ -73,6 +74,23 @@ inline void TwistPoint(double angle, const double p[3], double q[3])
   q[0] = (1 - w) * p[0] + w * (c * p[0] - s * p[1]);
   q[1] = (1 - w) * p[1] + w * (s * p[0] + c * p[1]);
   q[2] = p[2];
+}
+
+/// The text of a vtkErrorMacro event without its "ERROR: In file, line"
+/// header and object address, so that ctest's "ERROR: " regex stays quiet.
+inline std::string ErrorText(const std::string& event)
+{
+  const size_t line = event.find('\n');
+  const size_t text = event.find("): ", line == std::string::npos ? 0 : line);
+  const std::string body = text == std::string::npos ? event : event.substr(text + 3);
+  return body.substr(0, body.find('\n'));
+}
+
+inline bool Near(const char* what, double value, double expected, double tolerance = 1e-9)
+{
+  const bool ok = std::abs(value - expected) <= tolerance;
+  std::printf("%s %s: %.12g (expected %.12g)\n", ok ? "ok  " : "FAIL", what, value, expected);
+  return ok;
 }
 
 inline bool Check(bool condition, const char* what)
