@@ -3,6 +3,7 @@
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -23,24 +24,50 @@ const char* const PassNames[vtkLightField::NUMBER_OF_PASSES] = { "Coaxial",
   "Coded",
   "Flood",
   "Label",
-  "Depth" };
+  "Depth",
+  "Confidence" };
 }
 
 //------------------------------------------------------------------------------
 vtkLightField::vtkLightField()
 {
   this->Rig = vtkCameraRig::New();
+  this->Projectors = vtkCameraRig::New();
 }
 
 //------------------------------------------------------------------------------
 vtkLightField::~vtkLightField()
 {
   this->SetRig(nullptr);
+  this->SetProjectors(nullptr);
+  this->SetProjectorMasks(nullptr);
   this->SetProvenance(nullptr);
 }
 
 //------------------------------------------------------------------------------
 vtkCxxSetObjectMacro(vtkLightField, Rig, vtkCameraRig);
+vtkCxxSetObjectMacro(vtkLightField, Projectors, vtkCameraRig);
+vtkCxxSetObjectMacro(vtkLightField, ProjectorMasks, vtkImageData);
+
+//------------------------------------------------------------------------------
+vtkUnsignedCharArray* vtkLightField::GetPalette()
+{
+  auto* palette =
+    vtkUnsignedCharArray::SafeDownCast(this->GetFieldData()->GetAbstractArray("LabelPalette"));
+  return palette && palette->GetNumberOfComponents() == 3 ? palette : nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightField::SetPalette(vtkUnsignedCharArray* palette)
+{
+  this->GetFieldData()->RemoveArray("LabelPalette");
+  if (palette)
+  {
+    palette->SetName("LabelPalette");
+    this->GetFieldData()->AddArray(palette);
+  }
+  this->Modified();
+}
 
 //------------------------------------------------------------------------------
 const char* vtkLightField::GetPassName(int pass)
@@ -164,6 +191,8 @@ void vtkLightField::ShallowCopy(vtkDataObject* source)
   if (vtkLightField* lightField = vtkLightField::SafeDownCast(source))
   {
     this->SetRig(lightField->GetRig());
+    this->SetProjectors(lightField->GetProjectors());
+    this->SetProjectorMasks(lightField->GetProjectorMasks());
     this->SetProvenance(lightField->GetProvenance());
   }
   this->Superclass::ShallowCopy(source);
@@ -177,6 +206,16 @@ void vtkLightField::DeepCopy(vtkDataObject* source)
     vtkNew<vtkCameraRig> rig;
     rig->DeepCopy(lightField->GetRig());
     this->SetRig(rig);
+    vtkNew<vtkCameraRig> projectors;
+    projectors->DeepCopy(lightField->GetProjectors());
+    this->SetProjectors(projectors);
+    vtkSmartPointer<vtkImageData> masks;
+    if (lightField->GetProjectorMasks())
+    {
+      masks = vtkSmartPointer<vtkImageData>::New();
+      masks->DeepCopy(lightField->GetProjectorMasks());
+    }
+    this->SetProjectorMasks(masks);
     this->SetProvenance(lightField->GetProvenance());
   }
   this->Superclass::DeepCopy(source);
@@ -210,4 +249,6 @@ void vtkLightField::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Provenance: " << (this->Provenance ? this->Provenance : "(none)") << "\n";
   os << indent << "Rig:\n";
   this->Rig->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "Projectors: " << this->Projectors->GetNumberOfViews() << "\n";
+  os << indent << "ProjectorMasks: " << (this->ProjectorMasks ? "set" : "(none)") << "\n";
 }

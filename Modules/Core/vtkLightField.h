@@ -6,9 +6,21 @@
  * runs along an image row, j along the image columns and k over the views.
  * Each illumination pass is a named point-data array (see Pass): `Coaxial`
  * (RGB uint8, the radiance used for rendering), `Coded` and `Flood` (RGB
- * uint8, projector captures), `Label` (uint8, 0 = background, 1..N = parts)
- * and `Depth` (float, distance along the camera's optical axis, 0 where no
- * surface was seen). The calibrated cameras are a vtkCameraRig.
+ * uint8, projector captures: colour masks, and the same projectors white),
+ * `Label` (uint8, 0 = background or unlabelled, 1..N = parts), `Depth`
+ * (float, distance along the camera's optical axis, 0 where no surface was
+ * seen) and `Confidence` (uint8, how sure a segmentation is of each label,
+ * 0..255). The calibrated cameras are a vtkCameraRig.
+ *
+ * **Palette.** Label i is painted (by projectors, in label images) with
+ * colour i of the palette, the field-data array "LabelPalette" (3 x uint8 per
+ * label, entry 0 = unlabelled, black); see GetPalette().
+ *
+ * **Projectors.** A light field split by projectors (Chen et al. 2005,
+ * section 4.1) also holds the projectors as a second rig (K, R, t, image
+ * size) and the colour mask each one showed: GetProjectors() and
+ * GetProjectorMasks(), a Wp x Hp x P image (one slice per projector, rows
+ * in the same order as the views) with the RGB uint8 array "Mask".
  *
  * **Row order.** Rows are stored the VTK way, bottom image row first: the
  * pixel at OpenCV coordinates (x, y) of view v (origin at the top-left pixel,
@@ -32,6 +44,7 @@ class vtkCameraRig;
 class vtkDataArray;
 class vtkInformation;
 class vtkInformationVector;
+class vtkUnsignedCharArray;
 
 class LFDCORE_EXPORT vtkLightField : public vtkImageData
 {
@@ -50,11 +63,13 @@ public:
     FLOOD,
     LABEL,
     DEPTH,
+    CONFIDENCE,
     NUMBER_OF_PASSES
   };
 
   /**
-   * Array name of a pass ("Coaxial", "Coded", "Flood", "Label", "Depth"),
+   * Array name of a pass ("Coaxial", "Coded", "Flood", "Label", "Depth",
+   * "Confidence"),
    * or nullptr for an invalid pass.
    */
   static const char* GetPassName(int pass);
@@ -116,6 +131,29 @@ public:
 
   ///@{
   /**
+   * The projectors that lit the Coded and Flood passes (K, R, t and their
+   * image size), and their masks (Wp x Hp x P, RGB uint8 point array
+   * "Mask", bottom row first). A new light field owns an empty projector
+   * rig and no masks.
+   */
+  virtual void SetProjectors(vtkCameraRig* projectors);
+  vtkGetObjectMacro(Projectors, vtkCameraRig);
+  virtual void SetProjectorMasks(vtkImageData* masks);
+  vtkGetObjectMacro(ProjectorMasks, vtkImageData);
+  ///@}
+
+  ///@{
+  /**
+   * The label palette: the field-data array "LabelPalette" (3 components,
+   * tuple i = colour of label i), or nullptr when there is none. Setting
+   * a palette renames the array "LabelPalette"; nullptr removes it.
+   */
+  vtkUnsignedCharArray* GetPalette();
+  void SetPalette(vtkUnsignedCharArray* palette);
+  ///@}
+
+  ///@{
+  /**
    * Free-form provenance (JSON text), stored in the dataset manifest.
    */
   vtkSetStringMacro(Provenance);
@@ -124,7 +162,8 @@ public:
 
   ///@{
   /**
-   * Shallow copies share the rig; deep copies copy it.
+   * Shallow copies share the rig, the projectors and their masks; deep
+   * copies copy them.
    */
   void ShallowCopy(vtkDataObject* source) override;
   void DeepCopy(vtkDataObject* source) override;
@@ -143,6 +182,8 @@ protected:
   ~vtkLightField() override;
 
   vtkCameraRig* Rig = nullptr;
+  vtkCameraRig* Projectors = nullptr;
+  vtkImageData* ProjectorMasks = nullptr;
   char* Provenance = nullptr;
 
 private:

@@ -8,10 +8,12 @@
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -52,6 +54,10 @@ struct Manifest
   std::vector<std::string> Images[vtkLightField::NUMBER_OF_PASSES];
   bool HasPass[vtkLightField::NUMBER_OF_PASSES] = {};
   std::vector<std::array<unsigned char, 3>> Palette;
+  int ProjectorWidth = 0;
+  int ProjectorHeight = 0;
+  std::vector<ManifestView> Projectors;
+  std::vector<std::string> Masks;
   bool HasProvenance = false;
   std::string Provenance;
 };
@@ -101,6 +107,77 @@ std::array<double, N> GetArray(const Json& object, const std::string& parent, co
   return result;
 }
 
+// The views of a rig (lightfield.json "views" or "projectors.views"):
+// a non-empty array of {name, K, R, t}.
+std::vector<ManifestView> ParseViews(const Json& views, const std::string& key)
+{
+  if (!views.is_array() || views.empty())
+  {
+    throw FieldError(
+      key, "expected a non-empty array of views, found " + lfd::io::Describe(views));
+  }
+  std::vector<ManifestView> parsed;
+  for (size_t i = 0; i < views.size(); ++i)
+  {
+    const std::string path = ElementPath(key, i);
+    ManifestView view;
+    if (const Json* name = lfd::io::FindMember(views[i], path, "name"))
+    {
+      view.Name = lfd::io::GetString(*name, MemberPath(path, "name"));
+    }
+    view.K = GetArray<9>(views[i], path, "K");
+    view.R = GetArray<9>(views[i], path, "R");
+    view.T = GetArray<3>(views[i], path, "t");
+    if (view.K[8] == 0.0 || view.K[0] == 0.0 || view.K[4] == 0.0)
+    {
+      throw FieldError(
+        MemberPath(path, "K"), "not an intrinsic matrix (zero focal length or K[8])");
+    }
+    if (!IsRotation(view.R))
+    {
+      throw FieldError(MemberPath(path, "R"), "not a rotation matrix (R R^T != I or det R != 1)");
+    }
+    parsed.push_back(view);
+  }
+  return parsed;
+}
+
+// The optional "projectors": {width, height, views, masks}.
+void ParseProjectors(const Json& document, Manifest& manifest)
+{
+  const Json* projectors = lfd::io::FindMember(document, "", "projectors");
+  if (!projectors)
+  {
+    return;
+  }
+  if (!projectors->is_object())
+  {
+    throw FieldError("projectors",
+      "expected an object {width, height, views, masks}, found " +
+        lfd::io::Describe(*projectors));
+  }
+  manifest.ProjectorWidth = static_cast<int>(lfd::io::GetInteger(
+    lfd::io::RequireMember(*projectors, "projectors", "width"), "projectors.width", 1, 1 << 20));
+  manifest.ProjectorHeight = static_cast<int>(lfd::io::GetInteger(
+    lfd::io::RequireMember(*projectors, "projectors", "height"), "projectors.height", 1, 1 << 20));
+  manifest.Projectors =
+    ParseViews(lfd::io::RequireMember(*projectors, "projectors", "views"), "projectors.views");
+  if (const Json* masks = lfd::io::FindMember(*projectors, "projectors", "masks"))
+  {
+    if (!masks->is_array() || masks->size() != manifest.Projectors.size())
+    {
+      throw FieldError("projectors.masks",
+        "expected an array of " + std::to_string(manifest.Projectors.size()) +
+          " image file names (one per projector), found " + lfd::io::Describe(*masks));
+    }
+    for (size_t i = 0; i < masks->size(); ++i)
+    {
+      const std::string image = lfd::io::GetString((*masks)[i], ElementPath("projectors.masks", i));
+      manifest.Masks.push_back(lfd::io::ResolvePath(manifest.Folder, image));
+    }
+  }
+}
+
 // Parses and validates the manifest; throws FieldError for a malformed field,
 // std::runtime_error for anything else.
 void ParseManifest(const Json& document, Manifest& manifest)
@@ -125,34 +202,7 @@ void ParseManifest(const Json& document, Manifest& manifest)
   manifest.Height = static_cast<int>(
     lfd::io::GetInteger(lfd::io::RequireMember(document, "", "height"), "height", 1, 1 << 20));
 
-  const Json& views = lfd::io::RequireMember(document, "", "views");
-  if (!views.is_array() || views.empty())
-  {
-    throw FieldError(
-      "views", "expected a non-empty array of views, found " + lfd::io::Describe(views));
-  }
-  for (size_t i = 0; i < views.size(); ++i)
-  {
-    const std::string path = ElementPath("views", i);
-    ManifestView view;
-    if (const Json* name = lfd::io::FindMember(views[i], path, "name"))
-    {
-      view.Name = lfd::io::GetString(*name, MemberPath(path, "name"));
-    }
-    view.K = GetArray<9>(views[i], path, "K");
-    view.R = GetArray<9>(views[i], path, "R");
-    view.T = GetArray<3>(views[i], path, "t");
-    if (view.K[8] == 0.0 || view.K[0] == 0.0 || view.K[4] == 0.0)
-    {
-      throw FieldError(
-        MemberPath(path, "K"), "not an intrinsic matrix (zero focal length or K[8])");
-    }
-    if (!IsRotation(view.R))
-    {
-      throw FieldError(MemberPath(path, "R"), "not a rotation matrix (R R^T != I or det R != 1)");
-    }
-    manifest.Views.push_back(view);
-  }
+  manifest.Views = ParseViews(lfd::io::RequireMember(document, "", "views"), "views");
 
   const Json& passes = lfd::io::RequireMember(document, "", "passes");
   if (!passes.is_object())
@@ -166,7 +216,7 @@ void ParseManifest(const Json& document, Manifest& manifest)
     const int pass = vtkLightField::GetPassFromName(it.key().c_str());
     if (pass < 0)
     {
-      throw FieldError(path, "unknown pass (expected coaxial, coded, flood, label or depth)");
+      throw FieldError(path, "unknown pass (expected coaxial, coded, flood, label, depth or confidence)");
     }
     if (!it->is_array() || it->size() != manifest.Views.size())
     {
@@ -207,11 +257,29 @@ void ParseManifest(const Json& document, Manifest& manifest)
     }
   }
 
+  ParseProjectors(document, manifest);
+
   if (const Json* provenance = lfd::io::FindMember(document, "", "provenance"))
   {
     manifest.HasProvenance = true;
     manifest.Provenance =
       provenance->is_string() ? provenance->get<std::string>() : provenance->dump();
+  }
+}
+
+void FillRig(const std::vector<ManifestView>& views, int width, int height, vtkCameraRig* rig)
+{
+  rig->SetNumberOfViews(static_cast<int>(views.size()));
+  rig->SetImageSize(width, height);
+  for (size_t i = 0; i < views.size(); ++i)
+  {
+    const ManifestView& view = views[i];
+    const int index = static_cast<int>(i);
+    rig->SetView(index, view.K.data(), view.R.data(), view.T.data());
+    if (!view.Name.empty())
+    {
+      rig->SetViewName(index, view.Name.c_str());
+    }
   }
 }
 
@@ -349,17 +417,7 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
   output->SetLayout(manifest.Width, manifest.Height, views);
 
   vtkNew<vtkCameraRig> rig;
-  rig->SetNumberOfViews(views);
-  rig->SetImageSize(manifest.Width, manifest.Height);
-  for (int i = 0; i < views; ++i)
-  {
-    const ManifestView& view = manifest.Views[i];
-    rig->SetView(i, view.K.data(), view.R.data(), view.T.data());
-    if (!view.Name.empty())
-    {
-      rig->SetViewName(i, view.Name.c_str());
-    }
-  }
+  FillRig(manifest.Views, manifest.Width, manifest.Height, rig);
 
   std::vector<int> passes;
   for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
@@ -384,44 +442,49 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
       {
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       }
-      const std::string& image = manifest.Images[pass][i];
-      const std::string where = manifest.Path + ": field \"" + field + "\": image " + image;
-      lfd::io::ImageHeader header;
-      if (!lfd::io::ReadImageHeader(image, header, error, errorCode))
+      if (!this->ReadImageInto(
+            manifest.Images[pass][i], field, manifest.Width, manifest.Height, array, i, output))
       {
-        this->Fail(output, errorCode, where + ": " + error);
-        return 0;
-      }
-      if (header.Width != manifest.Width || header.Height != manifest.Height)
-      {
-        this->Fail(output,
-          vtkErrorCode::FileFormatError,
-          where + ": image is " + std::to_string(header.Width) + "x" +
-            std::to_string(header.Height) + ", the manifest says " +
-            std::to_string(manifest.Width) + "x" + std::to_string(manifest.Height));
-        return 0;
-      }
-      if (header.Channels != channels)
-      {
-        this->Fail(output,
-          vtkErrorCode::FileFormatError,
-          where + ": image has " + std::to_string(header.Channels) + " channels, the " +
-            vtkLightField::GetPassName(pass) + " pass has " + std::to_string(channels));
-        return 0;
-      }
-      if (!lfd::io::ReadViewPixels(image, header, array, i, error))
-      {
-        this->Fail(output, vtkErrorCode::FileFormatError, where + ": " + error);
         return 0;
       }
       this->UpdateProgress(++done / total);
     }
   }
 
+  if (!manifest.Projectors.empty())
+  {
+    vtkNew<vtkCameraRig> projectors;
+    FillRig(manifest.Projectors, manifest.ProjectorWidth, manifest.ProjectorHeight, projectors);
+    output->SetProjectors(projectors);
+  }
+  if (!manifest.Masks.empty())
+  {
+    vtkNew<vtkImageData> masks;
+    masks->SetDimensions(
+      manifest.ProjectorWidth, manifest.ProjectorHeight, static_cast<int>(manifest.Masks.size()));
+    vtkNew<vtkUnsignedCharArray> mask;
+    mask->SetName("Mask");
+    mask->SetNumberOfComponents(3);
+    mask->SetNumberOfTuples(masks->GetNumberOfPoints());
+    masks->GetPointData()->SetScalars(mask);
+    for (size_t i = 0; i < manifest.Masks.size(); ++i)
+    {
+      if (!this->ReadImageInto(manifest.Masks[i],
+            ElementPath("projectors.masks", i),
+            manifest.ProjectorWidth,
+            manifest.ProjectorHeight,
+            mask,
+            static_cast<int>(i),
+            output))
+      {
+        return 0;
+      }
+    }
+    output->SetProjectorMasks(masks);
+  }
   if (!manifest.Palette.empty())
   {
     vtkNew<vtkUnsignedCharArray> palette;
-    palette->SetName("LabelPalette");
     palette->SetNumberOfComponents(3);
     palette->SetNumberOfTuples(static_cast<vtkIdType>(manifest.Palette.size()));
     for (size_t i = 0; i < manifest.Palette.size(); ++i)
@@ -431,12 +494,56 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
         palette->SetTypedComponent(static_cast<vtkIdType>(i), c, manifest.Palette[i][c]);
       }
     }
-    output->GetFieldData()->AddArray(palette);
+    output->SetPalette(palette);
   }
   output->SetRig(rig);
   output->SetProvenance(manifest.HasProvenance ? manifest.Provenance.c_str() : nullptr);
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldReader::ReadImageInto(const std::string& image,
+  const std::string& field,
+  int width,
+  int height,
+  vtkDataArray* array,
+  int slice,
+  vtkLightField* output)
+{
+  const std::string& path = this->Internal->Parsed.Path;
+  const std::string where = path + ": field \"" + field + "\": image " + image;
+  const int channels = array->GetNumberOfComponents();
+  unsigned long errorCode = vtkErrorCode::NoError;
+  std::string error;
+  lfd::io::ImageHeader header;
+  if (!lfd::io::ReadImageHeader(image, header, error, errorCode))
+  {
+    this->Fail(output, errorCode, where + ": " + error);
+    return false;
+  }
+  if (header.Width != width || header.Height != height)
+  {
+    this->Fail(output,
+      vtkErrorCode::FileFormatError,
+      where + ": image is " + std::to_string(header.Width) + "x" + std::to_string(header.Height) +
+        ", the manifest says " + std::to_string(width) + "x" + std::to_string(height));
+    return false;
+  }
+  if (header.Channels != channels)
+  {
+    this->Fail(output,
+      vtkErrorCode::FileFormatError,
+      where + ": image has " + std::to_string(header.Channels) + " channels, expected " +
+        std::to_string(channels));
+    return false;
+  }
+  if (!lfd::io::ReadViewPixels(image, header, array, slice, error))
+  {
+    this->Fail(output, vtkErrorCode::FileFormatError, where + ": " + error);
+    return false;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

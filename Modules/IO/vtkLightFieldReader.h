@@ -6,7 +6,8 @@
  * and one image per view per pass (see Data/README.md for the format).
  * FileName is the directory or the manifest itself. The reader reads the
  * image size, the rig (K, R, t and name of every view), the label palette
- * (as the field-data array "LabelPalette", 3 x uint8 per label), the
+ * (vtkLightField::GetPalette()), the projectors and their masks when the
+ * manifest lists them (vtkLightField::GetProjectors(), GetProjectorMasks()), the
  * provenance (as JSON text, vtkLightField::GetProvenance()) and every pass
  * listed in the manifest, or only the passes selected with SetReadPass().
  * Images are read through OpenImageIO; their rows are flipped into
@@ -36,6 +37,8 @@
 #include <memory> // For std::unique_ptr
 
 #include <string> // For std::string
+
+class vtkDataArray;
 
 class LFDIO_EXPORT vtkLightFieldReader : public vtkLightFieldAlgorithm
 {
@@ -75,6 +78,17 @@ protected:
   int RequestData(vtkInformation* request,
     vtkInformationVector** inputs,
     vtkInformationVector* outputs) override;
+
+  // Reads one image file into slice `slice` of `array` after checking its
+  // size and channels; on failure reports the error naming the manifest,
+  // the field and the image, and returns false.
+  bool ReadImageInto(const std::string& image,
+    const std::string& field,
+    int width,
+    int height,
+    vtkDataArray* array,
+    int slice,
+    vtkLightField* output);
 
   char* FileName = nullptr;
   bool ReadPass[vtkLightField::NUMBER_OF_PASSES];

@@ -6,10 +6,11 @@
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
-#include "vtkFieldData.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkLightField.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <cctype>
@@ -57,6 +58,37 @@ Json MatrixToJson(const double* values, int count)
   }
   return array;
 }
+
+// The "views" of a rig: [{name, K, R, t}, ...].
+Json ViewsToJson(vtkCameraRig* rig)
+{
+  Json viewList = Json::array();
+  for (int i = 0; i < rig->GetNumberOfViews(); ++i)
+  {
+    double K[9], R[9], t[3];
+    rig->GetIntrinsics(i, K);
+    rig->GetRotation(i, R);
+    rig->GetTranslation(i, t);
+    Json view;
+    const char* name = rig->GetViewName(i);
+    view["name"] = name ? name : "";
+    view["K"] = MatrixToJson(K, 9);
+    view["R"] = MatrixToJson(R, 9);
+    view["t"] = MatrixToJson(t, 3);
+    viewList.push_back(view);
+  }
+  return viewList;
+}
+
+// One image file to write: slice `Slice` (Width x Height tuples) of `Array`.
+struct ImageFile
+{
+  std::string Name; // relative to the dataset directory
+  vtkDataArray* Array;
+  int Slice;
+  int Width;
+  int Height;
+};
 }
 
 //------------------------------------------------------------------------------
@@ -139,6 +171,34 @@ void vtkLightFieldWriter::WriteData()
     }
     passes.push_back(pass);
   }
+  vtkCameraRig* projectors = input->GetProjectors();
+  vtkDataArray* maskArray = nullptr;
+  if (vtkImageData* masks = input->GetProjectorMasks())
+  {
+    const int* dims = masks->GetDimensions();
+    maskArray = masks->GetPointData()->GetArray("Mask");
+    if (!maskArray || maskArray->GetDataType() != VTK_UNSIGNED_CHAR ||
+      maskArray->GetNumberOfComponents() != 3 || dims[0] != projectors->GetImageSize()[0] ||
+      dims[1] != projectors->GetImageSize()[1] || dims[2] != projectors->GetNumberOfViews())
+    {
+      this->Fail(vtkErrorCode::UnknownError,
+        directory + ": the projector masks are " + std::to_string(dims[0]) + "x" +
+          std::to_string(dims[1]) + "x" + std::to_string(dims[2]) +
+          (maskArray ? "" : " without a \"Mask\" array") + ", expected an RGB uint8 \"Mask\" of " +
+          std::to_string(projectors->GetImageSize()[0]) + "x" +
+          std::to_string(projectors->GetImageSize()[1]) + "x" +
+          std::to_string(projectors->GetNumberOfViews()) + " (projector size x projectors)");
+      return;
+    }
+  }
+  std::vector<ImageFile> files;
+  for (int pass : passes)
+  {
+    for (int i = 0; i < views; ++i)
+    {
+      files.push_back({ ImageName(pass, i), input->GetPass(pass), i, width, height });
+    }
+  }
   std::error_code ec;
   if (fs::exists(directory, ec))
   {
@@ -159,22 +219,7 @@ void vtkLightFieldWriter::WriteData()
   manifest["version"] = 1;
   manifest["width"] = width;
   manifest["height"] = height;
-  Json viewList = Json::array();
-  for (int i = 0; i < views; ++i)
-  {
-    double K[9], R[9], t[3];
-    rig->GetIntrinsics(i, K);
-    rig->GetRotation(i, R);
-    rig->GetTranslation(i, t);
-    Json view;
-    const char* name = rig->GetViewName(i);
-    view["name"] = name ? name : "";
-    view["K"] = MatrixToJson(K, 9);
-    view["R"] = MatrixToJson(R, 9);
-    view["t"] = MatrixToJson(t, 3);
-    viewList.push_back(view);
-  }
-  manifest["views"] = viewList;
+  manifest["views"] = ViewsToJson(rig);
   Json passMap = Json::object();
   for (int pass : passes)
   {
@@ -186,20 +231,40 @@ void vtkLightFieldWriter::WriteData()
     passMap[LowerCase(vtkLightField::GetPassName(pass))] = names;
   }
   manifest["passes"] = passMap;
-  if (vtkUnsignedCharArray* palette =
-        vtkUnsignedCharArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("LabelPalette")))
+  if (vtkUnsignedCharArray* palette = input->GetPalette())
   {
-    if (palette->GetNumberOfComponents() == 3)
+    Json colours = Json::array();
+    for (vtkIdType i = 0; i < palette->GetNumberOfTuples(); ++i)
     {
-      Json colours = Json::array();
-      for (vtkIdType i = 0; i < palette->GetNumberOfTuples(); ++i)
-      {
-        colours.push_back({ palette->GetTypedComponent(i, 0),
-          palette->GetTypedComponent(i, 1),
-          palette->GetTypedComponent(i, 2) });
-      }
-      manifest["palette"] = colours;
+      colours.push_back({ palette->GetTypedComponent(i, 0),
+        palette->GetTypedComponent(i, 1),
+        palette->GetTypedComponent(i, 2) });
     }
+    manifest["palette"] = colours;
+  }
+  if (projectors->GetNumberOfViews() > 0)
+  {
+    Json projectorEntry;
+    projectorEntry["width"] = projectors->GetImageSize()[0];
+    projectorEntry["height"] = projectors->GetImageSize()[1];
+    projectorEntry["views"] = ViewsToJson(projectors);
+    if (maskArray)
+    {
+      Json maskNames = Json::array();
+      for (int i = 0; i < projectors->GetNumberOfViews(); ++i)
+      {
+        char name[48];
+        std::snprintf(name, sizeof(name), "projectors/mask_%04d.png", i);
+        maskNames.push_back(name);
+        files.push_back({ name,
+          maskArray,
+          i,
+          projectors->GetImageSize()[0],
+          projectors->GetImageSize()[1] });
+      }
+      projectorEntry["masks"] = maskNames;
+    }
+    manifest["projectors"] = projectorEntry;
   }
   if (const char* provenance = input->GetProvenance())
   {
@@ -217,9 +282,9 @@ void vtkLightFieldWriter::WriteData()
       temporary + ": cannot create the directory: " + ec.message());
     return;
   }
-  for (int pass : passes)
+  for (const ImageFile& file : files)
   {
-    fs::create_directories(fs::path(temporary) / LowerCase(vtkLightField::GetPassName(pass)), ec);
+    fs::create_directories((fs::path(temporary) / file.Name).parent_path(), ec);
     if (ec)
     {
       lfd::io::RemoveQuietly(temporary);
@@ -228,32 +293,27 @@ void vtkLightFieldWriter::WriteData()
       return;
     }
   }
-  const double total = static_cast<double>(passes.size()) * views;
-  int done = 0;
   this->UpdateProgress(0.0);
   std::string error;
-  for (int pass : passes)
+  for (size_t done = 0; done < files.size(); ++done)
   {
-    vtkDataArray* array = input->GetPass(pass);
-    const int channels = vtkLightField::GetPassComponents(pass);
-    const vtkIdType viewValues = static_cast<vtkIdType>(width) * height * channels;
-    for (int i = 0; i < views; ++i)
+    const ImageFile& file = files[done];
+    const vtkIdType sliceValues =
+      static_cast<vtkIdType>(file.Width) * file.Height * file.Array->GetNumberOfComponents();
+    const std::string image = (fs::path(temporary) / file.Name).string();
+    if (!lfd::io::WriteImagePixels(image,
+          file.Width,
+          file.Height,
+          file.Array->GetNumberOfComponents(),
+          file.Array->GetDataType(),
+          file.Array->GetVoidPointer(sliceValues * file.Slice),
+          error))
     {
-      const std::string image = (fs::path(temporary) / ImageName(pass, i)).string();
-      if (!lfd::io::WriteImagePixels(image,
-            width,
-            height,
-            channels,
-            array->GetDataType(),
-            array->GetVoidPointer(viewValues * i),
-            error))
-      {
-        lfd::io::RemoveQuietly(temporary);
-        this->Fail(vtkErrorCode::OutOfDiskSpaceError, image + ": " + error);
-        return;
-      }
-      this->UpdateProgress(++done / (total + 1.0));
+      lfd::io::RemoveQuietly(temporary);
+      this->Fail(vtkErrorCode::OutOfDiskSpaceError, image + ": " + error);
+      return;
     }
+    this->UpdateProgress((done + 1.0) / (files.size() + 1.0));
   }
   const std::string manifestPath = (fs::path(temporary) / "lightfield.json").string();
   {

@@ -6,8 +6,9 @@
  * the input: 8-bit passes as PNG (`coaxial/view_0000.png`, `label/...`),
  * Depth as 32-bit float EXR (`depth/view_0000.exr`). Rows are flipped from
  * vtkLightField's order (bottom row first) to the files' (top row first). The
- * rig (K, R, t and names), the field-data array "LabelPalette" (3 x uint8 per
- * label) and the provenance are written to the manifest; provenance text
+ * rig (K, R, t and names), the label palette (vtkLightField::GetPalette()),
+ * the projectors (K, R, t, size; masks as `projectors/mask_0000.png`) and the
+ * provenance are written to the manifest; provenance text
  * that is valid JSON is stored as JSON, any other text as a JSON string. See
  * Data/README.md for the format.
  *

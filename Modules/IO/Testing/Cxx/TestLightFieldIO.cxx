@@ -1,7 +1,7 @@
 // Round trip of a light-field dataset through vtkLightFieldWriter and
-// vtkLightFieldReader: all five passes with exact pixel values and the row
-// order checked against VTK's own PNG reader, the rig, names, palette and
-// provenance; pass selection and progress events; atomic replacement of an
+// vtkLightFieldReader: every pass with exact pixel values and the row
+// order checked against VTK's own PNG reader, the rig, names, palette,
+// projectors with their masks and provenance; pass selection and progress events; atomic replacement of an
 // existing dataset.
 #include "lfdIOTestUtilities.h"
 
@@ -112,7 +112,32 @@ vtkSmartPointer<vtkLightField> MakeLightField()
   {
     palette->InsertNextTypedTuple(colour);
   }
-  lightField->GetFieldData()->AddArray(palette);
+  lightField->SetPalette(palette);
+
+  // Two projectors of 4 x 3 pixels with distinct mask colours.
+  vtkNew<vtkCameraRig> projectors;
+  rig->GetIntrinsics(0, K);
+  projectors->SetNumberOfViews(2);
+  projectors->SetImageSize(4, 3);
+  for (int p = 0; p < 2; ++p)
+  {
+    rig->GetRotation(p, R);
+    rig->GetTranslation(p, t);
+    projectors->SetView(p, K, R, t);
+  }
+  lightField->SetProjectors(projectors);
+  vtkNew<vtkImageData> masks;
+  masks->SetDimensions(4, 3, 2);
+  vtkNew<vtkUnsignedCharArray> mask;
+  mask->SetName("Mask");
+  mask->SetNumberOfComponents(3);
+  mask->SetNumberOfTuples(masks->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mask->GetNumberOfValues(); ++i)
+  {
+    mask->SetValue(i, static_cast<unsigned char>((7 * i) % 256));
+  }
+  masks->GetPointData()->SetScalars(mask);
+  lightField->SetProjectorMasks(masks);
   return lightField;
 }
 
@@ -238,6 +263,21 @@ int TestLightFieldIO(int, char*[])
     CheckEqual(palette->GetNumberOfTuples(), vtkIdType(5), "palette entries");
     CheckEqual(static_cast<int>(palette->GetTypedComponent(4, 1)), 34, "palette[4].g");
   }
+  CheckEqual(read->GetProjectors()->GetNumberOfViews(), 2, "projectors read");
+  CheckEqual(read->GetProjectors()->GetImageSize()[0], 4, "projector width");
+  Check(read->GetProjectorMasks() != nullptr, "projector masks read");
+  if (vtkImageData* masks = read->GetProjectorMasks())
+  {
+    vtkDataArray* mask = masks->GetPointData()->GetArray("Mask");
+    vtkDataArray* written = original->GetProjectorMasks()->GetPointData()->GetArray("Mask");
+    int maskMismatches = mask ? 0 : -1;
+    for (vtkIdType i = 0; mask && i < mask->GetNumberOfValues(); ++i)
+    {
+      maskMismatches += mask->GetComponent(i / 3, i % 3) == written->GetComponent(i / 3, i % 3) ? 0 : 1;
+    }
+    CheckEqual(maskMismatches, 0, "mask values differing after the round trip");
+    CheckEqual(masks->GetDimensions()[2], 2, "masks");
+  }
 
   // Only the Label pass.
   vtkNew<vtkLightFieldReader> labelsOnly;
@@ -263,6 +303,7 @@ int TestLightFieldIO(int, char*[])
   smaller->GetPointData()->RemoveArray("Coded");
   smaller->GetPointData()->RemoveArray("Flood");
   smaller->GetPointData()->RemoveArray("Depth");
+  smaller->GetPointData()->RemoveArray("Confidence");
   writer->SetInputData(smaller);
   Check(writer->Write() == 1, "rewrite over an existing dataset");
   Check(!std::filesystem::exists(dataset + "/depth"), "the old depth folder is gone");
