@@ -11,6 +11,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLight.h"
+#include "lfdPinholeCamera.h"
 #include "vtkLightField.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -27,12 +28,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkLightFieldCapture);
 vtkCxxSetObjectMacro(vtkLightFieldCapture, Rig, vtkCameraRig);
 vtkCxxSetObjectMacro(vtkLightFieldCapture, RowHeights, vtkDoubleArray);
+vtkCxxSetObjectMacro(vtkLightFieldCapture, Projectors, vtkCameraRig);
+vtkCxxSetObjectMacro(vtkLightFieldCapture, ProjectorMasks, vtkImageData);
+vtkCxxSetObjectMacro(vtkLightFieldCapture, Palette, vtkUnsignedCharArray);
 
 namespace
 {
@@ -112,6 +117,9 @@ vtkLightFieldCapture::~vtkLightFieldCapture()
 {
   this->SetRig(nullptr);
   this->SetRowHeights(nullptr);
+  this->SetProjectors(nullptr);
+  this->SetProjectorMasks(nullptr);
+  this->SetPalette(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -336,6 +344,58 @@ bool vtkLightFieldCapture::BuildRig(const double bounds[6], vtkCameraRig* rig)
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightFieldCapture::BuildProjectors(vtkCameraRig* rig, vtkCameraRig* projectors)
+{
+  if (this->Projectors)
+  {
+    projectors->DeepCopy(this->Projectors);
+    return projectors->GetNumberOfViews() > 0;
+  }
+  const int count = this->NumberOfProjectors;
+  if (count == 0 || rig->GetNumberOfViews() == 0)
+  {
+    return false;
+  }
+  // The views of the middle ring in azimuth order (all views, in order,
+  // when the rig has no fitted cylinder).
+  std::vector<int> ring;
+  const int middle = rig->GetNumberOfRows() / 2;
+  for (int i = 0; i < rig->GetNumberOfViews(); ++i)
+  {
+    if (rig->GetNumberOfRows() == 0 || rig->GetRow(i) == middle)
+    {
+      ring.push_back(i);
+    }
+  }
+  if (rig->GetNumberOfRows() > 0)
+  {
+    std::sort(ring.begin(),
+      ring.end(),
+      [rig](int a, int b) { return rig->GetAzimuth(a) < rig->GetAzimuth(b); });
+  }
+  const int width = this->ProjectorWidth > 0 ? this->ProjectorWidth : rig->GetImageSize()[0];
+  const int height = this->ProjectorHeight > 0 ? this->ProjectorHeight : rig->GetImageSize()[1];
+  projectors->SetNumberOfViews(count);
+  projectors->SetImageSize(width, height);
+  for (int p = 0; p < count; ++p)
+  {
+    const int view = ring[static_cast<size_t>((p + 0.5) * ring.size() / count) % ring.size()];
+    // The camera's pose and field of view at the projector's resolution.
+    lfd::PinholeCamera projector = rig->GetCamera(view);
+    const double sx = static_cast<double>(width) / rig->GetImageSize()[0];
+    const double sy = static_cast<double>(height) / rig->GetImageSize()[1];
+    projector.K[0][0] *= sx;
+    projector.K[2][0] = (projector.K[2][0] + 0.5) * sx - 0.5;
+    projector.K[1][1] *= sy;
+    projector.K[2][1] = (projector.K[2][1] + 0.5) * sy - 0.5;
+    projectors->SetView(p, projector);
+    std::string name = "projector_" + std::to_string(p);
+    projectors->SetViewName(p, name.c_str());
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkLightFieldCapture::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
@@ -385,6 +445,73 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
     : nullptr;
   auto* depth = this->CaptureDepth
     ? static_cast<float*>(output->AllocatePass(vtkLightField::DEPTH)->GetVoidPointer(0))
+    : nullptr;
+
+  // Projectors: their rig, masks (painted or generated) and passes.
+  vtkNew<vtkCameraRig> projectors;
+  const bool project = this->BuildProjectors(rig, projectors);
+  const int projectorCount = project ? projectors->GetNumberOfViews() : 0;
+  const int projectorWidth = project ? projectors->GetImageSize()[0] : 0;
+  const int projectorHeight = project ? projectors->GetImageSize()[1] : 0;
+  const vtkIdType projectorPixels = static_cast<vtkIdType>(projectorWidth) * projectorHeight;
+  vtkNew<vtkImageData> masks;
+  vtkUnsignedCharArray* maskArray = nullptr;
+  if (project)
+  {
+    if (this->ProjectorMasks)
+    {
+      const int* dims = this->ProjectorMasks->GetDimensions();
+      vtkDataArray* painted = this->ProjectorMasks->GetPointData()->GetArray("Mask");
+      painted = painted ? painted : this->ProjectorMasks->GetPointData()->GetScalars();
+      maskArray = vtkUnsignedCharArray::SafeDownCast(painted);
+      if (!maskArray || maskArray->GetNumberOfComponents() != 3 || dims[0] != projectorWidth ||
+        dims[1] != projectorHeight || dims[2] != projectorCount)
+      {
+        vtkErrorMacro("The projector masks are " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                                                 << (maskArray ? "" : " without RGB uint8 scalars")
+                                                 << "; the projectors need RGB uint8 masks of "
+                                                 << projectorWidth << "x" << projectorHeight
+                                                 << "x" << projectorCount << ".");
+        return 0;
+      }
+      masks->DeepCopy(this->ProjectorMasks);
+      maskArray = vtkUnsignedCharArray::SafeDownCast(masks->GetPointData()->GetArray(maskArray->GetName()));
+      maskArray->SetName("Mask");
+    }
+    else if (!this->Palette || this->Palette->GetNumberOfComponents() != 3 ||
+      this->Palette->GetNumberOfTuples() < 2)
+    {
+      vtkErrorMacro("Projectors without painted masks need a Palette (3 x uint8 per label, "
+                    "entry 0 = unlabelled) to generate their masks from the mesh labels.");
+      return 0;
+    }
+    else
+    {
+      masks->SetDimensions(projectorWidth, projectorHeight, projectorCount);
+      vtkNew<vtkUnsignedCharArray> generated;
+      generated->SetName("Mask");
+      generated->SetNumberOfComponents(3);
+      generated->SetNumberOfTuples(masks->GetNumberOfPoints());
+      masks->GetPointData()->SetScalars(generated);
+      maskArray = generated;
+    }
+  }
+  if (project)
+  {
+    output->SetProjectors(projectors);
+    output->SetProjectorMasks(masks);
+  }
+  if (this->Palette)
+  {
+    vtkNew<vtkUnsignedCharArray> palette;
+    palette->DeepCopy(this->Palette);
+    output->SetPalette(palette);
+  }
+  auto* coded = project
+    ? static_cast<unsigned char*>(output->AllocatePass(vtkLightField::CODED)->GetVoidPointer(0))
+    : nullptr;
+  auto* flood = project
+    ? static_cast<unsigned char*>(output->AllocatePass(vtkLightField::FLOOD)->GetVoidPointer(0))
     : nullptr;
 
   // Coaxial pass: albedo from the texture, the "RGB" array or white.
@@ -491,6 +618,61 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
 
   vtkCamera* camera = renderer->GetActiveCamera();
   vtkNew<vtkUnsignedCharArray> rgbBuffer;
+
+  // Window depth d in [0, 1] back to the camera-space distance along the
+  // optical axis of the perspective frustum [n, f]; 0 where nothing is seen.
+  auto readDepth = [&](int w, int h, float* z)
+  {
+    window->GetZbufferData(0, 0, w - 1, h - 1, z);
+    double range[2];
+    camera->GetClippingRange(range);
+    const double n = range[0];
+    const double f = range[1];
+    for (vtkIdType p = 0; p < static_cast<vtkIdType>(w) * h; ++p)
+    {
+      const double ndc = 2.0 * z[p] - 1.0;
+      z[p] = z[p] >= 1.0f ? 0.0f : static_cast<float>(2.0 * n * f / (f + n - ndc * (f - n)));
+    }
+  };
+
+  // Each projector's depth map (its visibility), and its generated mask:
+  // the palette colour of the label it sees at each of its pixels.
+  std::vector<float> projectorDepth(projectorPixels * projectorCount);
+  if (project)
+  {
+    window->SetSize(projectorWidth, projectorHeight);
+    shaded->VisibilityOff();
+    flat->VisibilityOn();
+    for (int p = 0; p < projectorCount; ++p)
+    {
+      projectors->ApplyToCamera(p, camera);
+      SetTightClippingRange(camera, bounds);
+      window->Render();
+      readDepth(projectorWidth, projectorHeight, projectorDepth.data() + p * projectorPixels);
+      if (!this->ProjectorMasks)
+      {
+        window->GetPixelData(0, 0, projectorWidth - 1, projectorHeight - 1, 0, rgbBuffer, 0);
+        const vtkIdType colours = this->Palette->GetNumberOfTuples();
+        for (vtkIdType q = 0; q < projectorPixels; ++q)
+        {
+          const vtkIdType part = rgbBuffer->GetValue(3 * q);
+          for (int c = 0; c < 3; ++c)
+          {
+            maskArray->SetTypedComponent(p * projectorPixels + q,
+              c,
+              part < colours ? this->Palette->GetTypedComponent(part, c) : 0);
+          }
+        }
+      }
+    }
+    window->SetSize(width, height);
+  }
+  std::vector<float> viewDepth(project && !depth ? pixels : 0);
+  vtkNew<vtkUnsignedCharArray> albedo;
+  std::vector<double> codedSum(project ? 3 * pixels : 0), floodSum(project ? 3 * pixels : 0);
+  std::mt19937 random(static_cast<unsigned int>(this->NoiseSeed));
+  std::normal_distribution<double> noise(0.0, this->ProjectorNoise);
+
   for (int view = 0; view < views && !this->GetAbortExecute(); ++view)
   {
     rig->ApplyToCamera(view, camera);
@@ -509,7 +691,8 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
       std::copy_n(rgbBuffer->GetPointer(0), 3 * pixels, coaxial + 3 * slice);
     }
 
-    if (label || depth)
+    float* z = depth ? depth + slice : (project ? viewDepth.data() : nullptr);
+    if (label || z)
     {
       shaded->VisibilityOff();
       flat->VisibilityOn();
@@ -523,21 +706,90 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
           label[slice + p] = red[3 * p];
         }
       }
-      if (depth)
+      if (z)
       {
-        // Window depth d in [0, 1] back to the camera-space distance along
-        // the optical axis of the perspective frustum [n, f].
-        float* z = depth + slice;
-        window->GetZbufferData(0, 0, width - 1, height - 1, z);
-        double range[2];
-        camera->GetClippingRange(range);
-        const double n = range[0];
-        const double f = range[1];
-        for (vtkIdType p = 0; p < pixels; ++p)
+        readDepth(width, height, z);
+      }
+    }
+
+    if (project)
+    {
+      // The albedo (unlit) for the room light, then each projector's
+      // Lambertian irradiance x albedo, masked by its visibility.
+      shaded->VisibilityOn();
+      flat->VisibilityOff();
+      material->SetAmbient(0.0);
+      material->SetDiffuse(1.0);
+      material->LightingOff();
+      window->Render();
+      window->GetPixelData(0, 0, width - 1, height - 1, 0, albedo, 0);
+      material->LightingOn();
+      std::fill(codedSum.begin(), codedSum.end(), 0.0);
+      std::fill(floodSum.begin(), floodSum.end(), 0.0);
+      const lfd::PinholeCamera& viewCamera = rig->GetCamera(view);
+      const glm::dmat3 toWorld = viewCamera.PixelToDirection();
+      const glm::dvec3 origin = viewCamera.Center();
+      for (int p = 0; p < projectorCount; ++p)
+      {
+        const lfd::PinholeCamera& projector = projectors->GetCamera(p);
+        const glm::dvec3 lampPosition = projector.Center();
+        const glm::dvec3 lampTarget = lampPosition + projector.Forward();
+        lamp->SetPosition(lampPosition.x, lampPosition.y, lampPosition.z);
+        lamp->SetFocalPoint(lampTarget.x, lampTarget.y, lampTarget.z);
+        window->Render();
+        window->GetPixelData(0, 0, width - 1, height - 1, 0, rgbBuffer, 0);
+        const float* mapDepth = projectorDepth.data() + p * projectorPixels;
+        const double footprint = 1.0 / projector.K[0][0];
+        for (vtkIdType q = 0; q < pixels; ++q)
         {
-          const double ndc = 2.0 * z[p] - 1.0;
-          z[p] = z[p] >= 1.0f ? 0.0f : static_cast<float>(2.0 * n * f / (f + n - ndc * (f - n)));
+          if (!(z[q] > 0.0f))
+          {
+            continue;
+          }
+          const double x = static_cast<double>(q % width);
+          const double y = static_cast<double>(height - 1 - q / width);
+          const glm::dvec3 X = origin + static_cast<double>(z[q]) * (toWorld * glm::dvec3(x, y, 1.0));
+          glm::dvec2 pixel;
+          if (!projector.Project(X, pixel))
+          {
+            continue;
+          }
+          const long u = std::lround(pixel.x);
+          const long v = std::lround(pixel.y);
+          if (u < 0 || v < 0 || u >= projectorWidth || v >= projectorHeight)
+          {
+            continue;
+          }
+          // Seen by the projector: no surface in front of X along its ray
+          // (tolerance: a few projector pixels of slope, plus 0.5 %).
+          const vtkIdType projected = (projectorHeight - 1 - v) * projectorWidth + u;
+          const double along = (projector.R * X + projector.t).z;
+          const double seen = mapDepth[projected];
+          if (!(seen > 0.0) || along > seen + along * (0.005 + 3.0 * footprint))
+          {
+            continue;
+          }
+          const unsigned char* colour = maskArray->GetPointer(3 * (p * projectorPixels + projected));
+          for (int c = 0; c < 3; ++c)
+          {
+            const double irradiance = rgbBuffer->GetValue(3 * q + c);
+            codedSum[3 * q + c] += irradiance * colour[c] / 255.0;
+            floodSum[3 * q + c] += irradiance;
+          }
         }
+      }
+      material->SetAmbient(this->Ambient);
+      material->SetDiffuse(1.0 - this->Ambient);
+      auto expose = [&](double value)
+      {
+        value += this->ProjectorNoise > 0.0 ? noise(random) : 0.0;
+        return static_cast<unsigned char>(std::lround(std::min(255.0, std::max(0.0, value))));
+      };
+      for (vtkIdType i = 0; i < 3 * pixels; ++i)
+      {
+        const double room = this->ProjectorAmbient * albedo->GetValue(i);
+        coded[3 * slice + i] = expose(codedSum[i] + room);
+        flood[3 * slice + i] = expose(floodSum[i] + room);
       }
     }
     this->UpdateProgress(static_cast<double>(view + 1) / views);
@@ -579,6 +831,15 @@ void vtkLightFieldCapture::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CaptureDepth: " << this->CaptureDepth << "\n";
   os << indent << "SceneFixedLight: " << this->SceneFixedLight << "\n";
   os << indent << "Ambient: " << this->Ambient << "\n";
+  os << indent << "NumberOfProjectors: " << this->NumberOfProjectors << "\n";
+  os << indent << "ProjectorWidth: " << this->ProjectorWidth << "\n";
+  os << indent << "ProjectorHeight: " << this->ProjectorHeight << "\n";
+  os << indent << "Projectors: " << (this->Projectors ? "set" : "(none)") << "\n";
+  os << indent << "ProjectorMasks: " << (this->ProjectorMasks ? "set" : "(none)") << "\n";
+  os << indent << "Palette: " << (this->Palette ? "set" : "(none)") << "\n";
+  os << indent << "ProjectorAmbient: " << this->ProjectorAmbient << "\n";
+  os << indent << "ProjectorNoise: " << this->ProjectorNoise << "\n";
+  os << indent << "NoiseSeed: " << this->NoiseSeed << "\n";
   os << indent << "Rig: ";
   if (this->Rig)
   {

@@ -33,6 +33,31 @@
  * Alternatively SetRig() captures from the views of a given rig (its image
  * size wins over Width and Height).
  *
+ *
+ * **Projectors** (Chen et al. 2005, section 4.1). With NumberOfProjectors
+ * > 0, or a projector rig set with SetProjectors(), the capture also
+ * simulates video projectors that paint the object with colour masks:
+ * - `Coded` (RGB uint8): every projector shows its mask; a surface point
+ *   gets, from each projector that sees it (projective texturing with the
+ *   projector's own depth map, so self-shadowed points get no colour), the
+ *   mask colour at its projector pixel times the Lambertian irradiance of a
+ *   point light at the projector centre, times the albedo.
+ * - `Flood` (RGB uint8): the same projectors showing white.
+ * Both add ProjectorAmbient x albedo (room light) and Gaussian sensor noise
+ * of standard deviation ProjectorNoise (8-bit levels, seeded by NoiseSeed),
+ * and are clamped to [0, 255]. The masks are SetProjectorMasks() (painted,
+ * Wp x Hp x P with an RGB uint8 "Mask" or RGB scalars, rows bottom first),
+ * or else generated from the mesh's cell "Label": each projector shows the
+ * Palette colour of the part it sees at each of its pixels (a part's colour
+ * where the projector sees that part's box when the labels come from
+ * vtkLabelCellsByBoxes). Generated masks need a Palette, and so do the
+ * passes' users: the palette, the projector rig and the masks are stored on
+ * the output (vtkLightField::GetPalette(), GetProjectors(),
+ * GetProjectorMasks()). Projectors built from NumberOfProjectors take the
+ * poses of views of the middle ring evenly spaced in azimuth (half a step
+ * away from view 0), with the cameras' field of view and an image of
+ * ProjectorWidth x ProjectorHeight pixels (0 = the cameras' size).
+ *
  * No pass is anti-aliased (no multisampling, no FXAA): a pixel's colour,
  * label and depth all come from the one surface its centre sees, so the
  * edges of the passes agree exactly.
@@ -59,6 +84,7 @@ class vtkDoubleArray;
 class vtkImageData;
 class vtkLightField;
 class vtkPolyData;
+class vtkUnsignedCharArray;
 
 class LFDSYNTHESIS_EXPORT vtkLightFieldCapture : public vtkLightFieldAlgorithm
 {
@@ -188,6 +214,68 @@ public:
 
   ///@{
   /**
+   * Number of projectors placed on the ring (see Projectors above); 0
+   * (default) captures no Coded and Flood passes unless SetProjectors() is
+   * given a rig.
+   */
+  vtkSetClampMacro(NumberOfProjectors, int, 0, 64);
+  vtkGetMacro(NumberOfProjectors, int);
+  ///@}
+
+  ///@{
+  /**
+   * Projector image size for projectors built from NumberOfProjectors;
+   * 0 (default) = the cameras' image size.
+   */
+  vtkSetClampMacro(ProjectorWidth, int, 0, 16384);
+  vtkGetMacro(ProjectorWidth, int);
+  vtkSetClampMacro(ProjectorHeight, int, 0, 16384);
+  vtkGetMacro(ProjectorHeight, int);
+  ///@}
+
+  ///@{
+  /**
+   * Explicit projectors (K, R, t and image size), overriding
+   * NumberOfProjectors. Default nullptr.
+   */
+  virtual void SetProjectors(vtkCameraRig* projectors);
+  vtkGetObjectMacro(Projectors, vtkCameraRig);
+  ///@}
+
+  ///@{
+  /**
+   * Painted masks, one slice per projector. Default nullptr: masks are
+   * generated from the mesh labels and the Palette.
+   */
+  virtual void SetProjectorMasks(vtkImageData* masks);
+  vtkGetObjectMacro(ProjectorMasks, vtkImageData);
+  ///@}
+
+  ///@{
+  /**
+   * The label palette (3 x uint8 per label, entry 0 = unlabelled), see
+   * vtkLabelPalette. Default nullptr.
+   */
+  virtual void SetPalette(vtkUnsignedCharArray* palette);
+  vtkGetObjectMacro(Palette, vtkUnsignedCharArray);
+  ///@}
+
+  ///@{
+  /**
+   * Room light in the projector passes, as a fraction of the albedo
+   * (default 0), and the standard deviation of the sensor noise in 8-bit
+   * levels (default 0) with its random seed (default 1).
+   */
+  vtkSetClampMacro(ProjectorAmbient, double, 0.0, 1.0);
+  vtkGetMacro(ProjectorAmbient, double);
+  vtkSetClampMacro(ProjectorNoise, double, 0.0, 255.0);
+  vtkGetMacro(ProjectorNoise, double);
+  vtkSetMacro(NoiseSeed, int);
+  vtkGetMacro(NoiseSeed, int);
+  ///@}
+
+  ///@{
+  /**
    * Input connections: the mesh (port 0) and its optional texture image
    * (port 1).
    */
@@ -217,6 +305,12 @@ protected:
    */
   bool BuildRig(const double bounds[6], vtkCameraRig* rig);
 
+  /**
+   * The projectors to simulate for the camera rig `rig` (Projectors, or
+   * NumberOfProjectors views of the middle ring); false when there are none.
+   */
+  bool BuildProjectors(vtkCameraRig* rig, vtkCameraRig* projectors);
+
   int ViewsPerRing = 120;
   int NumberOfRows = 3;
   double Radius = 0.0;
@@ -234,6 +328,15 @@ protected:
   bool SceneFixedLight = false;
   double Ambient = 0.1;
   vtkCameraRig* Rig = nullptr;
+  int NumberOfProjectors = 0;
+  int ProjectorWidth = 0;
+  int ProjectorHeight = 0;
+  vtkCameraRig* Projectors = nullptr;
+  vtkImageData* ProjectorMasks = nullptr;
+  vtkUnsignedCharArray* Palette = nullptr;
+  double ProjectorAmbient = 0.0;
+  double ProjectorNoise = 0.0;
+  int NoiseSeed = 1;
 
 private:
   vtkLightFieldCapture(const vtkLightFieldCapture&) = delete;
