@@ -9,5 +9,6 @@ Every public class of the C++ modules is available here::
 from .lfdCore import *  # noqa: F401,F403
 from .lfdIO import *  # noqa: F401,F403
 from .lfdSynthesis import *  # noqa: F401,F403
+from .lfdSegmentation import *  # noqa: F401,F403
 from .lfdDeformation import *  # noqa: F401,F403
 from .lfdRendering import *  # noqa: F401,F403

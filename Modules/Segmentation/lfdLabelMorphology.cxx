@@ -1,0 +1,100 @@
+#include "lfdLabelMorphology.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lfd
+{
+namespace segmentation
+{
+
+void CleanLabels(unsigned char* image,
+  const unsigned char* fillable,
+  int width,
+  int height,
+  int labels,
+  int radius)
+{
+  if (radius <= 0)
+  {
+    return;
+  }
+  cv::Mat labelImage(height, width, CV_8UC1, image);
+  const cv::Mat disc = cv::getStructuringElement(
+    cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1), cv::Point(radius, radius));
+  cv::Mat original = labelImage.clone();
+  cv::Mat mask, opened, closed;
+  // Openings first, each from the original image, so that a label's speck
+  // removal does not depend on the order of the labels.
+  std::vector<cv::Mat> kept(labels + 1);
+  for (int label = 1; label <= labels; ++label)
+  {
+    cv::compare(original, label, mask, cv::CMP_EQ);
+    cv::morphologyEx(mask, kept[label], cv::MORPH_OPEN, disc);
+  }
+  labelImage.setTo(0);
+  for (int label = 1; label <= labels; ++label)
+  {
+    labelImage.setTo(label, kept[label]);
+  }
+  // Closings fill unlabelled pixels only (and only fillable ones).
+  cv::Mat holes;
+  cv::compare(labelImage, 0, holes, cv::CMP_EQ);
+  if (fillable)
+  {
+    const cv::Mat lit(height, width, CV_8UC1, const_cast<unsigned char*>(fillable));
+    cv::bitwise_and(holes, lit, holes);
+  }
+  for (int label = 1; label <= labels; ++label)
+  {
+    cv::morphologyEx(kept[label], closed, cv::MORPH_CLOSE, disc);
+    cv::bitwise_and(closed, holes, closed);
+    labelImage.setTo(label, closed);
+    cv::bitwise_and(holes, ~closed, holes);
+  }
+}
+
+double EstimateNoise(const std::vector<unsigned char>& grey, int width, int height)
+{
+  if (width < 3 || height < 3)
+  {
+    return -1.0;
+  }
+  const cv::Mat image(height, width, CV_8UC1, const_cast<unsigned char*>(grey.data()));
+  const cv::Mat kernel = (cv::Mat_<float>(3, 3) << 1, -2, 1, -2, 4, -2, 1, -2, 1);
+  cv::Mat response;
+  cv::filter2D(image, response, CV_32F, kernel);
+  std::vector<float> values;
+  for (int y = 1; y + 1 < height; ++y)
+  {
+    for (int x = 1; x + 1 < width; ++x)
+    {
+      // Clipped pixels (black background, saturation) carry no noise.
+      bool clipped = false;
+      for (int dy = -1; dy <= 1 && !clipped; ++dy)
+      {
+        for (int dx = -1; dx <= 1 && !clipped; ++dx)
+        {
+          const unsigned char v = grey[(y + dy) * width + x + dx];
+          clipped = v < 4 || v > 251;
+        }
+      }
+      if (!clipped)
+      {
+        values.push_back(std::abs(response.at<float>(y, x)));
+      }
+    }
+  }
+  if (values.empty())
+  {
+    return -1.0;
+  }
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2] / (0.6745 * 6.0);
+}
+
+} // namespace segmentation
+} // namespace lfd

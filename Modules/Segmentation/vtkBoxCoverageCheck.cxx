@@ -1,0 +1,279 @@
+#include "vtkBoxCoverageCheck.h"
+
+#include "lfdPinholeCamera.h"
+#include "vtkCameraRig.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkLightField.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <map>
+
+vtkStandardNewMacro(vtkBoxCoverageCheck);
+
+namespace
+{
+using Polygon = std::vector<glm::dvec2>;
+
+double Cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b)
+{
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+// Convex hull, counter-clockwise (Andrew's monotone chain).
+Polygon ConvexHull(Polygon points)
+{
+  std::sort(points.begin(),
+    points.end(),
+    [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  Polygon hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    while (k >= 2 && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;)
+  {
+    while (k >= lower && Cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  hull.resize(k > 0 ? k - 1 : 0);
+  return hull;
+}
+
+bool Inside(const Polygon& hull, const glm::dvec2& p)
+{
+  if (hull.size() < 3)
+  {
+    return false;
+  }
+  for (size_t i = 0; i < hull.size(); ++i)
+  {
+    if (Cross(hull[i], hull[(i + 1) % hull.size()], p) < 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkBoxCoverageCheck::vtkBoxCoverageCheck()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+vtkBoxCoverageCheck::~vtkBoxCoverageCheck() = default;
+
+//------------------------------------------------------------------------------
+void vtkBoxCoverageCheck::SetCageConnection(vtkAlgorithmOutput* cage)
+{
+  this->SetInputConnection(1, cage);
+}
+
+//------------------------------------------------------------------------------
+void vtkBoxCoverageCheck::SetCageData(vtkDataObject* cage)
+{
+  this->SetInputDataObject(1, cage);
+}
+
+//------------------------------------------------------------------------------
+int vtkBoxCoverageCheck::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(),
+    port == 0 ? "vtkLightField" : "vtkUnstructuredGrid");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoxCoverageCheck::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  this->Labels.clear();
+  vtkLightField* lightField = vtkLightField::GetData(inputVector[0]);
+  vtkUnstructuredGrid* cage = vtkUnstructuredGrid::GetData(inputVector[1]);
+  vtkTable* output = vtkTable::GetData(outputVector);
+  auto* labels = lightField
+    ? vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::LABEL))
+    : nullptr;
+  if (!labels || !cage)
+  {
+    vtkErrorMacro(<< (labels ? "No cage on input port 1."
+                             : "The light field has no Label pass to check."));
+    return 0;
+  }
+  vtkDataArray* boxLabels = cage->GetCellData()->GetArray("Label");
+  if (!boxLabels)
+  {
+    vtkErrorMacro("The cage has no cell array \"Label\".");
+    return 0;
+  }
+  vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
+  const int width = lightField->GetWidth();
+  const int height = lightField->GetHeight();
+  const int views = lightField->GetNumberOfViews();
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  vtkCameraRig* rig = lightField->GetRig();
+
+  vtkNew<vtkIntArray> labelColumn, viewColumn;
+  vtkNew<vtkIdTypeArray> pixelColumn, insideColumn;
+  vtkNew<vtkDoubleArray> fractionColumn;
+  labelColumn->SetName("Label");
+  viewColumn->SetName("View");
+  pixelColumn->SetName("Pixels");
+  insideColumn->SetName("Inside");
+  fractionColumn->SetName("Fraction");
+  std::map<int, Summary> summaries;
+  for (int view = 0; view < views; ++view)
+  {
+    // The projected rest boxes of each label.
+    const lfd::PinholeCamera& camera = rig->GetCamera(view);
+    std::map<int, std::vector<Polygon>> hulls;
+    for (vtkIdType cell = 0; cell < cage->GetNumberOfCells(); ++cell)
+    {
+      if (cage->GetCellType(cell) != VTK_HEXAHEDRON)
+      {
+        continue;
+      }
+      vtkIdType count;
+      const vtkIdType* ids;
+      cage->GetCellPoints(cell, count, ids);
+      Polygon corners;
+      for (vtkIdType c = 0; c < count; ++c)
+      {
+        double x[3];
+        if (rest)
+        {
+          rest->GetTuple(ids[c], x);
+        }
+        else
+        {
+          cage->GetPoint(ids[c], x);
+        }
+        glm::dvec2 pixel;
+        if (camera.Project(glm::dvec3(x[0], x[1], x[2]), pixel))
+        {
+          corners.push_back(pixel);
+        }
+      }
+      if (corners.size() == static_cast<size_t>(count))
+      {
+        hulls[static_cast<int>(boxLabels->GetComponent(cell, 0))].push_back(ConvexHull(corners));
+      }
+    }
+    std::map<int, std::pair<vtkIdType, vtkIdType>> counts; // label -> (pixels, inside)
+    for (vtkIdType p = 0; p < pixels; ++p)
+    {
+      const int label = labels->GetValue(view * pixels + p);
+      if (label == 0)
+      {
+        continue;
+      }
+      auto& count = counts[label];
+      ++count.first;
+      const glm::dvec2 pixel(static_cast<double>(p % width), height - 1.0 - p / width);
+      const auto& boxes = hulls[label];
+      if (std::any_of(boxes.begin(), boxes.end(), [&](const Polygon& h) { return Inside(h, pixel); }))
+      {
+        ++count.second;
+      }
+    }
+    for (const auto& entry : counts)
+    {
+      const double fraction = static_cast<double>(entry.second.second) / entry.second.first;
+      labelColumn->InsertNextValue(entry.first);
+      viewColumn->InsertNextValue(view);
+      pixelColumn->InsertNextValue(entry.second.first);
+      insideColumn->InsertNextValue(entry.second.second);
+      fractionColumn->InsertNextValue(fraction);
+      auto found = summaries.find(entry.first);
+      if (found == summaries.end())
+      {
+        found = summaries.emplace(entry.first, Summary{ entry.first, 2.0, -1, {} }).first;
+      }
+      Summary& summary = found->second;
+      if (fraction < summary.WorstFraction)
+      {
+        summary.WorstFraction = fraction;
+        summary.WorstView = view;
+      }
+      if (fraction < this->Threshold)
+      {
+        summary.Below.push_back(view);
+      }
+    }
+    this->UpdateProgress(static_cast<double>(view + 1) / views);
+  }
+  output->AddColumn(labelColumn);
+  output->AddColumn(viewColumn);
+  output->AddColumn(pixelColumn);
+  output->AddColumn(insideColumn);
+  output->AddColumn(fractionColumn);
+  for (const auto& entry : summaries)
+  {
+    this->Labels.push_back(entry.second);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoxCoverageCheck::GetLabel(int index) const
+{
+  return index >= 0 && index < this->GetNumberOfLabels() ? this->Labels[index].Label : -1;
+}
+
+//------------------------------------------------------------------------------
+double vtkBoxCoverageCheck::GetWorstFraction(int index) const
+{
+  return index >= 0 && index < this->GetNumberOfLabels() ? this->Labels[index].WorstFraction : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkBoxCoverageCheck::GetWorstView(int index) const
+{
+  return index >= 0 && index < this->GetNumberOfLabels() ? this->Labels[index].WorstView : -1;
+}
+
+//------------------------------------------------------------------------------
+std::vector<int> vtkBoxCoverageCheck::GetViewsBelow(int index) const
+{
+  return index >= 0 && index < this->GetNumberOfLabels() ? this->Labels[index].Below
+                                                         : std::vector<int>();
+}
+
+//------------------------------------------------------------------------------
+bool vtkBoxCoverageCheck::GetPassed() const
+{
+  return std::all_of(this->Labels.begin(),
+    this->Labels.end(),
+    [](const Summary& summary) { return summary.Below.empty(); });
+}
+
+//------------------------------------------------------------------------------
+void vtkBoxCoverageCheck::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Threshold: " << this->Threshold << "\n";
+  os << indent << "Labels: " << this->Labels.size() << "\n";
+}

@@ -1,0 +1,96 @@
+/**
+ * @class   vtkBoxCoverageCheck
+ * @brief   checks that every part's rest boxes cover its labelled pixels in every view
+ *
+ * A deformation moves the rays of a part only where they pass through the
+ * part's box, so each box must hold its part (Chen, Ofek, Shum, Levoy,
+ * I3D 2005, section 4.1: "the bounding box of each sub-light field"). For
+ * every view and every label of the light field (input port 0, its `Label`
+ * pass and rig), vtkBoxCoverageCheck projects the rest boxes of that label
+ * of the cage (input port 1: a vtkUnstructuredGrid of VTK_HEXAHEDRON cells
+ * with a cell array "Label" and, when present, the point array
+ * "RestPosition" for the rest corners, as vtkDeformationCage stores them)
+ * into the view, and counts the label's pixels that fall inside the
+ * projection (the convex hull of the 8 projected corners; the union over
+ * the label's boxes).
+ *
+ * The output is a vtkTable, one row per (label, view) with pixels of that
+ * label: columns "Label", "View", "Pixels", "Inside", "Fraction". Per
+ * label, GetWorstFraction() and GetWorstView() give the worst view and
+ * GetViewsBelow() the views under Threshold; GetPassed() is true when no
+ * view of any label is under Threshold. A label with pixels but no box
+ * covers nothing (fraction 0).
+ *
+ * @sa vtkLightFieldSplitter vtkDeformationCage
+ */
+#ifndef vtkBoxCoverageCheck_h
+#define vtkBoxCoverageCheck_h
+
+#include "lfdSegmentationModule.h" // For export macro
+#include "vtkTableAlgorithm.h"
+
+#include <vector> // For std::vector
+
+class LFDSEGMENTATION_EXPORT vtkBoxCoverageCheck : public vtkTableAlgorithm
+{
+public:
+  static vtkBoxCoverageCheck* New();
+  vtkTypeMacro(vtkBoxCoverageCheck, vtkTableAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The light field (port 0) and the cage (port 1).
+   */
+  void SetCageConnection(vtkAlgorithmOutput* cage);
+  void SetCageData(vtkDataObject* cage);
+  ///@}
+
+  ///@{
+  /**
+   * Smallest acceptable fraction of a label's pixels inside its boxes, per
+   * view. Default 0.95.
+   */
+  vtkSetClampMacro(Threshold, double, 0.0, 1.0);
+  vtkGetMacro(Threshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * The summary of the last update: the labels found (in increasing order),
+   * and per label its worst view, that view's fraction and every view under
+   * Threshold.
+   */
+  int GetNumberOfLabels() const { return static_cast<int>(this->Labels.size()); }
+  int GetLabel(int index) const;
+  double GetWorstFraction(int index) const;
+  int GetWorstView(int index) const;
+  std::vector<int> GetViewsBelow(int index) const;
+  bool GetPassed() const;
+  ///@}
+
+protected:
+  vtkBoxCoverageCheck();
+  ~vtkBoxCoverageCheck() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  double Threshold = 0.95;
+  struct Summary
+  {
+    int Label;
+    double WorstFraction;
+    int WorstView;
+    std::vector<int> Below;
+  };
+  std::vector<Summary> Labels;
+
+private:
+  vtkBoxCoverageCheck(const vtkBoxCoverageCheck&) = delete;
+  void operator=(const vtkBoxCoverageCheck&) = delete;
+};
+
+#endif

@@ -1,0 +1,503 @@
+#include "vtkLabelPropagation.h"
+
+#include "lfdLabelMorphology.h"
+#include "lfdPinholeCamera.h"
+#include "vtkCameraRig.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLightField.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkLabelPropagation);
+
+namespace
+{
+// An axis-aligned voxel grid: voxel (i, j, k) spans Origin + Size * [i, i+1).
+struct VoxelGrid
+{
+  glm::dvec3 Origin{ 0.0 };
+  double Size = 1.0;
+  std::array<int, 3> Count{ 0, 0, 0 };
+
+  VoxelGrid(const glm::dvec3& low, const glm::dvec3& high, int resolution)
+  {
+    const glm::dvec3 extent = high - low;
+    this->Size = std::max({ extent.x, extent.y, extent.z }) / resolution;
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Count[c] = std::max(1, static_cast<int>(std::ceil(extent[c] / this->Size)));
+    }
+    this->Origin = low;
+  }
+  vtkIdType Voxels() const { return static_cast<vtkIdType>(Count[0]) * Count[1] * Count[2]; }
+  glm::dvec3 Centre(vtkIdType v) const
+  {
+    const vtkIdType i = v % Count[0];
+    const vtkIdType j = (v / Count[0]) % Count[1];
+    const vtkIdType k = v / (static_cast<vtkIdType>(Count[0]) * Count[1]);
+    return this->Origin + this->Size * glm::dvec3(i + 0.5, j + 0.5, k + 0.5);
+  }
+  // Voxel holding X, or -1 outside the grid.
+  vtkIdType Find(const glm::dvec3& X) const
+  {
+    const glm::dvec3 g = (X - this->Origin) / this->Size;
+    std::array<vtkIdType, 3> ijk;
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!(g[c] >= 0.0) || g[c] >= Count[c])
+      {
+        return -1;
+      }
+      ijk[c] = static_cast<vtkIdType>(g[c]);
+    }
+    return ijk[0] + Count[0] * (ijk[1] + Count[1] * ijk[2]);
+  }
+};
+
+// Per view: is pixel (x, y) (OpenCV coordinates) object? `silhouettes`
+// holds W x H bytes per view, VTK row order.
+struct Silhouettes
+{
+  std::vector<unsigned char> Mask;
+  int Width = 0;
+  int Height = 0;
+  bool Inside(int view, const glm::dvec2& pixel) const
+  {
+    const long x = std::lround(pixel.x);
+    const long y = std::lround(pixel.y);
+    if (x < 0 || y < 0 || x >= Width || y >= Height)
+    {
+      return false;
+    }
+    return Mask[(static_cast<vtkIdType>(view) * Height + (Height - 1 - y)) * Width + x] != 0;
+  }
+};
+
+// Keeps the voxels of `grid` whose centres fall inside every silhouette.
+std::vector<unsigned char> Carve(const VoxelGrid& grid, vtkCameraRig* rig, const Silhouettes& s)
+{
+  std::vector<unsigned char> occupied(grid.Voxels(), 0);
+  const int views = rig->GetNumberOfViews();
+  vtkSMPTools::For(0,
+    grid.Voxels(),
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType v = first; v < last; ++v)
+      {
+        const glm::dvec3 X = grid.Centre(v);
+        bool inside = true;
+        for (int view = 0; view < views && inside; ++view)
+        {
+          glm::dvec2 pixel;
+          inside = rig->GetCamera(view).Project(X, pixel) && s.Inside(view, pixel);
+        }
+        occupied[v] = inside ? 1 : 0;
+      }
+    });
+  return occupied;
+}
+
+// Bounds of the occupied voxels, grown by `margin` voxels; false if none.
+bool OccupiedBounds(const VoxelGrid& grid,
+  const std::vector<unsigned char>& occupied,
+  double margin,
+  glm::dvec3& low,
+  glm::dvec3& high)
+{
+  low = glm::dvec3(std::numeric_limits<double>::infinity());
+  high = -low;
+  bool any = false;
+  for (vtkIdType v = 0; v < grid.Voxels(); ++v)
+  {
+    if (occupied[v])
+    {
+      const glm::dvec3 c = grid.Centre(v);
+      low = glm::min(low, c);
+      high = glm::max(high, c);
+      any = true;
+    }
+  }
+  low -= (0.5 + margin) * grid.Size;
+  high += (0.5 + margin) * grid.Size;
+  return any;
+}
+
+// First occupied voxel along the ray from `origin` in direction `d`, or -1.
+vtkIdType March(const VoxelGrid& grid,
+  const std::vector<unsigned char>& occupied,
+  const glm::dvec3& origin,
+  const glm::dvec3& d)
+{
+  // Slab intersection with the grid's box.
+  double t0 = 0.0;
+  double t1 = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < 3; ++c)
+  {
+    const double low = grid.Origin[c];
+    const double high = grid.Origin[c] + grid.Size * grid.Count[c];
+    if (std::abs(d[c]) < 1e-300)
+    {
+      if (origin[c] < low || origin[c] > high)
+      {
+        return -1;
+      }
+      continue;
+    }
+    double a = (low - origin[c]) / d[c];
+    double b = (high - origin[c]) / d[c];
+    if (a > b)
+    {
+      std::swap(a, b);
+    }
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  const double step = 0.5 * grid.Size / glm::length(d);
+  for (double t = t0 + 0.5 * step; t < t1; t += step)
+  {
+    const vtkIdType v = grid.Find(origin + t * d);
+    if (v >= 0 && occupied[v])
+    {
+      return v;
+    }
+  }
+  return -1;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkLabelPropagation::vtkLabelPropagation() = default;
+
+//------------------------------------------------------------------------------
+vtkLabelPropagation::~vtkLabelPropagation()
+{
+  this->RemoveAllPaintedViews();
+}
+
+//------------------------------------------------------------------------------
+void vtkLabelPropagation::SetPaintedView(int view, vtkImageData* labels)
+{
+  auto it = this->Painted.find(view);
+  if (it != this->Painted.end())
+  {
+    it->second->UnRegister(this);
+    this->Painted.erase(it);
+  }
+  if (labels)
+  {
+    labels->Register(this);
+    this->Painted[view] = labels;
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkLabelPropagation::RemoveAllPaintedViews()
+{
+  for (auto& painted : this->Painted)
+  {
+    painted.second->UnRegister(this);
+  }
+  this->Painted.clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std::string& error)
+{
+  const int width = input->GetWidth();
+  const int height = input->GetHeight();
+  const int views = input->GetNumberOfViews();
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  vtkCameraRig* rig = input->GetRig();
+  if (this->Painted.empty())
+  {
+    error = "vtkLabelPropagation: no painted view (SetPaintedView)";
+    return false;
+  }
+  for (const auto& painted : this->Painted)
+  {
+    const int* dims = painted.second->GetDimensions();
+    vtkDataArray* scalars = painted.second->GetPointData()->GetScalars();
+    if (painted.first < 0 || painted.first >= views)
+    {
+      error = "vtkLabelPropagation: painted view " + std::to_string(painted.first) +
+        " does not exist (the light field has views 0.." + std::to_string(views - 1) + ")";
+      return false;
+    }
+    if (dims[0] != width || dims[1] != height || dims[2] != 1 || !scalars ||
+      scalars->GetNumberOfComponents() != 1)
+    {
+      error = "vtkLabelPropagation: the label image of view " + std::to_string(painted.first) +
+        " is " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) +
+        (scalars ? " with " + std::to_string(scalars->GetNumberOfComponents()) + " components"
+                 : std::string(" without scalars")) +
+        "; the views are " + std::to_string(width) + "x" + std::to_string(height) +
+        " and labels have 1 component";
+      return false;
+    }
+  }
+  auto* depth = vtkFloatArray::SafeDownCast(input->GetPass(vtkLightField::DEPTH));
+  const bool useDepth = this->Proxy == DEPTH || (this->Proxy == AUTOMATIC && depth);
+  if (useDepth && !depth)
+  {
+    error = "vtkLabelPropagation: the DEPTH proxy needs a Depth pass";
+    return false;
+  }
+  auto* coaxial = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::COAXIAL));
+  if (!useDepth && !coaxial)
+  {
+    error = "vtkLabelPropagation: the visual hull needs a Coaxial pass to find the silhouettes in";
+    return false;
+  }
+
+  // The object pixels of every view, and the proxy grid.
+  Silhouettes silhouettes;
+  silhouettes.Width = width;
+  silhouettes.Height = height;
+  silhouettes.Mask.assign(pixels * views, 0);
+  auto pointOf = [&](int view, vtkIdType p)
+  {
+    const lfd::PinholeCamera& camera = rig->GetCamera(view);
+    const glm::dvec3 pixel(static_cast<double>(p % width), height - 1.0 - p / width, 1.0);
+    return camera.Center() + static_cast<double>(depth->GetValue(view * pixels + p)) *
+      (camera.PixelToDirection() * pixel);
+  };
+  glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-low);
+  if (useDepth)
+  {
+    for (int view = 0; view < views; ++view)
+    {
+      for (vtkIdType p = 0; p < pixels; ++p)
+      {
+        if (depth->GetValue(view * pixels + p) > 0.0f)
+        {
+          silhouettes.Mask[view * pixels + p] = 1;
+          const glm::dvec3 X = pointOf(view, p);
+          low = glm::min(low, X);
+          high = glm::max(high, X);
+        }
+      }
+    }
+    if (!(low.x <= high.x))
+    {
+      error = "vtkLabelPropagation: the Depth pass sees no surface in any view";
+      return false;
+    }
+    const glm::dvec3 pad = 1e-3 * (high - low) + 1e-9;
+    low -= pad;
+    high += pad;
+  }
+  else
+  {
+    for (int view = 0; view < views; ++view)
+    {
+      unsigned char* mask = silhouettes.Mask.data() + view * pixels;
+      for (vtkIdType p = 0; p < pixels; ++p)
+      {
+        const unsigned char* rgb = coaxial->GetPointer(3 * (view * pixels + p));
+        mask[p] = (rgb[0] + rgb[1] + rgb[2]) / 3.0 > this->Threshold ? 1 : 0;
+      }
+      lfd::segmentation::CleanLabels(mask, nullptr, width, height, 1, 1);
+    }
+    // The box the cameras surround (a cube about their centres), carved
+    // coarsely to place the grid, then carved at full resolution.
+    glm::dvec3 centre(0.0);
+    for (int view = 0; view < views; ++view)
+    {
+      centre += rig->GetCamera(view).Center() / static_cast<double>(views);
+    }
+    double reach = 0.0;
+    for (int view = 0; view < views; ++view)
+    {
+      reach = std::max(reach, glm::length(rig->GetCamera(view).Center() - centre));
+    }
+    const VoxelGrid coarse(centre - reach, centre + reach, 64);
+    if (!OccupiedBounds(coarse, Carve(coarse, rig, silhouettes), 1.0, low, high))
+    {
+      error = "vtkLabelPropagation: the visual hull is empty (no point projects inside the "
+              "silhouette in every view; check Threshold and the calibration)";
+      return false;
+    }
+  }
+  this->UpdateProgress(0.1);
+  const VoxelGrid grid(low, high, this->Resolution);
+  std::vector<unsigned char> occupied;
+  if (useDepth)
+  {
+    occupied.assign(grid.Voxels(), 0);
+    for (int view = 0; view < views; ++view)
+    {
+      for (vtkIdType p = 0; p < pixels; ++p)
+      {
+        if (silhouettes.Mask[view * pixels + p])
+        {
+          const vtkIdType v = grid.Find(pointOf(view, p));
+          if (v >= 0)
+          {
+            occupied[v] = 1;
+          }
+        }
+      }
+    }
+  }
+  else
+  {
+    occupied = Carve(grid, rig, silhouettes);
+  }
+  this->NumberOfProxyVoxels = std::count(occupied.begin(), occupied.end(), 1);
+  if (this->NumberOfProxyVoxels == 0)
+  {
+    error = "vtkLabelPropagation: the proxy has no voxel";
+    return false;
+  }
+  this->UpdateProgress(0.3);
+
+  // The voxel each object pixel sees (visibility: the first along its ray).
+  std::vector<vtkIdType> seen(pixels * views, -1);
+  vtkSMPTools::For(0,
+    views,
+    [&](int first, int last)
+    {
+      for (int view = first; view < last; ++view)
+      {
+        const lfd::PinholeCamera& camera = rig->GetCamera(view);
+        const glm::dmat3 toWorld = camera.PixelToDirection();
+        for (vtkIdType p = 0; p < pixels; ++p)
+        {
+          const vtkIdType index = view * pixels + p;
+          if (!silhouettes.Mask[index])
+          {
+            continue;
+          }
+          if (useDepth)
+          {
+            seen[index] = grid.Find(pointOf(view, p));
+          }
+          else
+          {
+            const glm::dvec3 pixel(static_cast<double>(p % width), height - 1.0 - p / width, 1.0);
+            seen[index] = March(grid, occupied, camera.Center(), toWorld * pixel);
+          }
+        }
+      }
+    });
+  this->UpdateProgress(0.6);
+
+  // Votes of the painted pixels, then the nearest voted voxel for all.
+  std::vector<std::array<int, 256>> votes;
+  std::vector<int> voteOf(grid.Voxels(), -1);
+  for (const auto& painted : this->Painted)
+  {
+    vtkDataArray* scalars = painted.second->GetPointData()->GetScalars();
+    for (vtkIdType p = 0; p < pixels; ++p)
+    {
+      const int label = static_cast<int>(scalars->GetComponent(p, 0));
+      const vtkIdType v = seen[painted.first * pixels + p];
+      if (label <= 0 || label > 255 || v < 0)
+      {
+        continue;
+      }
+      if (voteOf[v] < 0)
+      {
+        voteOf[v] = static_cast<int>(votes.size());
+        votes.emplace_back();
+        votes.back().fill(0);
+      }
+      ++votes[voteOf[v]][label];
+    }
+  }
+  if (votes.empty())
+  {
+    error = "vtkLabelPropagation: no painted pixel lands on the proxy (are the label images "
+            "empty, or of other views?)";
+    return false;
+  }
+  std::vector<unsigned char> voxelLabel(grid.Voxels(), 0);
+  std::deque<vtkIdType> front;
+  for (vtkIdType v = 0; v < grid.Voxels(); ++v)
+  {
+    if (voteOf[v] >= 0)
+    {
+      const auto& count = votes[voteOf[v]];
+      voxelLabel[v] =
+        static_cast<unsigned char>(std::max_element(count.begin(), count.end()) - count.begin());
+      front.push_back(v);
+    }
+  }
+  const vtkIdType nx = grid.Count[0], ny = grid.Count[1], nz = grid.Count[2];
+  while (!front.empty())
+  {
+    const vtkIdType v = front.front();
+    front.pop_front();
+    const vtkIdType i = v % nx, j = (v / nx) % ny, k = v / (nx * ny);
+    for (int dk = -1; dk <= 1; ++dk)
+    {
+      for (int dj = -1; dj <= 1; ++dj)
+      {
+        for (int di = -1; di <= 1; ++di)
+        {
+          const vtkIdType a = i + di, b = j + dj, c = k + dk;
+          if (a < 0 || b < 0 || c < 0 || a >= nx || b >= ny || c >= nz)
+          {
+            continue;
+          }
+          const vtkIdType u = a + nx * (b + ny * c);
+          if (!voxelLabel[u])
+          {
+            voxelLabel[u] = voxelLabel[v];
+            front.push_back(u);
+          }
+        }
+      }
+    }
+  }
+  this->UpdateProgress(0.8);
+
+  unsigned char* label =
+    static_cast<unsigned char*>(output->AllocatePass(vtkLightField::LABEL)->GetVoidPointer(0));
+  for (vtkIdType index = 0; index < pixels * views; ++index)
+  {
+    label[index] = seen[index] >= 0 ? voxelLabel[seen[index]] : 0;
+  }
+  for (const auto& painted : this->Painted)
+  {
+    vtkDataArray* scalars = painted.second->GetPointData()->GetScalars();
+    for (vtkIdType p = 0; p < pixels; ++p)
+    {
+      const double value = scalars->GetComponent(p, 0);
+      if (value > 0.0 && value <= 255.0)
+      {
+        label[painted.first * pixels + p] = static_cast<unsigned char>(value);
+      }
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLabelPropagation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "PaintedViews:";
+  for (const auto& painted : this->Painted)
+  {
+    os << " " << painted.first;
+  }
+  os << "\n";
+  os << indent << "Proxy: " << this->Proxy << "\n";
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "Threshold: " << this->Threshold << "\n";
+  os << indent << "NumberOfProxyVoxels: " << this->NumberOfProxyVoxels << "\n";
+}

@@ -1,0 +1,190 @@
+#include "vtkProjectorSegmentation.h"
+
+#include "lfdColour.h"
+#include "lfdLabelMorphology.h"
+#include "vtkLabelPalette.h"
+#include "vtkLightField.h"
+#include "vtkObjectFactory.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkProjectorSegmentation);
+vtkCxxSetObjectMacro(vtkProjectorSegmentation, Palette, vtkUnsignedCharArray);
+
+//------------------------------------------------------------------------------
+vtkProjectorSegmentation::vtkProjectorSegmentation() = default;
+
+//------------------------------------------------------------------------------
+vtkProjectorSegmentation::~vtkProjectorSegmentation()
+{
+  this->SetPalette(nullptr);
+}
+
+//------------------------------------------------------------------------------
+bool vtkProjectorSegmentation::Split(vtkLightField* input, vtkLightField* output, std::string& error)
+{
+  auto* codedArray = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::CODED));
+  auto* floodArray = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::FLOOD));
+  if (!codedArray || !floodArray)
+  {
+    error = std::string("vtkProjectorSegmentation: the light field has no ") +
+      (codedArray ? "Flood" : "Coded") +
+      " pass (projector segmentation needs the Coded and Flood passes)";
+    return false;
+  }
+  vtkUnsignedCharArray* palette = this->Palette ? this->Palette : input->GetPalette();
+  if (!palette || palette->GetNumberOfComponents() != 3 || palette->GetNumberOfTuples() < 2)
+  {
+    error = "vtkProjectorSegmentation: no label palette with at least one label colour (give the "
+            "light field a palette, or SetPalette())";
+    return false;
+  }
+  const int labels = static_cast<int>(palette->GetNumberOfTuples()) - 1;
+  if (labels > 255)
+  {
+    error = "vtkProjectorSegmentation: the palette has " + std::to_string(labels) +
+      " labels; at most 255 fit the Label pass";
+    return false;
+  }
+  const int width = input->GetWidth();
+  const int height = input->GetHeight();
+  const int views = input->GetNumberOfViews();
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  const unsigned char* coded = codedArray->GetPointer(0);
+  const unsigned char* flood = floodArray->GetPointer(0);
+
+  // Sensor noise: given, or the median of Immerkaer's estimate over up to 8
+  // views of the Flood pass.
+  double sigma = this->NoiseSigma;
+  if (sigma < 0.0)
+  {
+    std::vector<double> estimates;
+    const int step = std::max(1, views / 8);
+    std::vector<unsigned char> grey(pixels);
+    for (int view = 0; view < views; view += step)
+    {
+      const unsigned char* rgb = flood + 3 * view * pixels;
+      for (vtkIdType p = 0; p < pixels; ++p)
+      {
+        grey[p] = static_cast<unsigned char>((rgb[3 * p] + rgb[3 * p + 1] + rgb[3 * p + 2]) / 3);
+      }
+      const double estimate = lfd::segmentation::EstimateNoise(grey, width, height);
+      if (estimate >= 0.0)
+      {
+        estimates.push_back(estimate);
+      }
+    }
+    std::sort(estimates.begin(), estimates.end());
+    sigma = estimates.empty() ? 0.0 : estimates[estimates.size() / 2];
+  }
+  this->EstimatedNoise = sigma;
+  const double dark = this->DarkThreshold >= 0.0 ? this->DarkThreshold : std::max(8.0, 5.0 * sigma);
+  const double separation = vtkLabelPalette::GetSeparation(palette);
+  const double accepted = labels > 1
+    ? this->RejectionFactor * 0.5 * separation
+    : std::numeric_limits<double>::infinity();
+  std::vector<glm::dvec3> colours(labels + 1);
+  for (int label = 1; label <= labels; ++label)
+  {
+    colours[label] = glm::dvec3(palette->GetTypedComponent(label, 0),
+      palette->GetTypedComponent(label, 1),
+      palette->GetTypedComponent(label, 2));
+  }
+
+  unsigned char* label =
+    static_cast<unsigned char*>(output->AllocatePass(vtkLightField::LABEL)->GetVoidPointer(0));
+  unsigned char* confidence =
+    static_cast<unsigned char*>(output->AllocatePass(vtkLightField::CONFIDENCE)->GetVoidPointer(0));
+  const int radius = this->MorphologyRadius;
+  vtkSMPTools::For(0,
+    views,
+    [&](int first, int last)
+    {
+      std::vector<unsigned char> lit(pixels);
+      for (int view = first; view < last; ++view)
+      {
+        const vtkIdType offset = view * pixels;
+        for (vtkIdType p = 0; p < pixels; ++p)
+        {
+          const unsigned char* b = coded + 3 * (offset + p);
+          const unsigned char* w = flood + 3 * (offset + p);
+          label[offset + p] = 0;
+          confidence[offset + p] = 0;
+          lit[p] = 0;
+          // Eq. 1 on the bright channels; the noise of B' on the worst one.
+          bool bright[3];
+          glm::dvec3 normalised(0.0);
+          double noise = 0.0;
+          for (int c = 0; c < 3; ++c)
+          {
+            bright[c] = w[c] >= dark;
+            if (bright[c])
+            {
+              normalised[c] = std::min(255.0, 256.0 * b[c] / w[c]);
+              noise = std::max(noise, 256.0 * sigma / w[c]);
+            }
+          }
+          if (!bright[0] && !bright[1] && !bright[2])
+          {
+            continue;
+          }
+          lit[p] = 255;
+          double d1 = std::numeric_limits<double>::infinity();
+          double d2 = d1;
+          int nearest = 0;
+          for (int candidate = 1; candidate <= labels; ++candidate)
+          {
+            // Dark channels take the candidate's own value: they do not vote.
+            glm::dvec3 seen = normalised;
+            for (int c = 0; c < 3; ++c)
+            {
+              seen[c] = bright[c] ? seen[c] : colours[candidate][c];
+            }
+            const double d = lfd::ColourDistance(seen, colours[candidate]);
+            if (d < d1)
+            {
+              d2 = d1;
+              d1 = d;
+              nearest = candidate;
+            }
+            else if (d < d2)
+            {
+              d2 = d;
+            }
+          }
+          const bool close = d1 <= std::max(accepted, 3.0 * noise);
+          const bool clear = labels == 1 || d2 - d1 >= 2.0 * noise;
+          if (close && clear)
+          {
+            label[offset + p] = static_cast<unsigned char>(nearest);
+            confidence[offset + p] = labels == 1
+              ? 255
+              : static_cast<unsigned char>(std::lround(255.0 * (d2 - d1) / (d2 + d1)));
+          }
+        }
+        lfd::segmentation::CleanLabels(label + offset, lit.data(), width, height, labels, radius);
+        for (vtkIdType p = 0; p < pixels; ++p)
+        {
+          confidence[offset + p] = label[offset + p] ? confidence[offset + p] : 0;
+        }
+      }
+    });
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkProjectorSegmentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Palette: " << (this->Palette ? "set" : "(the input's)") << "\n";
+  os << indent << "NoiseSigma: " << this->NoiseSigma << "\n";
+  os << indent << "EstimatedNoise: " << this->EstimatedNoise << "\n";
+  os << indent << "DarkThreshold: " << this->DarkThreshold << "\n";
+  os << indent << "RejectionFactor: " << this->RejectionFactor << "\n";
+  os << indent << "MorphologyRadius: " << this->MorphologyRadius << "\n";
+}
