@@ -17,6 +17,13 @@
 #include "vtkImageFileWriter.h"
 #include "vtkImageResize.h"
 #include "vtkKeyframeInterpolator.h"
+#include "vtkBoxCoverageCheck.h"
+#include "vtkCellData.h"
+#include "vtkExecutive.h"
+#include "vtkLabelPalette.h"
+#include "vtkLabelPropagation.h"
+#include "vtkProjectorSegmentation.h"
+#include "vtkScanlineSplit.h"
 #include "vtkLabelCellsByBoxes.h"
 #include "vtkLeaveOneOutEvaluator.h"
 #include "vtkLightField.h"
@@ -110,6 +117,9 @@ struct SynthOptions
   std::vector<double> Axis = { 0.0, 1.0, 0.0 };
   bool SceneFixedLight = false;
   bool NoDepth = false;
+  int Projectors = 0;
+  double ProjectorNoise = 0.0;
+  double ProjectorAmbient = 0.0;
 };
 
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
@@ -332,6 +342,28 @@ vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options)
   capture->SetAxis(options.Axis[0], options.Axis[1], options.Axis[2]);
   capture->SetSceneFixedLight(options.SceneFixedLight);
   capture->SetCaptureDepth(!options.NoDepth);
+  if (options.Projectors > 0)
+  {
+    // One palette colour per part of the mesh, as far apart as the camera
+    // can tell them; the projectors paint each part with its colour.
+    vtkDataArray* labels = mesh->GetCellData()->GetArray("Label");
+    double range[2] = { 1.0, 1.0 };
+    if (labels)
+    {
+      labels->GetRange(range, 0);
+    }
+    vtkNew<vtkLabelPalette> chooser;
+    chooser->SetNumberOfLabels(std::max(1, static_cast<int>(range[1])));
+    vtkNew<vtkUnsignedCharArray> palette;
+    if (!chooser->Build(palette))
+    {
+      Fail("cannot choose " + std::to_string(static_cast<int>(range[1])) + " label colours");
+    }
+    capture->SetPalette(palette);
+    capture->SetNumberOfProjectors(options.Projectors);
+    capture->SetProjectorNoise(options.ProjectorNoise);
+    capture->SetProjectorAmbient(options.ProjectorAmbient);
+  }
   lfd::ShowProgress(capture, "capturing");
   Run(capture.Get(), "synthetic capture");
   auto lightField = vtkSmartPointer<vtkLightField>::New();
@@ -357,6 +389,22 @@ void AddSynthOptions(CLI::App* command, SynthOptions& options)
     options.SceneFixedLight,
     "light fixed in the scene instead of travelling with the camera (paper Fig. 5)");
   command->add_flag("--no-depth", options.NoDepth, "skip the Depth pass");
+  command
+    ->add_option("--projectors",
+      options.Projectors,
+      "also capture the Coded and Flood passes lit by N projectors on the ring, painting each "
+      "part with its palette colour")
+    ->check(CLI::Range(0, 64));
+  command
+    ->add_option("--projector-noise",
+      options.ProjectorNoise,
+      "sensor noise sigma of the projector passes (8-bit levels)")
+    ->check(CLI::Range(0.0, 255.0));
+  command
+    ->add_option("--projector-ambient",
+      options.ProjectorAmbient,
+      "room light in the projector passes (fraction of the albedo)")
+    ->check(CLI::Range(0.0, 1.0));
 }
 
 //------------------------------------------------------------------------------
@@ -833,6 +881,228 @@ int Demo(const std::string& out, int frames, int size)
   std::printf("sheet     %s\n", sheet.c_str());
   return 0;
 }
+
+//------------------------------------------------------------------------------
+// lfd split
+
+struct SplitOptions
+{
+  std::string In;
+  std::string Out;
+  std::string Truth;
+  std::vector<int> Rows;
+  std::vector<int> Labels;
+  std::vector<std::string> Paint;
+  std::string Proxy = "auto";
+  int Resolution = 128;
+  double Threshold = -1.0;
+  int Morphology = 1;
+  std::string Scene;
+};
+
+/**
+ * Prints the accuracy of `split`'s labels against the Label pass of the
+ * light field `truthPath` on the truth's object pixels, and the confusion
+ * per label.
+ */
+void ReportAccuracy(vtkLightField* split, const std::string& truthPath)
+{
+  auto truth = ReadLightField(truthPath);
+  auto* expected = vtkUnsignedCharArray::SafeDownCast(truth->GetPass(vtkLightField::LABEL));
+  auto* found = vtkUnsignedCharArray::SafeDownCast(split->GetPass(vtkLightField::LABEL));
+  if (!expected || expected->GetNumberOfTuples() != found->GetNumberOfTuples())
+  {
+    Fail(truthPath + ": " +
+      (expected ? "its Label pass has another size than the split light field's"
+                : "has no Label pass to compare with"));
+  }
+  vtkIdType object = 0, correct = 0;
+  std::vector<std::vector<vtkIdType>> confusion(256, std::vector<vtkIdType>(256, 0));
+  int labels = 0;
+  for (vtkIdType i = 0; i < expected->GetNumberOfTuples(); ++i)
+  {
+    const int e = expected->GetValue(i);
+    const int f = found->GetValue(i);
+    if (e == 0)
+    {
+      continue;
+    }
+    ++object;
+    correct += e == f ? 1 : 0;
+    ++confusion[e][f];
+    labels = std::max({ labels, e, f });
+  }
+  std::printf("accuracy on object pixels: %.2f %% (%lld of %lld)\n",
+    object ? 100.0 * correct / object : 0.0,
+    static_cast<long long>(correct),
+    static_cast<long long>(object));
+  std::printf("confusion (rows: truth, columns: split; column 0 = unlabelled)\n");
+  for (int e = 1; e <= labels; ++e)
+  {
+    std::printf("  %3d:", e);
+    for (int f = 0; f <= labels; ++f)
+    {
+      std::printf(" %9lld", static_cast<long long>(confusion[e][f]));
+    }
+    std::printf("\n");
+  }
+}
+
+/// Runs a splitter on `input` quietly (its error is reported once, here),
+/// prints the figures and writes the split light field.
+void RunSplit(vtkLightFieldSplitter* splitter, vtkLightField* input, const SplitOptions& options)
+{
+  vtkNew<vtkCallbackCommand> quiet;
+  splitter->AddObserver(vtkCommand::ErrorEvent, quiet);
+  splitter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, quiet);
+  splitter->SetInputData(input);
+  lfd::ShowProgress(splitter, "splitting");
+  splitter->Update();
+  if (*splitter->GetErrorMessage())
+  {
+    Fail(options.In + ": " + splitter->GetErrorMessage());
+  }
+  auto* label =
+    vtkUnsignedCharArray::SafeDownCast(splitter->GetOutput()->GetPass(vtkLightField::LABEL));
+  vtkIdType labelled = 0;
+  for (vtkIdType i = 0; i < label->GetNumberOfTuples(); ++i)
+  {
+    labelled += label->GetValue(i) ? 1 : 0;
+  }
+  std::printf("labelled pixels: %lld of %lld\n",
+    static_cast<long long>(labelled),
+    static_cast<long long>(label->GetNumberOfTuples()));
+  if (!options.Truth.empty())
+  {
+    ReportAccuracy(splitter->GetOutput(), options.Truth);
+  }
+  WriteLightField(splitter->GetOutput(), options.Out);
+  std::printf("wrote %s\n", options.Out.c_str());
+}
+
+int SplitProjector(const SplitOptions& options)
+{
+  auto lightField = ReadLightField(options.In);
+  vtkNew<vtkProjectorSegmentation> segmentation;
+  segmentation->SetMorphologyRadius(options.Morphology);
+  if (options.Threshold >= 0.0)
+  {
+    segmentation->SetDarkThreshold(options.Threshold);
+  }
+  RunSplit(segmentation, lightField, options);
+  std::printf("sensor noise sigma: %.2f\n", segmentation->GetEstimatedNoise());
+  return 0;
+}
+
+int SplitScanline(const SplitOptions& options)
+{
+  auto lightField = ReadLightField(options.In);
+  vtkNew<vtkScanlineSplit> split;
+  for (int row : options.Rows)
+  {
+    split->AddBoundary(row);
+  }
+  if (!options.Labels.empty() && options.Labels.size() != options.Rows.size() + 1)
+  {
+    Fail("--labels: " + std::to_string(options.Rows.size()) + " rows make " +
+      std::to_string(options.Rows.size() + 1) + " bands, " +
+      std::to_string(options.Labels.size()) + " labels given");
+  }
+  for (size_t band = 0; band < options.Labels.size(); ++band)
+  {
+    split->SetBandLabel(static_cast<int>(band), options.Labels[band]);
+  }
+  if (options.Threshold >= 0.0)
+  {
+    split->SetThreshold(options.Threshold);
+  }
+  split->SetMorphologyRadius(options.Morphology);
+  RunSplit(split, lightField, options);
+  return 0;
+}
+
+int SplitPropagate(const SplitOptions& options)
+{
+  auto lightField = ReadLightField(options.In);
+  vtkNew<vtkLabelPropagation> propagation;
+  for (const std::string& paint : options.Paint)
+  {
+    const size_t equals = paint.find('=');
+    char* end = nullptr;
+    const long view = equals == std::string::npos ? -1 : std::strtol(paint.c_str(), &end, 10);
+    if (equals == std::string::npos || end != paint.c_str() + equals || view < 0)
+    {
+      Fail("--paint '" + paint + "': expected VIEW=LABELS.png, e.g. 0=paint/view0.png");
+    }
+    vtkNew<vtkImageFileReader> reader;
+    const std::string file = paint.substr(equals + 1);
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    if (reader->GetErrorCode() != 0)
+    {
+      Fail(reader->GetErrorMessage());
+    }
+    vtkNew<vtkImageData> image;
+    image->ShallowCopy(reader->GetOutput());
+    vtkDataArray* scalars = image->GetPointData()->GetScalars();
+    if (scalars && scalars->GetNumberOfComponents() > 1)
+    {
+      Fail(file + ": a label image has one channel (label values), this one has " +
+        std::to_string(scalars->GetNumberOfComponents()));
+    }
+    propagation->SetPaintedView(static_cast<int>(view), image);
+  }
+  propagation->SetProxy(options.Proxy == "depth" ? vtkLabelPropagation::DEPTH
+      : options.Proxy == "hull"                  ? vtkLabelPropagation::VISUAL_HULL
+                                                 : vtkLabelPropagation::AUTOMATIC);
+  propagation->SetResolution(options.Resolution);
+  if (options.Threshold >= 0.0)
+  {
+    propagation->SetThreshold(options.Threshold);
+  }
+  RunSplit(propagation, lightField, options);
+  std::printf("proxy voxels: %lld\n", static_cast<long long>(propagation->GetNumberOfProxyVoxels()));
+  return 0;
+}
+
+int SplitCheck(const SplitOptions& options)
+{
+  auto lightField = ReadLightField(options.In);
+  auto scene = ReadScene(options.Scene);
+  if (!scene->HasCage())
+  {
+    Fail(options.Scene + ": the scene has no cage to check");
+  }
+  vtkNew<vtkBoxCoverageCheck> check;
+  check->SetInputData(0, lightField);
+  check->SetCageData(scene->GetCage());
+  check->SetThreshold(options.Threshold >= 0.0 ? options.Threshold : 0.95);
+  Run(check.Get(), "box coverage check");
+  std::printf("label  worst fraction  worst view  views below %.3f\n", check->GetThreshold());
+  for (int i = 0; i < check->GetNumberOfLabels(); ++i)
+  {
+    const std::vector<int> below = check->GetViewsBelow(i);
+    std::string list;
+    for (size_t k = 0; k < below.size() && k < 10; ++k)
+    {
+      list += (k ? "," : " (") + std::to_string(below[k]);
+    }
+    list += below.empty() ? "" : (below.size() > 10 ? ",...)" : ")");
+    std::printf("%5d  %14.4f  %10d  %zu%s\n",
+      check->GetLabel(i),
+      check->GetWorstFraction(i),
+      check->GetWorstView(i),
+      below.size(),
+      list.c_str());
+  }
+  if (!check->GetPassed())
+  {
+    Fail("some labels fall outside their boxes (fraction under " +
+      std::to_string(check->GetThreshold()) + "); grow the boxes or fix the labels");
+  }
+  std::printf("every label is inside its boxes\n");
+  return 0;
+}
 }
 
 int main(int argc, char* argv[])
@@ -933,6 +1203,57 @@ int main(int argc, char* argv[])
   demoCommand->add_option("--frames", demoFrames, "number of frames")->capture_default_str();
   demoCommand->add_option("--size", demoSize, "frame width and height")->capture_default_str();
 
+  SplitOptions split;
+  auto* splitCommand = app.add_subcommand("split",
+    "split a light field into parts: label its rays (projector masks, image rows, or labels "
+    "painted in a few views), or check the boxes against the labels");
+  splitCommand->require_subcommand(1);
+  auto addSplitIO = [&split](CLI::App* command)
+  {
+    command->add_option("IN", split.In, "light-field directory")->required();
+    command->add_option("--out", split.Out, "output light-field directory (IN + Label)")
+      ->required();
+    command->add_option("--truth",
+      split.Truth,
+      "a light field with the true Label pass: print the accuracy and confusion");
+  };
+  auto* splitProjector = splitCommand->add_subcommand("projector",
+    "label by the projector colour masks: Eq. 1 normalisation of Coded by Flood, nearest "
+    "palette colour (CIELAB), morphological clean-up");
+  addSplitIO(splitProjector);
+  splitProjector->add_option("--dark", split.Threshold, "Flood level below which a channel is dark (default: from the noise)");
+  splitProjector->add_option("--morphology", split.Morphology, "clean-up radius in pixels (0 = none)")
+    ->capture_default_str();
+  auto* splitScanline = splitCommand->add_subcommand("scanline",
+    "label by image rows within the object (aligned rings): band 1 above the first row, ...");
+  addSplitIO(splitScanline);
+  splitScanline->add_option("--rows", split.Rows, "boundary rows, from the top")
+    ->delimiter(',')
+    ->required();
+  splitScanline->add_option("--labels", split.Labels, "label of each band (default 1, 2, ...)")
+    ->delimiter(',');
+  splitScanline->add_option("--threshold", split.Threshold, "object brightness threshold when IN has no Label pass (default 10)");
+  splitScanline->add_option("--morphology", split.Morphology, "clean-up radius of the object mask")
+    ->capture_default_str();
+  auto* splitPropagate = splitCommand->add_subcommand("propagate",
+    "carry labels painted in a few views to every view through the Depth pass or a visual hull");
+  addSplitIO(splitPropagate);
+  splitPropagate->add_option("--paint", split.Paint, "VIEW=LABELS.png (one channel, 0 = unpainted); repeat")
+    ->required();
+  splitPropagate->add_option("--proxy", split.Proxy, "auto (depth when present), depth or hull")
+    ->check(CLI::IsMember({ "auto", "depth", "hull" }))
+    ->capture_default_str();
+  splitPropagate->add_option("--resolution", split.Resolution, "proxy voxels along its longest side")
+    ->check(CLI::Range(8, 1024))
+    ->capture_default_str();
+  splitPropagate->add_option("--threshold", split.Threshold, "silhouette brightness threshold (default 20)");
+  auto* splitCheck = splitCommand->add_subcommand("check",
+    "project each rest box into every view and report the fraction of its label's pixels "
+    "inside; exits 1 under the threshold");
+  splitCheck->add_option("IN", split.In, "light-field directory (with a Label pass)")->required();
+  splitCheck->add_option("--scene", split.Scene, "scene.json whose cage holds the boxes")->required();
+  splitCheck->add_option("--threshold", split.Threshold, "smallest acceptable fraction (default 0.95)");
+
   CLI11_PARSE(app, argc, argv);
   try
   {
@@ -963,6 +1284,22 @@ int main(int argc, char* argv[])
     if (*loo)
     {
       return EvalLeaveOneOut(looPath, looStride, looViews, looFocal, looThreshold);
+    }
+    if (*splitProjector)
+    {
+      return SplitProjector(split);
+    }
+    if (*splitScanline)
+    {
+      return SplitScanline(split);
+    }
+    if (*splitPropagate)
+    {
+      return SplitPropagate(split);
+    }
+    if (*splitCheck)
+    {
+      return SplitCheck(split);
     }
     if (*benchCommand)
     {

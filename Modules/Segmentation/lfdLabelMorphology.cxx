@@ -57,6 +57,16 @@ void CleanLabels(unsigned char* image,
   }
 }
 
+void DistanceToMask(const unsigned char* mask, int width, int height, std::vector<float>& distance)
+{
+  distance.resize(static_cast<size_t>(width) * height);
+  const cv::Mat source(height, width, CV_8UC1, const_cast<unsigned char*>(mask));
+  cv::Mat outside;
+  cv::compare(source, 0, outside, cv::CMP_EQ);
+  cv::Mat result(height, width, CV_32FC1, distance.data());
+  cv::distanceTransform(outside, result, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+}
+
 double EstimateNoise(const std::vector<unsigned char>& grey, int width, int height)
 {
   if (width < 3 || height < 3)

@@ -28,6 +28,12 @@ void CleanLabels(unsigned char* image,
   int radius);
 
 /**
+ * Distance in pixels from every pixel of a `width` x `height` mask to the
+ * nearest non-zero pixel (0 on the mask), into `distance` (resized).
+ */
+void DistanceToMask(const unsigned char* mask, int width, int height, std::vector<float>& distance);
+
+/**
  * Robust sensor-noise sigma of a grey 8-bit image (Immerkaer, "Fast noise
  * variance estimation", CVIU 1996): the median absolute response of the
  * 3x3 Laplacian-difference mask over unclipped pixels, / (0.6745 x 6).

@@ -70,9 +70,11 @@ struct VoxelGrid
 struct Silhouettes
 {
   std::vector<unsigned char> Mask;
+  std::vector<float> Distance; // to the silhouette, pixels (visual hull only)
   int Width = 0;
   int Height = 0;
-  bool Inside(int view, const glm::dvec2& pixel) const
+  // Is the silhouette within `radius` pixels of `pixel`?
+  bool Near(int view, const glm::dvec2& pixel, double radius) const
   {
     const long x = std::lround(pixel.x);
     const long y = std::lround(pixel.y);
@@ -80,11 +82,14 @@ struct Silhouettes
     {
       return false;
     }
-    return Mask[(static_cast<vtkIdType>(view) * Height + (Height - 1 - y)) * Width + x] != 0;
+    return Distance[(static_cast<vtkIdType>(view) * Height + (Height - 1 - y)) * Width + x] <=
+      radius;
   }
 };
 
-// Keeps the voxels of `grid` whose centres fall inside every silhouette.
+// Keeps the voxels of `grid` that overlap every silhouette: the projected
+// centre lies within the voxel's projected half-diagonal of it, so that
+// parts thinner than a voxel (fins, thin columns) survive the carve.
 std::vector<unsigned char> Carve(const VoxelGrid& grid, vtkCameraRig* rig, const Silhouettes& s)
 {
   std::vector<unsigned char> occupied(grid.Voxels(), 0);
@@ -99,8 +104,12 @@ std::vector<unsigned char> Carve(const VoxelGrid& grid, vtkCameraRig* rig, const
         bool inside = true;
         for (int view = 0; view < views && inside; ++view)
         {
+          const lfd::PinholeCamera& camera = rig->GetCamera(view);
           glm::dvec2 pixel;
-          inside = rig->GetCamera(view).Project(X, pixel) && s.Inside(view, pixel);
+          inside = camera.Project(X, pixel) &&
+            s.Near(view,
+              pixel,
+              0.866 * grid.Size * camera.K[0][0] / (camera.R * X + camera.t).z);
         }
         occupied[v] = inside ? 1 : 0;
       }
@@ -310,6 +319,14 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
         mask[p] = (rgb[0] + rgb[1] + rgb[2]) / 3.0 > this->Threshold ? 1 : 0;
       }
       lfd::segmentation::CleanLabels(mask, nullptr, width, height, 1, 1);
+    }
+    silhouettes.Distance.resize(silhouettes.Mask.size());
+    std::vector<float> distance;
+    for (int view = 0; view < views; ++view)
+    {
+      lfd::segmentation::DistanceToMask(
+        silhouettes.Mask.data() + view * pixels, width, height, distance);
+      std::copy(distance.begin(), distance.end(), silhouettes.Distance.begin() + view * pixels);
     }
     // The box the cameras surround (a cube about their centres), carved
     // coarsely to place the grid, then carved at full resolution.

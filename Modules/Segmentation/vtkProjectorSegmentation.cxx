@@ -158,7 +158,7 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input, vtkLightField* output
             }
           }
           const bool close = d1 <= std::max(accepted, 3.0 * noise);
-          const bool clear = labels == 1 || d2 - d1 >= 2.0 * noise;
+          const bool clear = labels == 1 || d2 - d1 > 2.0 * noise;
           if (close && clear)
           {
             label[offset + p] = static_cast<unsigned char>(nearest);

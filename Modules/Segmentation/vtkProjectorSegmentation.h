@@ -21,9 +21,9 @@
  *    estimate, 1996) gives the pixel's colour noise s = 256 sigma / W (the
  *    largest over its bright channels). The nearest colour is accepted when
  *    its distance d1 is within max(RejectionFactor x S / 2, 3 s), S the
- *    smallest distance between two palette colours, and the runner-up is at
- *    least 2 s further; otherwise the pixel is unlabelled. Confidence =
- *    255 (d2 - d1) / (d2 + d1).
+ *    smallest distance between two palette colours, and the runner-up is
+ *    more than 2 s further (a tie is never accepted); otherwise the pixel
+ *    is unlabelled. Confidence = 255 (d2 - d1) / (d2 + d1).
  * 3. **Clean-up** with OpenCV morphology, per label: an opening removes
  *    specks smaller than a disc of MorphologyRadius pixels, a closing fills
  *    unlabelled holes of that size where the Flood pass is lit.

@@ -1,0 +1,312 @@
+"""Splitting a light field into parts (paper Sec. 4): projector segmentation
+(Eq. 1 + CIELAB classification) on crafted pixels and on the synthetic fish
+and figure against their true Label pass, label propagation through the
+Depth pass, a visual hull and on the real templeRing, the box coverage
+check, the render of a projector-split fish against the synthetic-label one,
+and bad input. Thresholds sit just under the measured figures (README
+results table)."""
+
+import os
+import sys
+
+import lfdtesting as t
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkCommand, vtkUnsignedCharArray
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+import lfd
+
+# Measured: fish 99.60 %, figure 99.3 %; with noise sigma 4 and 5 % room
+# light, fish 99.2 %; propagation on the fish 99.63 % (depth), 93.1 %
+# (visual hull); templeRing agreement 0.921 mean, 0.78 worst view.
+PROJECTOR_ACCURACY = 0.98
+NOISY_ACCURACY = 0.985
+DEPTH_PROPAGATION = 0.99
+HULL_PROPAGATION = 0.91
+TEMPLE_MEAN, TEMPLE_WORST = 0.90, 0.75
+SPLIT_RENDER_PSNR = 30.0
+
+
+class Errors:
+    """Collects error events so that expected errors stay off the log."""
+
+    def __init__(self, *objects):
+        self.messages = []
+        for obj in objects:
+            obj.AddObserver(vtkCommand.ErrorEvent, self)
+
+    def __call__(self, caller, event):
+        self.messages.append(event)
+
+
+def quiet(algorithm):
+    Errors(algorithm, algorithm.GetExecutive())
+    return algorithm
+
+
+def palette(labels):
+    colours = vtkUnsignedCharArray()
+    chooser = lfd.vtkLabelPalette()
+    chooser.SetNumberOfLabels(labels)
+    chooser.Build(colours)
+    return colours, chooser.GetMinimumDistance()
+
+
+def light_field(coded, flood, colours):
+    """A one-view light field of the given H x W x 3 Coded and Flood images."""
+    h, w, _ = coded.shape
+    lf = lfd.vtkLightField()
+    lf.SetLayout(w, h, 1)
+    for pass_id, image in ((lfd.vtkLightField.CODED, coded), (lfd.vtkLightField.FLOOD, flood)):
+        array = lf.AllocatePass(pass_id)
+        vtk_to_numpy(array)[:] = image[::-1].reshape(-1, 3)
+    lf.SetPalette(colours)
+    return lf
+
+
+def labels_of(lf):
+    w, h, v = lf.GetDimensions()
+    return vtk_to_numpy(lf.GetPass(lfd.vtkLightField.LABEL)).reshape(v, h, w)
+
+
+def segment(lf, **settings):
+    seg = quiet(lfd.vtkProjectorSegmentation())
+    for key, value in settings.items():
+        getattr(seg, "Set" + key)(value)
+    seg.SetInputData(lf)
+    seg.Update()
+    return seg
+
+
+def capture(obj, views=90, projectors=0, noise=0.0, ambient=0.0, depth=True):
+    source = lfd.vtkProceduralObjectSource()
+    source.SetObject(obj)
+    source.Update()
+    cap = lfd.vtkLightFieldCapture()
+    cap.SetInputConnection(source.GetOutputPort())
+    cap.SetTextureConnection(source.GetOutputPort(1))
+    cap.SetViewsPerRing(views)
+    cap.SetNumberOfRows(1)
+    cap.SetCaptureDepth(depth)
+    if projectors:
+        cap.SetPalette(palette(3)[0])
+        cap.SetNumberOfProjectors(projectors)
+        cap.SetProjectorNoise(noise)
+        cap.SetProjectorAmbient(ambient)
+    cap.Update()
+    out = lfd.vtkLightField()
+    out.ShallowCopy(cap.GetOutput())
+    return source, out
+
+
+def accuracy(found, truth):
+    """Fraction of the true object pixels with the true label, and the confusion."""
+    object_pixels = truth > 0
+    confusion = {int(l): np.bincount(found[truth == l], minlength=4)[:4].tolist()
+                 for l in np.unique(truth[object_pixels])}
+    return float((found[object_pixels] == truth[object_pixels]).mean()), confusion
+
+
+# 1. Eq. 1 and the classification on crafted pixels.
+colours, separation = palette(3)
+pal = vtk_to_numpy(colours).astype(float)
+t.check(separation > 100, "palette of 3: smallest CIELAB distance", round(separation, 1))
+rows = []
+expected = []
+for label in (1, 2, 3):
+    for albedo in (0.15, 0.4, 0.7, 1.0):  # albedo and shading variation
+        rows.append((albedo * pal[label], albedo * np.full(3, 255.0)))
+        expected.append(label)
+rows.append((np.zeros(3), np.full(3, 3.0)))  # dark: no projector reaches it
+expected.append(0)
+for a, b in ((1, 2), (2, 3), (1, 3)):  # halfway between two palette colours
+    rows.append((0.5 * (pal[a] + pal[b]), np.full(3, 255.0)))
+    expected.append(0)
+n = len(rows)
+coded = np.repeat(np.array([r[0] for r in rows])[:, None, :], 7, axis=1)
+flood = np.repeat(np.array([r[1] for r in rows])[:, None, :], 7, axis=1)
+seg = segment(light_field(coded.round().astype(np.uint8), flood.astype(np.uint8), colours),
+              NoiseSigma=0.0, MorphologyRadius=0)
+found = labels_of(seg.GetOutput())[0][::-1][:, 3]
+t.check(found.tolist() == expected, "Eq. 1 + nearest colour: albedo, dark and in-between pixels",
+        found.tolist())
+confidence = vtk_to_numpy(seg.GetOutput().GetPass(lfd.vtkLightField.CONFIDENCE))
+t.check(confidence.max() == 255 and confidence.min() == 0, "confidence spans 0..255",
+        (int(confidence.min()), int(confidence.max())))
+
+# A red surface under a palette whose colours differ in green and blue only
+# where it is dark: those channels cannot vote, a tie is unlabelled.
+red_only = np.array([[[200, 0, 0]]], dtype=np.uint8)
+tie = segment(light_field((red_only * 0).astype(np.uint8), red_only, colours),
+              NoiseSigma=0.0, MorphologyRadius=0)
+t.check(labels_of(tie.GetOutput()).item() == 0, "no information in the lit channel: unlabelled",
+        labels_of(tie.GetOutput()).item())
+
+# Noise: sigma 3 on a lit patch, estimated from the image.
+rng = np.random.default_rng(7)
+truth = rng.integers(1, 4, size=(64, 64))
+albedo = rng.uniform(0.4, 1.0, size=(64, 64, 1))
+coded = np.clip(albedo * pal[truth] + rng.normal(0, 3, (64, 64, 3)), 0, 255).round()
+flood = np.clip(albedo * 255 + rng.normal(0, 3, (64, 64, 3)), 0, 255).round()
+noisy = segment(light_field(coded.astype(np.uint8), flood.astype(np.uint8), colours),
+                MorphologyRadius=0)
+noisy_accuracy = float((labels_of(noisy.GetOutput())[0][::-1] == truth).mean())
+t.check(noisy_accuracy > 0.99, "noisy crafted pixels classified", round(noisy_accuracy, 4))
+
+# 2. Projector segmentation of the synthetic fish and figure.
+fish, fish_lf = capture(lfd.vtkProceduralObjectSource.FISH, projectors=4)
+for name, (obj, lf) in (("fish", (fish, fish_lf)),
+                        ("figure", capture(lfd.vtkProceduralObjectSource.FIGURE, projectors=4))):
+    seg = segment(lf)
+    score, confusion = accuracy(labels_of(seg.GetOutput()), labels_of(lf))
+    t.check(score >= PROJECTOR_ACCURACY, f"{name}: projector labels vs truth on object pixels",
+            f"{100 * score:.2f} % (confusion truth -> [0,1,2,3]: {confusion})")
+_, noisy_fish = capture(lfd.vtkProceduralObjectSource.FISH, projectors=4, noise=4.0, ambient=0.05)
+seg = segment(noisy_fish)
+score, confusion = accuracy(labels_of(seg.GetOutput()), labels_of(noisy_fish))
+t.check(score >= NOISY_ACCURACY, "fish with noise sigma 4 and 5 % room light",
+        f"{100 * score:.2f} % (estimated sigma {seg.GetEstimatedNoise():.2f}; {confusion})")
+projector_fish = lfd.vtkLightField()
+projector_fish.ShallowCopy(segment(fish_lf).GetOutput())
+
+# 3. Propagation from three views painted with the true labels.
+truth = labels_of(fish_lf)
+for proxy, threshold in ((lfd.vtkLabelPropagation.DEPTH, DEPTH_PROPAGATION),
+                         (lfd.vtkLabelPropagation.VISUAL_HULL, HULL_PROPAGATION)):
+    propagation = quiet(lfd.vtkLabelPropagation())
+    for view in (0, 30, 60):
+        painted = vtkImageData()
+        painted.SetDimensions(fish_lf.GetWidth(), fish_lf.GetHeight(), 1)
+        painted.GetPointData().SetScalars(numpy_to_vtk(truth[view].ravel().copy(), deep=True))
+        propagation.SetPaintedView(view, painted)
+    propagation.SetProxy(proxy)
+    propagation.SetInputData(fish_lf)
+    propagation.Update()
+    score, confusion = accuracy(labels_of(propagation.GetOutput()), truth)
+    name = "depth" if proxy == lfd.vtkLabelPropagation.DEPTH else "visual hull"
+    t.check(score >= threshold, f"fish, 3 painted views -> 90 views through the {name}",
+            f"{100 * score:.2f} % ({propagation.GetNumberOfProxyVoxels()} voxels; {confusion})")
+
+# ... and on the real templeRing, from three painted views; consistency is the
+# agreement with the same painting rule applied to every view.
+sys.path.insert(0, os.path.join(os.path.dirname(t.BASELINE_DIR), "templeRing"))
+import paint_labels  # noqa: E402
+
+temple_dir = t.temp_path("segmentation", "temple.lf")
+importer = lfd.vtkMiddleburyImporter()
+importer.SetFileName(os.path.join(t.SHARED_DATA_DIR, "templeRing", "templeR_par.txt"))
+importer.Update()
+temple = lfd.vtkLightField()
+temple.ShallowCopy(importer.GetOutput())
+writer = lfd.vtkLightFieldWriter()
+writer.SetInputData(temple)
+writer.SetDirectory(temple_dir)
+writer.Write()
+propagation = quiet(lfd.vtkLabelPropagation())
+for view in (0, 16, 32):
+    reader = vtkPNGReader()
+    reader.SetFileName(os.path.join(os.path.dirname(t.BASELINE_DIR), "templeRing",
+                                    f"painted_view_{view:04d}.png"))
+    reader.Update()
+    painted = vtkImageData()
+    painted.DeepCopy(reader.GetOutput())
+    propagation.SetPaintedView(view, painted)
+propagation.SetThreshold(60)
+propagation.SetInputData(temple)
+propagation.Update()
+propagated = labels_of(propagation.GetOutput())
+signs = paint_labels.axis_signs(temple_dir)
+w, h, v = temple.GetDimensions()
+coaxial = vtk_to_numpy(temple.GetPass(lfd.vtkLightField.COAXIAL)).reshape(v, h, w, 3)
+agreement = []
+for view in range(v):
+    rule = paint_labels.paint(coaxial[view].astype(float), signs[view])
+    agreement.append(float((propagated[view][rule > 0] == rule[rule > 0]).mean()))
+t.check(np.mean(agreement) >= TEMPLE_MEAN and min(agreement) >= TEMPLE_WORST,
+        "templeRing: 3 painted views -> 47, agreement with the painting rule (mean, worst)",
+        (round(float(np.mean(agreement)), 3), round(min(agreement), 3)))
+
+# 4. Box coverage: the fish's part boxes hold their labels; without a box a
+# label covers nothing.
+parts = lfd.vtkPartCageSource()
+parts.SetInputConnection(fish.GetOutputPort())
+parts.Update()
+check = lfd.vtkBoxCoverageCheck()
+check.SetInputData(0, projector_fish)
+check.SetCageData(parts.GetOutput())
+check.Update()
+worst = [round(check.GetWorstFraction(i), 4) for i in range(check.GetNumberOfLabels())]
+t.check(check.GetNumberOfLabels() == 3 and check.GetPassed() and min(worst) > 0.97,
+        "projector-split fish inside its part boxes (worst fraction per label)", worst)
+table = check.GetOutput()
+t.check(table.GetNumberOfRows() == 3 * 90, "coverage table: one row per label and view",
+        table.GetNumberOfRows())
+head_only = lfd.vtkDeformationCage()
+head_only.DeepCopy(parts.GetOutput())
+labels_array = head_only.GetCellData().GetArray("Label")
+labels_array.SetValue(0, 3)  # box 0 now claims label 3: label 1 has no box
+check.SetCageData(head_only)
+check.Update()
+t.check(not check.GetPassed() and check.GetWorstFraction(0) == 0.0,
+        "a label without a box fails the check", check.GetWorstFraction(0))
+
+# 5. The projector-split fish deforms like the synthetic-label one.
+pose = lfd.vtkCagePoseFilter()
+pose.SetInputConnection(parts.GetOutputPort())
+pose.SetMode(lfd.vtkCagePoseFilter.SWIM)
+pose.SetAngle(20.0)
+pose.SetTurnAxis(0, 0, 1)
+pose.SetPhase(1.0)
+pose.Update()
+camera = t.side_camera(fish_lf.GetRig())
+renders = []
+for lf in (fish_lf, projector_fish):
+    renderer = lfd.vtkLightFieldRenderer()
+    renderer.SetInputData(lf)
+    renderer.SetCageData(pose.GetOutput())
+    renderer.SetCamera(camera)
+    renderer.SetWidth(256)
+    renderer.SetHeight(256)
+    renderer.Update()
+    renders.append(t.image_array(renderer.GetOutput()).astype(float))
+mse = float(((renders[0] - renders[1]) ** 2).mean())
+psnr = 10 * np.log10(255.0 ** 2 / max(mse, 1e-12))
+t.check(psnr >= SPLIT_RENDER_PSNR, "swimming fish: projector-split vs synthetic-label render (PSNR dB)",
+        round(psnr, 2))
+
+# 6. Bad input: clear errors.
+no_flood = lfd.vtkLightField()
+no_flood.DeepCopy(fish_lf)
+no_flood.GetPointData().RemoveArray("Flood")
+seg = segment(no_flood)
+t.check("no Flood pass" in seg.GetErrorMessage(), "missing Flood pass", seg.GetErrorMessage())
+no_palette = lfd.vtkLightField()
+no_palette.DeepCopy(fish_lf)
+no_palette.SetPalette(None)
+seg = segment(no_palette)
+t.check("palette" in seg.GetErrorMessage(), "missing palette", seg.GetErrorMessage())
+masks = vtkImageData()
+masks.SetDimensions(10, 10, 4)
+masks.GetPointData().SetScalars(numpy_to_vtk(np.zeros((400, 3), np.uint8), deep=True))
+source = lfd.vtkProceduralObjectSource()
+cap = quiet(lfd.vtkLightFieldCapture())
+cap.SetInputConnection(source.GetOutputPort())
+cap.SetViewsPerRing(4)
+cap.SetNumberOfRows(1)
+cap.SetNumberOfProjectors(4)
+cap.SetProjectorMasks(masks)
+cap.Update()
+t.check(cap.GetOutput().GetNumberOfPoints() == 0, "masks of the wrong size: no output",
+        cap.GetOutput().GetNumberOfPoints())
+wrong = vtkImageData()
+wrong.SetDimensions(10, 10, 1)
+wrong.GetPointData().SetScalars(numpy_to_vtk(np.ones(100, np.uint8), deep=True))
+propagation = quiet(lfd.vtkLabelPropagation())
+propagation.SetPaintedView(0, wrong)
+propagation.SetInputData(fish_lf)
+propagation.Update()
+t.check("10x10" in propagation.GetErrorMessage() and "256x256" in propagation.GetErrorMessage(),
+        "painted label image of the wrong size", propagation.GetErrorMessage())
+t.finish()
