@@ -9,8 +9,8 @@
 #include "vtkCagePoseFilter.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
-#include "vtkCellData.h"
 #include "vtkCameraRig.h"
+#include "vtkCellData.h"
 #include "vtkDeformationCage.h"
 #include "vtkGroundTruthEvaluator.h"
 #include "vtkImageData.h"
@@ -884,15 +884,15 @@ int Bench(int repeat, int size)
  */
 struct DemoScene
 {
-  const char* Object;     ///< the built-in object
-  const char* Name;       ///< the scene file's name (and the light field's, see below)
-  const char* Motion;     ///< what the keyframes do, for the report
-  bool SingleBox;         ///< one box (label 1) around the whole object, as in Fig. 1
-  int Axis;               ///< the slab axis of the cage and of the pose
-  int Mode;               ///< vtkCagePoseFilter mode
-  double Angle;           ///< the pose's angle (degrees)
-  bool Wave;              ///< keyframes run the swim's phase over a cycle, else ramp the angle
-  bool BothLights;        ///< also capture under a scene-fixed light (Figs. 4 and 5)
+  const char* Object; ///< the built-in object
+  const char* Name;   ///< the scene file's name (and the light field's, see below)
+  const char* Motion; ///< what the keyframes do, for the report
+  bool SingleBox;     ///< one box (label 1) around the whole object, as in Fig. 1
+  int Axis;           ///< the slab axis of the cage and of the pose
+  int Mode;           ///< vtkCagePoseFilter mode
+  double Angle;       ///< the pose's angle (degrees)
+  bool Wave;          ///< keyframes run the swim's phase over a cycle, else ramp the angle
+  bool BothLights;    ///< also capture under a scene-fixed light (Figs. 4 and 5)
   double TurnAxis[3];
 };
 
@@ -901,10 +901,26 @@ struct DemoScene
 /// light (Figs. 4 and 5).
 const DemoScene DemoScenes[] = {
   { "fish", "swim", "swim", false, -1, vtkCagePoseFilter::SWIM, 20.0, true, false, { 0, 0, 1 } },
-  { "figure", "twist", "twist 0-90 degrees", true, 1, vtkCagePoseFilter::TWIST, 90.0, false,
-    false, { 0, 1, 0 } },
-  { "checkerboard", "checkerboard", "top twisted 0-60 degrees", true, 1, vtkCagePoseFilter::TWIST,
-    60.0, false, true, { 0, 1, 0 } },
+  { "figure",
+    "twist",
+    "twist 0-90 degrees",
+    true,
+    1,
+    vtkCagePoseFilter::TWIST,
+    90.0,
+    false,
+    false,
+    { 0, 1, 0 } },
+  { "checkerboard",
+    "checkerboard",
+    "top twisted 0-60 degrees",
+    true,
+    1,
+    vtkCagePoseFilter::TWIST,
+    60.0,
+    false,
+    true,
+    { 0, 1, 0 } },
 };
 
 /// The object's mesh with every cell in part 1: one sub-light field for one box.
@@ -926,7 +942,11 @@ vtkSmartPointer<vtkPolyData> SinglePart(vtkPolyData* mesh)
  * frames and a contact sheet. A second light writes its files with the
  * suffix "_fixed_light".
  */
-int Demo(const std::string& sceneName, const std::string& out, int frames, int size)
+int Demo(const std::string& sceneName,
+  const std::string& out,
+  int frames,
+  int size,
+  const SynthOptions& capture)
 {
   const DemoScene* demo = nullptr;
   for (const DemoScene& candidate : DemoScenes)
@@ -979,7 +999,7 @@ int Demo(const std::string& sceneName, const std::string& out, int frames, int s
     }
     const std::string suffix = sceneFixedLight ? "_fixed_light" : "";
     double start = vtkTimerLog::GetUniversalTime();
-    SynthOptions options;
+    SynthOptions options = capture;
     options.SceneFixedLight = sceneFixedLight;
     auto lightField = Capture(mesh, texture, options);
     const double captureTime = Seconds(start);
@@ -1166,6 +1186,12 @@ int main(int argc, char* argv[])
     "--out", demoOut, "output folder (default: lfd-demo, or lfd-demo-SCENE for the others)");
   demoCommand->add_option("--frames", demoFrames, "number of frames")->capture_default_str();
   demoCommand->add_option("--size", demoSize, "frame width and height")->capture_default_str();
+  SynthOptions demoCapture;
+  demoCommand->add_option("--views", demoCapture.Views, "captured views per ring")
+    ->capture_default_str();
+  demoCommand->add_option("--rows", demoCapture.Rows, "captured rings")->capture_default_str();
+  demoCommand->add_option("--capture-size", demoCapture.Width, "captured views' width and height")
+    ->capture_default_str();
 
   CLI11_PARSE(app, argc, argv);
   try
@@ -1208,10 +1234,12 @@ int main(int argc, char* argv[])
     }
     if (*demoCommand)
     {
+      demoCapture.Height = demoCapture.Width;
       return Demo(demoScene,
         demoOut.empty() ? (demoScene == "fish" ? "lfd-demo" : "lfd-demo-" + demoScene) : demoOut,
         demoFrames,
-        demoSize);
+        demoSize,
+        demoCapture);
     }
   }
   catch (const Failure& failure)

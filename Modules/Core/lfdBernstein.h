@@ -56,9 +56,9 @@ inline void BernsteinBasis(int n, double t, double* b)
 /// A Sederberg-Parry lattice over an axis-aligned region, as control-point displacements.
 struct Lattice
 {
-  glm::ivec3 Degree{ 1 };    ///< (l, m, n): control points per axis minus one, each >= 1
-  glm::dvec3 Origin{ 0.0 };  ///< X0, the region's low corner
-  glm::dvec3 Size{ 1.0 };    ///< the region's sides along x, y, z (all positive)
+  glm::ivec3 Degree{ 1 };   ///< (l, m, n): control points per axis minus one, each >= 1
+  glm::dvec3 Origin{ 0.0 }; ///< X0, the region's low corner
+  glm::dvec3 Size{ 1.0 };   ///< the region's sides along x, y, z (all positive)
   std::vector<glm::dvec3> Displacements; ///< D_ijk at i + (l+1) (j + (m+1) k)
 
   int Index(int i, int j, int k) const

@@ -34,8 +34,7 @@ lfd::Lattice MakeLattice(const int dimensions[3],
   lfd::Lattice lattice;
   lattice.Degree = glm::ivec3(dimensions[0] - 1, dimensions[1] - 1, dimensions[2] - 1);
   lattice.Origin = glm::dvec3(region[0], region[2], region[4]);
-  lattice.Size =
-    glm::dvec3(region[1] - region[0], region[3] - region[2], region[5] - region[4]);
+  lattice.Size = glm::dvec3(region[1] - region[0], region[3] - region[2], region[5] - region[4]);
   lattice.Displacements.resize(displacements.size() / 3);
   for (size_t c = 0; c < lattice.Displacements.size(); ++c)
   {
@@ -82,8 +81,9 @@ void vtkLatticeCageFilter::PrintSelf(ostream& os, vtkIndent indent)
 void vtkLatticeCageFilter::SetLatticeDimensions(int nx, int ny, int nz)
 {
   const int limit = lfd::MaxLatticeDegree + 1;
-  const int dimensions[3] = { std::clamp(nx, 2, limit), std::clamp(ny, 2, limit),
-    std::clamp(nz, 2, limit) };
+  const int dimensions[3] = {
+    std::clamp(nx, 2, limit), std::clamp(ny, 2, limit), std::clamp(nz, 2, limit)
+  };
   if (std::equal(dimensions, dimensions + 3, this->LatticeDimensions))
   {
     return;
@@ -98,17 +98,21 @@ int vtkLatticeCageFilter::ControlPointIndex(int i, int j, int k)
   const int* n = this->LatticeDimensions;
   if (i < 0 || i >= n[0] || j < 0 || j >= n[1] || k < 0 || k >= n[2])
   {
-    vtkErrorMacro("Control point (" << i << ", " << j << ", " << k
-                                    << ") is outside the lattice of " << n[0] << " x " << n[1]
-                                    << " x " << n[2] << " control points.");
+    vtkErrorMacro("Control point (" << i << ", " << j << ", " << k << ") is outside the lattice of "
+                                    << n[0] << " x " << n[1] << " x " << n[2]
+                                    << " control points.");
     return -1;
   }
   return i + n[0] * (j + n[1] * k);
 }
 
 //------------------------------------------------------------------------------
-void vtkLatticeCageFilter::SetControlPointDisplacement(
-  int i, int j, int k, double dx, double dy, double dz)
+void vtkLatticeCageFilter::SetControlPointDisplacement(int i,
+  int j,
+  int k,
+  double dx,
+  double dy,
+  double dz)
 {
   const int c = this->ControlPointIndex(i, j, k);
   if (c < 0)
@@ -189,8 +193,9 @@ int vtkLatticeCageFilter::RequestData(vtkInformation*,
   }
 
   // The rest positions, input points first so that they keep their ids.
-  double bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
-    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  double bounds[6] = {
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN
+  };
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     double p[3];
@@ -204,10 +209,9 @@ int vtkLatticeCageFilter::RequestData(vtkInformation*,
   const double* region = HasVolume(this->Region) ? this->Region : bounds;
   if (!HasVolume(region))
   {
-    vtkErrorMacro("The lattice region (" << region[0] << ", " << region[1] << ", " << region[2]
-                                         << ", " << region[3] << ", " << region[4] << ", "
-                                         << region[5]
-                                         << ") has no volume: the input cage is flat; set Region.");
+    vtkErrorMacro("The lattice region ("
+      << region[0] << ", " << region[1] << ", " << region[2] << ", " << region[3] << ", "
+      << region[4] << ", " << region[5] << ") has no volume: the input cage is flat; set Region.");
     return 0;
   }
   const double diagonal = std::sqrt((region[1] - region[0]) * (region[1] - region[0]) +
@@ -243,8 +247,7 @@ int vtkLatticeCageFilter::RequestData(vtkInformation*,
     double corners[24];
     if (!cage->GetRestCorners(b, corners))
     {
-      vtkErrorMacro("Box " << b
-                           << " of the input cage is not a hexahedron of 8 existing points.");
+      vtkErrorMacro("Box " << b << " of the input cage is not a hexahedron of 8 existing points.");
       return 0;
     }
     lfd::Hexahedron box;

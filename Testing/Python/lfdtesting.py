@@ -40,6 +40,15 @@ def image_array(image, name=None):
     return vtk_to_numpy(array).reshape(h, w, -1)[::-1]
 
 
+def top_over_bottom(image):
+    """Mean brightness of the checkerboard's white squares in the top half of
+    an image over the bottom half (paper Figs. 4 and 5)."""
+    luminance = image_array(image).astype(float).mean(axis=2)
+    white = luminance > 0.5 * luminance.max()
+    half = luminance.shape[0] // 2
+    return luminance[:half][white[:half]].mean() / luminance[half:][white[half:]].mean()
+
+
 def temp_path(*parts):
     path = os.path.join(TEMP_DIR, *parts)
     os.makedirs(os.path.dirname(path), exist_ok=True)

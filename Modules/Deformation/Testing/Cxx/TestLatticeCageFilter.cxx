@@ -35,8 +35,9 @@ vtkSmartPointer<vtkDeformationCage> MakeColumn()
   {
     for (int c = 0; c < 4; ++c)
     {
-      const double p[3] = { lfd::HexCorner[c][0] - 0.5, lfd::HexCorner[c][1] - 0.5,
-        static_cast<double>(layer) };
+      const double p[3] = {
+        lfd::HexCorner[c][0] - 0.5, lfd::HexCorner[c][1] - 0.5, static_cast<double>(layer)
+      };
       cage->AddPoint(p);
     }
   }
@@ -199,9 +200,10 @@ bool TestLinearPrecision()
     }
   }
   lattice->Update();
-  return Near(
-    "affine displacement of a 3 x 4 x 5 lattice reproduced", MaxError(lattice->GetOutput(), affine),
-    0.0, 1e-12);
+  return Near("affine displacement of a 3 x 4 x 5 lattice reproduced",
+    MaxError(lattice->GetOutput(), affine),
+    0.0,
+    1e-12);
 }
 
 bool TestBend()
