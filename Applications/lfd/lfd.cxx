@@ -10,12 +10,14 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
+#include "vtkCellData.h"
 #include "vtkDeformationCage.h"
 #include "vtkGroundTruthEvaluator.h"
 #include "vtkImageData.h"
 #include "vtkImageFileReader.h"
 #include "vtkImageFileWriter.h"
 #include "vtkImageResize.h"
+#include "vtkIntArray.h"
 #include "vtkKeyframeInterpolator.h"
 #include "vtkBoxCoverageCheck.h"
 #include "vtkCellData.h"
@@ -25,6 +27,7 @@
 #include "vtkProjectorSegmentation.h"
 #include "vtkScanlineSplit.h"
 #include "vtkLabelCellsByBoxes.h"
+#include "vtkLatticeCageFilter.h"
 #include "vtkLeaveOneOutEvaluator.h"
 #include "vtkLightField.h"
 #include "vtkLightFieldCapture.h"
@@ -277,59 +280,31 @@ void WriteImage(vtkImageData* image, const std::string& path)
   }
 }
 
-/// Captures a light field of a mesh (or a built-in object) with the options.
-vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options)
+/// The source mesh (and texture) of a capture or a ground-truth comparison: a
+/// built-in object by name, or a mesh file.
+vtkSmartPointer<vtkPolyData> SourceMesh(const std::string& name,
+  vtkSmartPointer<vtkImageData>& texture)
+{
+  const int object = vtkProceduralObjectSource::GetObjectFromString(name.c_str());
+  if (object < 0)
+  {
+    return ReadMesh(name);
+  }
+  vtkNew<vtkProceduralObjectSource> source;
+  source->SetObject(object);
+  source->Update();
+  texture = source->GetTextureOutput();
+  return source->GetOutput();
+}
+
+/// Captures a light field of `mesh` (with `texture`, optional) with the options' rig and light.
+vtkSmartPointer<vtkLightField> Capture(vtkPolyData* mesh,
+  vtkImageData* texture,
+  const SynthOptions& options)
 {
   vtkNew<vtkLightFieldCapture> capture;
-  vtkSmartPointer<vtkPolyData> mesh;
-  if (!options.Mesh.empty())
-  {
-    mesh = ReadMesh(options.Mesh);
-    if (!options.Texture.empty())
-    {
-      vtkNew<vtkImageFileReader> texture;
-      texture->SetFileName(options.Texture.c_str());
-      texture->Update();
-      if (texture->GetErrorCode() != 0)
-      {
-        Fail(texture->GetErrorMessage());
-      }
-      capture->SetTextureData(texture->GetOutput());
-    }
-  }
-  else
-  {
-    vtkNew<vtkProceduralObjectSource> source;
-    if (options.Object == "fish")
-    {
-      source->SetObjectToFish();
-    }
-    else if (options.Object == "figure")
-    {
-      source->SetObjectToFigure();
-    }
-    else
-    {
-      source->SetObjectToCheckerboard();
-    }
-    source->Update();
-    mesh = source->GetOutput();
-    capture->SetTextureData(source->GetTextureOutput());
-  }
-  if (!options.Scene.empty())
-  {
-    auto scene = ReadScene(options.Scene);
-    if (!scene->HasCage())
-    {
-      Fail("scene '" + options.Scene + "' has no cage: its rest boxes are what label the mesh");
-    }
-    vtkNew<vtkLabelCellsByBoxes> labeler;
-    labeler->SetInputData(mesh);
-    labeler->SetBoxesData(scene->GetCage());
-    Run(labeler.Get(), "labelling the mesh by the scene's boxes");
-    mesh = labeler->GetOutput();
-  }
   capture->SetInputData(mesh);
+  capture->SetTextureData(texture);
   capture->SetViewsPerRing(options.Views);
   capture->SetNumberOfRows(options.Rows);
   capture->SetWidth(options.Width);
@@ -369,6 +344,46 @@ vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options)
   auto lightField = vtkSmartPointer<vtkLightField>::New();
   lightField->ShallowCopy(capture->GetOutput());
   return lightField;
+}
+
+/// Captures a light field of a mesh (or a built-in object) with the options.
+vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options)
+{
+  vtkSmartPointer<vtkImageData> texture;
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (!options.Mesh.empty())
+  {
+    mesh = ReadMesh(options.Mesh);
+    if (!options.Texture.empty())
+    {
+      vtkNew<vtkImageFileReader> reader;
+      reader->SetFileName(options.Texture.c_str());
+      reader->Update();
+      if (reader->GetErrorCode() != 0)
+      {
+        Fail(reader->GetErrorMessage());
+      }
+      texture = reader->GetOutput();
+    }
+  }
+  else
+  {
+    mesh = SourceMesh(options.Object, texture);
+  }
+  if (!options.Scene.empty())
+  {
+    auto scene = ReadScene(options.Scene);
+    if (!scene->HasCage())
+    {
+      Fail("scene '" + options.Scene + "' has no cage: its rest boxes are what label the mesh");
+    }
+    vtkNew<vtkLabelCellsByBoxes> labeler;
+    labeler->SetInputData(mesh);
+    labeler->SetBoxesData(scene->GetCage());
+    Run(labeler.Get(), "labelling the mesh by the scene's boxes");
+    mesh = labeler->GetOutput();
+  }
+  return Capture(mesh, texture, options);
 }
 
 void AddSynthOptions(CLI::App* command, SynthOptions& options)
@@ -646,23 +661,6 @@ int Animate(const std::string& scenePath, int frames, const std::string& out)
   return 0;
 }
 
-/// The source mesh (and texture) of a ground-truth comparison: a built-in
-/// object by name, or a mesh file.
-vtkSmartPointer<vtkPolyData> SourceMesh(const std::string& name,
-  vtkSmartPointer<vtkImageData>& texture)
-{
-  const int object = vtkProceduralObjectSource::GetObjectFromString(name.c_str());
-  if (object < 0)
-  {
-    return ReadMesh(name);
-  }
-  vtkNew<vtkProceduralObjectSource> source;
-  source->SetObject(object);
-  source->Update();
-  texture = source->GetTextureOutput();
-  return source->GetOutput();
-}
-
 int EvalGroundTruth(const std::string& scenePath,
   const std::string& meshName,
   const std::string& out,
@@ -729,6 +727,114 @@ int EvalLeaveOneOut(const std::string& path,
     evaluator->GetMeanPSNR(),
     evaluator->GetMeanObjectPSNR(),
     static_cast<long long>(table->GetNumberOfRows()));
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+// lfd lattice
+
+struct LatticeOptions
+{
+  std::string Scene;
+  std::string Out;
+  std::vector<int> Dimensions = { 2, 2, 2 };
+  std::vector<double> Moves; // I J K DX DY DZ, repeated
+  std::vector<double> Region;
+  int Subdivision = 1;
+};
+
+/**
+ * Deforms a scene's rest boxes by a Sederberg-Parry lattice (control points
+ * moved with --move) sampled into boxes, and writes the scene with that cage
+ * (an ordinary cage: points = the FFD of the rest points; keyframes dropped,
+ * since they name the old points). The light field is the same one, its
+ * path made relative to the new scene file.
+ */
+int Lattice(const LatticeOptions& options)
+{
+  auto scene = ReadScene(options.Scene);
+  if (!scene->HasCage())
+  {
+    Fail("scene '" + options.Scene + "' has no cage: the lattice deforms its rest boxes");
+  }
+  vtkNew<vtkLatticeCageFilter> lattice;
+  lattice->SetInputData(scene->GetCage());
+  lattice->SetLatticeDimensions(options.Dimensions.data());
+  if (options.Moves.size() % 6 != 0)
+  {
+    Fail("--move takes 6 numbers: I J K DX DY DZ");
+  }
+  for (std::size_t m = 0; m < options.Moves.size(); m += 6)
+  {
+    const double* move = &options.Moves[m];
+    int index[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      index[a] = static_cast<int>(std::lround(move[a]));
+      if (index[a] != move[a] || index[a] < 0 || index[a] >= options.Dimensions[a])
+      {
+        char message[256];
+        std::snprintf(message,
+          sizeof(message),
+          "--move %g %g %g: control point indices are integers in 0..%d, 0..%d, 0..%d "
+          "(--dimensions)",
+          move[0],
+          move[1],
+          move[2],
+          options.Dimensions[0] - 1,
+          options.Dimensions[1] - 1,
+          options.Dimensions[2] - 1);
+        Fail(message);
+      }
+    }
+    lattice->SetControlPointDisplacement(index[0], index[1], index[2], move + 3);
+  }
+  if (!options.Region.empty())
+  {
+    lattice->SetRegion(options.Region.data());
+  }
+  lattice->SetSubdivision(options.Subdivision);
+  Run(lattice.Get(), "sampling the lattice into boxes");
+  vtkDeformationCage* cage = lattice->GetOutput();
+  vtkNew<vtkCallbackCommand> quiet; // the refusal is said once, below
+  cage->AddObserver(vtkCommand::ErrorEvent, quiet);
+  if (!cage->Validate())
+  {
+    Fail(options.Out + ": the sampled cage is refused: " + cage->GetErrorMessage());
+  }
+
+  if (scene->GetLightFieldPath())
+  {
+    const std::string lightField =
+      vtksys::SystemTools::CollapseFullPath(scene->GetResolvedLightFieldPath());
+    const std::string folder =
+      vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(options.Out));
+    scene->SetLightFieldPath(vtksys::SystemTools::RelativePath(folder, lightField).c_str());
+  }
+  scene->SetCage(cage);
+  scene->RemoveAllKeyframes();
+  if (!scene->Write(options.Out.c_str()))
+  {
+    Fail(scene->GetErrorMessage());
+  }
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < cage->GetNumberOfPoints(); ++i)
+  {
+    double rest[3], deformed[3];
+    cage->GetRestPoint(i, rest);
+    cage->GetDeformedPoint(i, deformed);
+    largest = std::max(largest, std::sqrt(vtkMath::Distance2BetweenPoints(rest, deformed)));
+  }
+  std::printf("wrote %s: %lld boxes on %lld points (lattice %d x %d x %d, subdivision %d), "
+              "largest corner move %.4g\n",
+    options.Out.c_str(),
+    static_cast<long long>(cage->GetNumberOfBoxes()),
+    static_cast<long long>(cage->GetNumberOfPoints()),
+    options.Dimensions[0],
+    options.Dimensions[1],
+    options.Dimensions[2],
+    options.Subdivision,
+    largest);
   return 0;
 }
 
@@ -820,65 +926,176 @@ int Bench(int repeat, int size)
   return 0;
 }
 
-int Demo(const std::string& out, int frames, int size)
+/**
+ * A built-in scene of `lfd demo`: an object, its cage at rest, keyframes of
+ * a pose, and the light(s) it is captured under.
+ */
+struct DemoScene
 {
-  vtksys::SystemTools::MakeDirectory(out);
-  double start = vtkTimerLog::GetUniversalTime();
-  SynthOptions options;
-  auto lightField = Synthesize(options);
-  const double captureTime = Seconds(start);
-  start = vtkTimerLog::GetUniversalTime();
-  WriteLightField(lightField, out + "/fish.lf");
-  const double writeTime = Seconds(start);
+  const char* Object; ///< the built-in object
+  const char* Name;   ///< the scene file's name (and the light field's, see below)
+  const char* Motion; ///< what the keyframes do, for the report
+  bool SingleBox;     ///< one box (label 1) around the whole object, as in Fig. 1
+  int Axis;           ///< the slab axis of the cage and of the pose
+  int Mode;           ///< vtkCagePoseFilter mode
+  double Angle;       ///< the pose's angle (degrees)
+  bool Wave;          ///< keyframes run the swim's phase over a cycle, else ramp the angle
+  bool BothLights;    ///< also capture under a scene-fixed light (Figs. 4 and 5)
+  double TurnAxis[3];
+};
 
-  // Paper Fig. 13: three boxes (tail, body, head) around the fish's parts, a
-  // travelling wave through the shared box faces; head and tail turn with
-  // the bending body. Bending about the camera's viewing axis keeps the
-  // motion in the picture (a ring light field has horizontal parallax only).
-  vtkNew<vtkProceduralObjectSource> fish;
-  fish->SetObjectToFish();
+/// The demos: the swimming fish (Fig. 13), the single-box twist of the
+/// figure (Fig. 1) and the twisted checkerboard under coaxial and scene-fixed
+/// light (Figs. 4 and 5).
+const DemoScene DemoScenes[] = {
+  { "fish", "swim", "swim", false, -1, vtkCagePoseFilter::SWIM, 20.0, true, false, { 0, 0, 1 } },
+  { "figure",
+    "twist",
+    "twist 0-90 degrees",
+    true,
+    1,
+    vtkCagePoseFilter::TWIST,
+    90.0,
+    false,
+    false,
+    { 0, 1, 0 } },
+  { "checkerboard",
+    "checkerboard",
+    "top twisted 0-60 degrees",
+    true,
+    1,
+    vtkCagePoseFilter::TWIST,
+    60.0,
+    false,
+    true,
+    { 0, 1, 0 } },
+};
+
+/// The object's mesh with every cell in part 1: one sub-light field for one box.
+vtkSmartPointer<vtkPolyData> SinglePart(vtkPolyData* mesh)
+{
+  auto single = vtkSmartPointer<vtkPolyData>::New();
+  single->ShallowCopy(mesh);
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Label");
+  labels->SetNumberOfTuples(mesh->GetNumberOfCells());
+  labels->FillValue(1);
+  single->GetCellData()->AddArray(labels); // replaces the parts' labels
+  return single;
+}
+
+/**
+ * `lfd demo`: captures the scene's object (under each light), writes the
+ * light field, a scene with the cage and its keyframes, the animation's
+ * frames and a contact sheet. A second light writes its files with the
+ * suffix "_fixed_light".
+ */
+int Demo(const std::string& sceneName,
+  const std::string& out,
+  int frames,
+  int size,
+  const SynthOptions& capture)
+{
+  const DemoScene* demo = nullptr;
+  for (const DemoScene& candidate : DemoScenes)
+  {
+    if (sceneName == candidate.Name || sceneName == candidate.Object)
+    {
+      demo = &candidate;
+    }
+  }
+  vtksys::SystemTools::MakeDirectory(out);
+  vtkSmartPointer<vtkImageData> texture;
+  vtkSmartPointer<vtkPolyData> mesh = SourceMesh(demo->Object, texture);
+  if (demo->SingleBox)
+  {
+    mesh = SinglePart(mesh);
+  }
   vtkNew<vtkPartCageSource> parts;
-  parts->SetInputConnection(fish->GetOutputPort());
-  Run(parts.Get(), "building the fish's cage");
-  vtkNew<vtkLightFieldScene> scene;
-  scene->SetLightFieldPath("fish.lf");
-  scene->SetCage(parts->GetOutput());
+  parts->SetInputData(mesh);
+  parts->SetAxis(demo->Axis);
+  Run(parts.Get(), "building the cage");
   vtkNew<vtkCagePoseFilter> pose;
   pose->SetInputConnection(parts->GetOutputPort());
-  pose->SetModeToSwim();
-  pose->SetAngle(20.0);
-  pose->SetTurnAxis(0.0, 0.0, 1.0);
+  pose->SetMode(demo->Mode);
+  pose->SetAxis(parts->GetUsedAxis());
+  pose->SetAngle(demo->Angle);
+  pose->SetTurnAxis(demo->TurnAxis);
   const int keyframes = 8;
+  std::vector<vtkSmartPointer<vtkPoints>> poses;
   for (int k = 0; k <= keyframes; ++k)
   {
-    pose->SetPhase(2.0 * vtkMath::Pi() * k / keyframes);
+    const double t = static_cast<double>(k) / keyframes;
+    if (demo->Wave)
+    {
+      pose->SetPhase(2.0 * vtkMath::Pi() * t);
+    }
+    else
+    {
+      pose->SetAngle(demo->Angle * t);
+    }
     Run(pose.Get(), "posing the cage");
-    scene->AddKeyframe(k, pose->GetOutput()->GetPoints());
-  }
-  vtkCameraRig* rig = lightField->GetRig();
-  const double step = 2.0 * vtkMath::Pi() / rig->GetNumberOfViews() * rig->GetNumberOfRows();
-  // Half-way between two captured views, further out than the ring.
-  OrbitCamera(rig, 0.5 * step, 1.15, 0.0, 0.7 * RigViewAngle(rig), scene->GetCamera());
-  scene->SetWidth(size);
-  scene->SetHeight(size);
-  const std::string scenePath = out + "/swim.json";
-  if (!scene->Write(scenePath.c_str()))
-  {
-    Fail(scene->GetErrorMessage());
+    poses.push_back(vtkSmartPointer<vtkPoints>::New());
+    poses.back()->DeepCopy(pose->GetOutput()->GetPoints());
   }
 
-  std::printf("capture   %d views of %dx%d in %.2f s; written to %s/fish.lf in %.2f s\n",
-    lightField->GetNumberOfViews(),
-    lightField->GetWidth(),
-    lightField->GetHeight(),
-    captureTime,
-    out.c_str(),
-    writeTime);
-  std::printf("scene     %s (3 boxes, %d keyframes)\n", scenePath.c_str(), keyframes + 1);
-  const auto images = RenderAnimation(scene, lightField, frames, out + "/frames");
-  const std::string sheet = out + "/contact_sheet.png";
-  WriteImage(ContactSheet(images, 6, 128), sheet);
-  std::printf("sheet     %s\n", sheet.c_str());
+  for (const bool sceneFixedLight : { false, true })
+  {
+    if (sceneFixedLight && !demo->BothLights)
+    {
+      continue;
+    }
+    const std::string suffix = sceneFixedLight ? "_fixed_light" : "";
+    double start = vtkTimerLog::GetUniversalTime();
+    SynthOptions options = capture;
+    options.SceneFixedLight = sceneFixedLight;
+    auto lightField = Capture(mesh, texture, options);
+    const double captureTime = Seconds(start);
+    start = vtkTimerLog::GetUniversalTime();
+    const std::string lightFieldName = std::string(demo->Object) + suffix + ".lf";
+    WriteLightField(lightField, out + "/" + lightFieldName);
+    const double writeTime = Seconds(start);
+
+    vtkNew<vtkLightFieldScene> scene;
+    scene->SetLightFieldPath(lightFieldName.c_str());
+    scene->SetCage(parts->GetOutput());
+    for (int k = 0; k <= keyframes; ++k)
+    {
+      scene->AddKeyframe(k, poses[k]);
+    }
+    vtkCameraRig* rig = lightField->GetRig();
+    const double step = 2.0 * vtkMath::Pi() / rig->GetNumberOfViews() * rig->GetNumberOfRows();
+    // Half-way between two captured views, further out than the ring. For
+    // the fish, swimming about the camera's viewing axis keeps the motion in
+    // the picture (a ring light field has horizontal parallax only).
+    OrbitCamera(rig, 0.5 * step, 1.15, 0.0, 0.7 * RigViewAngle(rig), scene->GetCamera());
+    scene->SetWidth(size);
+    scene->SetHeight(size);
+    const std::string scenePath = out + "/" + demo->Name + suffix + ".json";
+    if (!scene->Write(scenePath.c_str()))
+    {
+      Fail(scene->GetErrorMessage());
+    }
+
+    std::printf("capture   %d views of %dx%d%s in %.2f s; written to %s/%s in %.2f s\n",
+      lightField->GetNumberOfViews(),
+      lightField->GetWidth(),
+      lightField->GetHeight(),
+      sceneFixedLight ? " under a scene-fixed light" : "",
+      captureTime,
+      out.c_str(),
+      lightFieldName.c_str(),
+      writeTime);
+    std::printf("scene     %s (%lld boxes, %d keyframes: %s)\n",
+      scenePath.c_str(),
+      static_cast<long long>(parts->GetOutput()->GetNumberOfBoxes()),
+      keyframes + 1,
+      demo->Motion);
+    const auto images = RenderAnimation(scene, lightField, frames, out + "/frames" + suffix);
+    const std::string sheet = out + "/contact_sheet" + suffix + ".png";
+    WriteImage(ContactSheet(images, 6, 128), sheet);
+    std::printf("sheet     %s\n", sheet.c_str());
+  }
   return 0;
 }
 
@@ -1188,20 +1405,63 @@ int main(int argc, char* argv[])
       "--threshold", looThreshold, "object pixel threshold (0-255) for light fields without labels")
     ->capture_default_str();
 
+  LatticeOptions lattice;
+  auto* latticeCommand = app.add_subcommand("lattice",
+    "bend a scene's boxes with a smooth lattice (Sederberg-Parry free-form deformation) sampled "
+    "into boxes; writes a scene with the deformed cage");
+  latticeCommand->add_option("SCENE", lattice.Scene, "scene.json with a cage")->required();
+  latticeCommand->add_option("--out", lattice.Out, "output scene.json")->required();
+  latticeCommand
+    ->add_option("--dimensions", lattice.Dimensions, "control points per axis x y z (2..16)")
+    ->expected(3)
+    ->check(CLI::Range(2, 16))
+    ->capture_default_str();
+  latticeCommand
+    ->add_option("--move",
+      lattice.Moves,
+      "I J K DX DY DZ: move control point (I, J, K) by (DX, DY, DZ); repeat for more")
+    ->expected(6)
+    ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  latticeCommand
+    ->add_option("--region",
+      lattice.Region,
+      "XMIN XMAX YMIN YMAX ZMIN ZMAX of the lattice (default: the cage's rest bounds)")
+    ->expected(6);
+  latticeCommand
+    ->add_option("--subdivision", lattice.Subdivision, "split each box into K^3 sub-boxes")
+    ->check(CLI::Range(1, 32))
+    ->capture_default_str();
+
   int benchRepeat = 15, benchSize = 512;
   auto* benchCommand = app.add_subcommand("bench",
     "print rays/s and ms/frame of the renderer on fixed scenes (median of repeated renders)");
   benchCommand->add_option("--repeat", benchRepeat, "renders per scene")->capture_default_str();
   benchCommand->add_option("--size", benchSize, "image width and height")->capture_default_str();
 
-  std::string demoOut = "lfd-demo";
+  std::string demoOut;
   int demoFrames = 36, demoSize = 512;
   auto* demoCommand = app.add_subcommand("demo",
-    "synthesise the fish, give it a cage of 3 boxes and render it swimming (frames, contact "
-    "sheet, scene file, MP4 with ffmpeg)");
-  demoCommand->add_option("--out", demoOut, "output folder")->capture_default_str();
+    "synthesise a built-in scene (default: the fish, in a cage of 3 boxes, swimming) and render "
+    "its animation (light field, scene file, frames, contact sheet, MP4 with ffmpeg)");
+  std::string demoScene = "fish";
+  demoCommand
+    ->add_option("--scene",
+      demoScene,
+      "fish: swimming, 3 boxes (Fig. 13); twist: the figure in one box, its top turned (Fig. 1); "
+      "checkerboard: its top turned, captured under coaxial and under scene-fixed light (Figs. 4, "
+      "5)")
+    ->check(CLI::IsMember({ "fish", "twist", "checkerboard" }))
+    ->capture_default_str();
+  demoCommand->add_option(
+    "--out", demoOut, "output folder (default: lfd-demo, or lfd-demo-SCENE for the others)");
   demoCommand->add_option("--frames", demoFrames, "number of frames")->capture_default_str();
   demoCommand->add_option("--size", demoSize, "frame width and height")->capture_default_str();
+  SynthOptions demoCapture;
+  demoCommand->add_option("--views", demoCapture.Views, "captured views per ring")
+    ->capture_default_str();
+  demoCommand->add_option("--rows", demoCapture.Rows, "captured rings")->capture_default_str();
+  demoCommand->add_option("--capture-size", demoCapture.Width, "captured views' width and height")
+    ->capture_default_str();
 
   SplitOptions split;
   auto* splitCommand = app.add_subcommand("split",
@@ -1301,13 +1561,22 @@ int main(int argc, char* argv[])
     {
       return SplitCheck(split);
     }
+    if (*latticeCommand)
+    {
+      return Lattice(lattice);
+    }
     if (*benchCommand)
     {
       return Bench(benchRepeat, benchSize);
     }
     if (*demoCommand)
     {
-      return Demo(demoOut, demoFrames, demoSize);
+      demoCapture.Height = demoCapture.Width;
+      return Demo(demoScene,
+        demoOut.empty() ? (demoScene == "fish" ? "lfd-demo" : "lfd-demo-" + demoScene) : demoOut,
+        demoFrames,
+        demoSize,
+        demoCapture);
     }
   }
   catch (const Failure& failure)

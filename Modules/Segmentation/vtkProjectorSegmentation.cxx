@@ -58,8 +58,8 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input, vtkLightField* output
   const unsigned char* coded = codedArray->GetPointer(0);
   const unsigned char* flood = floodArray->GetPointer(0);
 
-  // Sensor noise: given, or the median of Immerkaer's estimate over up to 8
-  // views of the Flood pass.
+  // Sensor noise: given, or the median of Immerkaer's estimate over the
+  // channels of up to 8 views of the Flood pass.
   double sigma = this->NoiseSigma;
   if (sigma < 0.0)
   {
@@ -69,14 +69,17 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input, vtkLightField* output
     for (int view = 0; view < views; view += step)
     {
       const unsigned char* rgb = flood + 3 * view * pixels;
-      for (vtkIdType p = 0; p < pixels; ++p)
+      for (int c = 0; c < 3; ++c)
       {
-        grey[p] = static_cast<unsigned char>((rgb[3 * p] + rgb[3 * p + 1] + rgb[3 * p + 2]) / 3);
-      }
-      const double estimate = lfd::segmentation::EstimateNoise(grey, width, height);
-      if (estimate >= 0.0)
-      {
-        estimates.push_back(estimate);
+        for (vtkIdType p = 0; p < pixels; ++p)
+        {
+          grey[p] = rgb[3 * p + c];
+        }
+        const double estimate = lfd::segmentation::EstimateNoise(grey, width, height);
+        if (estimate >= 0.0)
+        {
+          estimates.push_back(estimate);
+        }
       }
     }
     std::sort(estimates.begin(), estimates.end());
@@ -158,7 +161,8 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input, vtkLightField* output
             }
           }
           const bool close = d1 <= std::max(accepted, 3.0 * noise);
-          const bool clear = labels == 1 || d2 - d1 > 2.0 * noise;
+          const bool clear = labels == 1 ||
+            (d2 - d1 > 2.0 * noise && d2 - d1 >= this->MinimumConfidence * (d2 + d1));
           if (close && clear)
           {
             label[offset + p] = static_cast<unsigned char>(nearest);
@@ -186,5 +190,6 @@ void vtkProjectorSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EstimatedNoise: " << this->EstimatedNoise << "\n";
   os << indent << "DarkThreshold: " << this->DarkThreshold << "\n";
   os << indent << "RejectionFactor: " << this->RejectionFactor << "\n";
+  os << indent << "MinimumConfidence: " << this->MinimumConfidence << "\n";
   os << indent << "MorphologyRadius: " << this->MorphologyRadius << "\n";
 }

@@ -22,8 +22,10 @@
  *    largest over its bright channels). The nearest colour is accepted when
  *    its distance d1 is within max(RejectionFactor x S / 2, 3 s), S the
  *    smallest distance between two palette colours, and the runner-up is
- *    more than 2 s further (a tie is never accepted); otherwise the pixel
- *    is unlabelled. Confidence = 255 (d2 - d1) / (d2 + d1).
+ *    more than 2 s further (a tie is never accepted) and the confidence
+ *    (d2 - d1) / (d2 + d1) is at least MinimumConfidence (a colour between
+ *    two palette entries is rejected); otherwise the pixel is unlabelled.
+ *    The Confidence pass stores 255 (d2 - d1) / (d2 + d1).
  * 3. **Clean-up** with OpenCV morphology, per label: an opening removes
  *    specks smaller than a disc of MorphologyRadius pixels, a closing fills
  *    unlabelled holes of that size where the Flood pass is lit.
@@ -90,6 +92,16 @@ public:
 
   ///@{
   /**
+   * Smallest accepted confidence (d2 - d1) / (d2 + d1), in [0, 1]: colours
+   * between two palette entries are rejected. Default 0.3 (the nearest
+   * colour at most about half as far as the runner-up).
+   */
+  vtkSetClampMacro(MinimumConfidence, double, 0.0, 1.0);
+  vtkGetMacro(MinimumConfidence, double);
+  ///@}
+
+  ///@{
+  /**
    * Radius in pixels of the opening and closing discs; 0 disables the
    * clean-up. Default 1.
    */
@@ -108,6 +120,7 @@ protected:
   double EstimatedNoise = 0.0;
   double DarkThreshold = -1.0;
   double RejectionFactor = 1.0;
+  double MinimumConfidence = 0.3;
   int MorphologyRadius = 1;
 
 private:

@@ -6,6 +6,7 @@
 #include "vtkCellData.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -400,6 +401,7 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
+  this->ClearError();
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkImageData* textureImage = vtkImageData::GetData(inputVector[1]);
   vtkLightField* output = vtkLightField::GetData(outputVector);
@@ -430,23 +432,6 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
   const int views = rig->GetNumberOfViews();
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
 
-  output->SetLayout(width, height, views);
-  output->SetRig(rig);
-  std::ostringstream provenance;
-  provenance << "{\"generator\": \"vtkLightFieldCapture\", \"light\": \""
-             << (this->SceneFixedLight ? "scene-fixed" : "coaxial")
-             << "\", \"ambient\": " << this->Ambient << "}";
-  output->SetProvenance(provenance.str().c_str());
-  auto* coaxial = this->CaptureCoaxial
-    ? static_cast<unsigned char*>(output->AllocatePass(vtkLightField::COAXIAL)->GetVoidPointer(0))
-    : nullptr;
-  auto* label = this->CaptureLabel
-    ? static_cast<unsigned char*>(output->AllocatePass(vtkLightField::LABEL)->GetVoidPointer(0))
-    : nullptr;
-  auto* depth = this->CaptureDepth
-    ? static_cast<float*>(output->AllocatePass(vtkLightField::DEPTH)->GetVoidPointer(0))
-    : nullptr;
-
   // Projectors: their rig, masks (painted or generated) and passes.
   vtkNew<vtkCameraRig> projectors;
   const bool project = this->BuildProjectors(rig, projectors);
@@ -467,11 +452,13 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
       if (!maskArray || maskArray->GetNumberOfComponents() != 3 || dims[0] != projectorWidth ||
         dims[1] != projectorHeight || dims[2] != projectorCount)
       {
-        vtkErrorMacro("The projector masks are " << dims[0] << "x" << dims[1] << "x" << dims[2]
-                                                 << (maskArray ? "" : " without RGB uint8 scalars")
-                                                 << "; the projectors need RGB uint8 masks of "
-                                                 << projectorWidth << "x" << projectorHeight
-                                                 << "x" << projectorCount << ".");
+        this->Fail(output,
+          vtkErrorCode::UnknownError,
+          "vtkLightFieldCapture: the projector masks are " + std::to_string(dims[0]) + "x" +
+            std::to_string(dims[1]) + "x" + std::to_string(dims[2]) +
+            (maskArray ? "" : " without RGB uint8 scalars") +
+            "; the projectors need RGB uint8 masks of " + std::to_string(projectorWidth) + "x" +
+            std::to_string(projectorHeight) + "x" + std::to_string(projectorCount));
         return 0;
       }
       masks->DeepCopy(this->ProjectorMasks);
@@ -481,8 +468,10 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
     else if (!this->Palette || this->Palette->GetNumberOfComponents() != 3 ||
       this->Palette->GetNumberOfTuples() < 2)
     {
-      vtkErrorMacro("Projectors without painted masks need a Palette (3 x uint8 per label, "
-                    "entry 0 = unlabelled) to generate their masks from the mesh labels.");
+      this->Fail(output,
+        vtkErrorCode::UnknownError,
+        "vtkLightFieldCapture: projectors without painted masks need a Palette (3 x uint8 per "
+        "label, entry 0 = unlabelled) to generate their masks from the mesh labels");
       return 0;
     }
     else
@@ -496,6 +485,23 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
       maskArray = generated;
     }
   }
+  output->SetLayout(width, height, views);
+  output->SetRig(rig);
+  std::ostringstream provenance;
+  provenance << "{\"generator\": \"vtkLightFieldCapture\", \"light\": \""
+             << (this->SceneFixedLight ? "scene-fixed" : "coaxial")
+             << "\", \"ambient\": " << this->Ambient << "}";
+  output->SetProvenance(provenance.str().c_str());
+  auto* coaxial = this->CaptureCoaxial
+    ? static_cast<unsigned char*>(output->AllocatePass(vtkLightField::COAXIAL)->GetVoidPointer(0))
+    : nullptr;
+  auto* label = this->CaptureLabel
+    ? static_cast<unsigned char*>(output->AllocatePass(vtkLightField::LABEL)->GetVoidPointer(0))
+    : nullptr;
+  auto* depth = this->CaptureDepth
+    ? static_cast<float*>(output->AllocatePass(vtkLightField::DEPTH)->GetVoidPointer(0))
+    : nullptr;
+
   if (project)
   {
     output->SetProjectors(projectors);

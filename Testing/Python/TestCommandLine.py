@@ -38,10 +38,11 @@ def expect_error(args, *words):
 
 # Help.
 code, out, _ = lfd("--help")
-t.check(code == 0 and all(c in out for c in ("synth", "import", "info", "render", "eval", "bench",
-                                           "demo")), "lfd --help lists the subcommands", code)
+t.check(code == 0 and all(c in out for c in ("synth", "import", "info", "render", "eval", "lattice",
+                                           "bench", "demo")), "lfd --help lists the subcommands",
+        code)
 for sub in (["synth"], ["import", "middlebury"], ["info"], ["render"], ["animate"], ["eval", "loo"],
-            ["eval", "groundtruth"], ["bench"], ["demo"]):
+            ["eval", "groundtruth"], ["lattice"], ["bench"], ["demo"]):
     code, out, _ = lfd(*sub, "--help")
     t.check(code == 0 and "Options" in out, "lfd " + " ".join(sub) + " --help", code)
 
@@ -158,6 +159,94 @@ t.check(code == 0 and frames == [f"frame_000{i}.png" for i in range(4)], "demo w
         frames or err.strip())
 t.check(os.path.isfile(os.path.join(demo, "contact_sheet.png")), "demo writes a contact sheet",
         code)
+
+# The built-in scenes: the single-box twist of the figure (Fig. 1) and the
+# twisted checkerboard under coaxial and under scene-fixed light (Figs. 4, 5).
+MOVIE = ["animation.mp4"] if shutil.which("ffmpeg") else []
+
+
+def read_image(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def check_demo_scene(folder, scene_file, light_field, frames_dir, boxes):
+    """The scene validates against its light field, has 9 keyframes and its
+    3 frames show the object."""
+    scene = lfd_module.vtkLightFieldScene()
+    read = scene.Read(os.path.join(folder, scene_file))
+    reader = lfd_module.vtkLightFieldReader()
+    reader.SetFileName(os.path.join(folder, light_field))
+    reader.Update()
+    cage = lfd_module.vtkDeformationCage()
+    cage.InitializeFromGrid(scene.GetCage())
+    t.check(read and cage.GetNumberOfBoxes() == boxes and scene.GetNumberOfKeyframes() == 9 and
+            cage.Validate(reader.GetOutput()),
+            f"demo {scene_file}: {boxes} box(es), 9 keyframes, validates against {light_field}",
+            scene.GetErrorMessage() or cage.GetErrorMessage() or cage.GetNumberOfBoxes())
+    files = sorted(os.listdir(os.path.join(folder, frames_dir)))
+    t.check(files == sorted([f"frame_000{i}.png" for i in range(3)] + MOVIE),
+            f"demo {scene_file}: {frames_dir} holds exactly 3 frames", files)
+    lit = [int((t.image_array(read_image(os.path.join(folder, frames_dir, f))) > 0).any(axis=2).sum())
+           for f in files if f.endswith(".png")]
+    t.check(min(lit) > 100, f"demo {scene_file}: every frame shows the object (pixels)", lit)
+    return read_image(os.path.join(folder, frames_dir, "frame_0002.png"))
+
+
+twist_demo = os.path.join(WORK, "demo-twist")
+SMALL = ("--frames", "3", "--size", "64", "--views", "36", "--rows", "1", "--capture-size", "96")
+code, out, err = lfd("demo", "--scene", "twist", "--out", twist_demo, *SMALL)
+listing = sorted(os.listdir(twist_demo)) if code == 0 else []
+t.check(listing == ["contact_sheet.png", "figure.lf", "frames", "twist.json"],
+        "demo --scene twist writes the light field, scene, frames and contact sheet",
+        listing or err.strip())
+if listing:
+    check_demo_scene(twist_demo, "twist.json", "figure.lf", "frames", 1)
+
+board_demo = os.path.join(WORK, "demo-board")
+code, out, err = lfd("demo", "--scene", "checkerboard", "--out", board_demo, *SMALL)
+listing = sorted(os.listdir(board_demo)) if code == 0 else []
+t.check(listing == ["checkerboard.json", "checkerboard.lf", "checkerboard_fixed_light.json",
+                    "checkerboard_fixed_light.lf", "contact_sheet.png",
+                    "contact_sheet_fixed_light.png", "frames", "frames_fixed_light"],
+        "demo --scene checkerboard writes both lights' files", listing or err.strip())
+if listing:
+    # The last frame has the top turned by 60 degrees: darker than the bottom
+    # under the coaxial light only (measured 0.833 and 0.967).
+    coaxial = t.top_over_bottom(check_demo_scene(board_demo, "checkerboard.json",
+                                                 "checkerboard.lf", "frames", 1))
+    fixed = t.top_over_bottom(check_demo_scene(board_demo, "checkerboard_fixed_light.json",
+                                               "checkerboard_fixed_light.lf",
+                                               "frames_fixed_light", 1))
+    t.check(coaxial < 0.9 and fixed > 0.95,
+            "demo checkerboard: the turned top darkens under coaxial light only",
+            f"top / bottom {coaxial:.3f} coaxial, {fixed:.3f} scene-fixed")
+
+# A lattice (Sederberg-Parry FFD) bows the twist scene's box, sampled into 2^3 boxes.
+bow = os.path.join(WORK, "bow.json")
+moves = [str(v) for j in (1, 2) for i in (0, 1) for k in (0, 1) for v in (i, j, k, 0.2, 0, 0)]
+moves = sum((["--move", *moves[n:n + 6]] for n in range(0, len(moves), 6)), [])
+code, out, err = lfd("lattice", os.path.join(twist_demo, "twist.json"), "--out", bow,
+                     "--dimensions", "2", "4", "2", "--subdivision", "2", *moves)
+bow_scene = lfd_module.vtkLightFieldScene()
+read = code == 0 and bow_scene.Read(bow)
+boxes = bow_scene.GetCage().GetNumberOfCells() if read else 0
+t.check(read and boxes == 8 and bow_scene.GetNumberOfKeyframes() == 0 and
+        os.path.isdir(bow_scene.GetResolvedLightFieldPath()),
+        "lattice writes a scene of 8 boxes whose light field resolves", err.strip() or boxes)
+code, out, err = lfd("eval", "groundtruth", bow, "--mesh", "figure")
+iou = float(out.split("silhouette IoU")[1].split()[0]) if code == 0 else 0.0
+t.check(iou > 0.9, "eval groundtruth of the bowed figure: silhouette IoU > 0.9",
+        iou if code == 0 else err.strip())
+expect_error(["lattice", os.path.join(twist_demo, "twist.json"), "--out", bow, "--move", "2", "0",
+              "0", "1", "0", "0"], "--move 2 0 0", "0..1")
+expect_error(["lattice", os.path.join(twist_demo, "twist.json"), "--out",
+              os.path.join(WORK, "folded_bow.json"), "--move", "0", "0", "0", "3", "0", "0",
+              "--move", "1", "1", "1", "-3", "0", "0"], "folded_bow.json", "box 0")
+t.check(not os.path.exists(os.path.join(WORK, "folded_bow.json")),
+        "a refused lattice writes no scene", False)
 
 # Bad input.
 bad = os.path.join(WORK, "bad.lf")

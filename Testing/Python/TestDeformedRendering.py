@@ -11,7 +11,6 @@ import math
 
 import lfdtesting as t
 import numpy as np
-from vtkmodules.vtkRenderingCore import vtkCamera
 
 import lfd
 
@@ -23,51 +22,6 @@ SWIM = (24.9, 0.94, 0.98)
 TWIST = (15.8, 0.71, 0.93)
 BEND = (15.9, 0.71, 0.94)
 OCCLUSION_AGREEMENT = 0.93
-
-
-def capture(obj):
-    source = lfd.vtkProceduralObjectSource()
-    source.SetObject(obj)
-    source.Update()
-    cap = lfd.vtkLightFieldCapture()
-    cap.SetInputConnection(source.GetOutputPort())
-    cap.SetTextureConnection(source.GetOutputPort(1))
-    cap.CaptureDepthOff()
-    cap.Update()
-    return source, cap.GetOutput()
-
-
-def side_camera(rig, azimuth=0.35, angle=22.0):
-    """A camera at the ring's height, between captured views, outside the ring."""
-    camera = vtkCamera()
-    c, r = rig.GetCenter(), rig.GetRadius()
-    camera.SetFocalPoint(c)
-    camera.SetPosition(c[0] + azimuth * r, c[1] + 0.01 * r, c[2] + 0.95 * r)
-    camera.SetViewUp(0, 1, 0)
-    camera.SetViewAngle(angle)
-    return camera
-
-
-def evaluate(name, source, lf, cage, camera, subdivision=1):
-    ev = lfd.vtkGroundTruthEvaluator()
-    ev.SetInputData(lf)
-    ev.SetMeshConnection(source.GetOutputPort())
-    ev.SetTextureConnection(source.GetOutputPort(1))
-    ev.SetCageData(cage)
-    ev.SetCamera(camera)
-    ev.SetSubdivision(subdivision)
-    ev.SetWidth(SIZE)
-    ev.SetHeight(SIZE)
-    ev.Update()
-    print(f"{name:12s} PSNR {ev.GetPSNR():6.2f}  SSIM {ev.GetSSIM():.3f}  IoU {ev.GetIoU():.3f}"
-          f"  label agreement {ev.GetLabelAgreement():.3f}")
-    return ev
-
-
-def expect(name, ev, psnr, ssim, iou):
-    t.check(ev.GetPSNR() > psnr, f"{name}: object PSNR > {psnr} dB", ev.GetPSNR())
-    t.check(ev.GetSSIM() > ssim, f"{name}: object SSIM > {ssim}", ev.GetSSIM())
-    t.check(ev.GetIoU() > iou, f"{name}: silhouette IoU > {iou}", ev.GetIoU())
 
 
 def posed(cage_output_port, mode, angle, turn_axis=(0, 1, 0), phase=0.0):
@@ -93,19 +47,19 @@ def render(lf, cage, camera):
 
 
 # The fish: identity, swim.
-fish, fish_lf = capture(lfd.vtkProceduralObjectSource.FISH)
+fish, fish_lf = t.capture(lfd.vtkProceduralObjectSource.FISH)
 parts = lfd.vtkPartCageSource()
 parts.SetInputConnection(fish.GetOutputPort())
 parts.Update()
 rest = parts.GetOutput()
 t.check(rest.Validate(fish_lf), "fish cage validates", rest.GetErrorMessage() or "ok")
-camera = side_camera(fish_lf.GetRig())
+camera = t.side_camera(fish_lf.GetRig())
 difference = np.abs(render(fish_lf, None, camera) - render(fish_lf, rest, camera))
 t.check(difference.max() == 0, "a cage at rest renders the undeformed light field exactly",
         int(difference.max()))
 
 swim = posed(parts.GetOutputPort(), lfd.vtkCagePoseFilter.SWIM, 20.0, (0, 0, 1), 1.0)
-expect("fish swim", evaluate("fish swim", fish, fish_lf, swim, camera), *SWIM)
+t.expect("fish swim", t.evaluate("fish swim", fish, fish_lf, swim, camera), *SWIM)
 
 # Occlusion: the head box turned by 55 degrees towards, then away from, the
 # camera. The head covers as many pixels as in the ground truth, and the
@@ -125,7 +79,7 @@ for degrees in (55.0, -55.0):
         cage.SetDeformedPoint(pid, [hinge[0] + dx * math.cos(theta) - dz * math.sin(theta), r[1],
                                     dz * math.cos(theta) + dx * math.sin(theta)])
     t.check(cage.Validate(fish_lf), f"head turned {degrees:+.0f} validates", cage.GetErrorMessage())
-    ev = evaluate(f"head {degrees:+.0f}", fish, fish_lf, cage, camera)
+    ev = t.evaluate(f"head {degrees:+.0f}", fish, fish_lf, cage, camera)
     labels = t.image_array(ev.GetOutput(0), "Label")[..., 0]
     truth = t.image_array(ev.GetOutput(1), "Label")[..., 0]
     head_pixels[degrees] = ((labels == 1).sum(), (truth == 1).sum())
@@ -138,21 +92,21 @@ t.check((head_pixels[-55.0][0] > head_pixels[55.0][0]) ==
         head_pixels)
 
 # The figure: twisted and bent.
-figure, figure_lf = capture(lfd.vtkProceduralObjectSource.FIGURE)
+figure, figure_lf = t.capture(lfd.vtkProceduralObjectSource.FIGURE)
 figure_parts = lfd.vtkPartCageSource()
 figure_parts.SetInputConnection(figure.GetOutputPort())
 figure_parts.Update()
-camera = side_camera(figure_lf.GetRig(), azimuth=0.2, angle=26.0)
+camera = t.side_camera(figure_lf.GetRig(), azimuth=0.2, angle=26.0)
 twist = posed(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 45.0)
-expect("figure twist", evaluate("figure twist", figure, figure_lf, twist, camera), *TWIST)
+t.expect("figure twist", t.evaluate("figure twist", figure, figure_lf, twist, camera), *TWIST)
 # Tessellation (beyond the paper): a 90-degree twist bends the inverse images
 # of view rays; splitting the boxes into 2^3 sub-boxes (or the automatic
 # choice) follows them better (measured: 15.09 -> 17.26 dB, SSIM 0.627 ->
 # 0.756 at k = 2; 16.53 dB automatic).
 strong = posed(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 90.0)
-plain = evaluate("twist 90 k=1", figure, figure_lf, strong, camera, 1)
-split = evaluate("twist 90 k=2", figure, figure_lf, strong, camera, 2)
-automatic = evaluate("twist 90 auto", figure, figure_lf, strong, camera, 0)
+plain = t.evaluate("twist 90 k=1", figure, figure_lf, strong, camera, 1)
+split = t.evaluate("twist 90 k=2", figure, figure_lf, strong, camera, 2)
+automatic = t.evaluate("twist 90 auto", figure, figure_lf, strong, camera, 0)
 t.check(split.GetPSNR() > plain.GetPSNR() + 1.5, "subdivision 2 gains > 1.5 dB on a 90-degree twist",
         split.GetPSNR() - plain.GetPSNR())
 t.check(split.GetSSIM() > plain.GetSSIM() + 0.05, "subdivision 2 gains > 0.05 SSIM",
@@ -160,5 +114,5 @@ t.check(split.GetSSIM() > plain.GetSSIM() + 0.05, "subdivision 2 gains > 0.05 SS
 t.check(automatic.GetPSNR() > plain.GetPSNR() + 1.0, "automatic subdivision gains > 1 dB",
         automatic.GetPSNR() - plain.GetPSNR())
 bend = posed(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.BEND, 30.0, (0, 0, 1))
-expect("figure bend", evaluate("figure bend", figure, figure_lf, bend, camera), *BEND)
+t.expect("figure bend", t.evaluate("figure bend", figure, figure_lf, bend, camera), *BEND)
 t.finish()

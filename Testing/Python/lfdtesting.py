@@ -1,10 +1,14 @@
 """Helpers shared by the end-to-end tests: paths from the CTest environment,
-numpy views of VTK arrays and exact-result checks."""
+numpy views of VTK arrays, exact-result checks, and the captures, cameras
+and ground-truth evaluations of the deformed-rendering tests."""
 
 import os
 import sys
 
 from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkRenderingCore import vtkCamera
+
+import lfd
 
 BASELINE_DIR = os.environ.get("LFD_BASELINE_DIR", "")
 TEMP_DIR = os.environ.get("LFD_TEMP_DIR", "/tmp")
@@ -36,7 +40,66 @@ def image_array(image, name=None):
     return vtk_to_numpy(array).reshape(h, w, -1)[::-1]
 
 
+def top_over_bottom(image):
+    """Mean brightness of the checkerboard's white squares in the top half of
+    an image over the bottom half (paper Figs. 4 and 5)."""
+    luminance = image_array(image).astype(float).mean(axis=2)
+    white = luminance > 0.5 * luminance.max()
+    half = luminance.shape[0] // 2
+    return luminance[:half][white[:half]].mean() / luminance[half:][white[half:]].mean()
+
+
 def temp_path(*parts):
     path = os.path.join(TEMP_DIR, *parts)
     os.makedirs(os.path.dirname(path), exist_ok=True)
     return path
+
+
+def capture(obj):
+    """A built-in object (vtkProceduralObjectSource) and its light field
+    (default rig, no Depth pass)."""
+    source = lfd.vtkProceduralObjectSource()
+    source.SetObject(obj)
+    source.Update()
+    cap = lfd.vtkLightFieldCapture()
+    cap.SetInputConnection(source.GetOutputPort())
+    cap.SetTextureConnection(source.GetOutputPort(1))
+    cap.CaptureDepthOff()
+    cap.Update()
+    return source, cap.GetOutput()
+
+
+def side_camera(rig, azimuth=0.35, angle=22.0):
+    """A camera at the ring's height, between captured views, outside the ring."""
+    camera = vtkCamera()
+    c, r = rig.GetCenter(), rig.GetRadius()
+    camera.SetFocalPoint(c)
+    camera.SetPosition(c[0] + azimuth * r, c[1] + 0.01 * r, c[2] + 0.95 * r)
+    camera.SetViewUp(0, 1, 0)
+    camera.SetViewAngle(angle)
+    return camera
+
+
+def evaluate(name, source, lf, cage, camera, subdivision=1, size=256):
+    """vtkGroundTruthEvaluator of the light field deformed by `cage` against
+    the source mesh deformed by the same cage; prints the figures."""
+    ev = lfd.vtkGroundTruthEvaluator()
+    ev.SetInputData(lf)
+    ev.SetMeshConnection(source.GetOutputPort())
+    ev.SetTextureConnection(source.GetOutputPort(1))
+    ev.SetCageData(cage)
+    ev.SetCamera(camera)
+    ev.SetSubdivision(subdivision)
+    ev.SetWidth(size)
+    ev.SetHeight(size)
+    ev.Update()
+    print(f"{name:12s} PSNR {ev.GetPSNR():6.2f}  SSIM {ev.GetSSIM():.3f}  IoU {ev.GetIoU():.3f}"
+          f"  label agreement {ev.GetLabelAgreement():.3f}")
+    return ev
+
+
+def expect(name, ev, psnr, ssim, iou):
+    """Checks the evaluation's object PSNR, SSIM and silhouette IoU."""
+    check(ev.GetPSNR() > psnr, f"{name}: object PSNR > {psnr} dB", ev.GetPSNR())
+    check(ev.GetSSIM() > ssim, f"{name}: object SSIM > {ssim}", ev.GetSSIM())
+    check(ev.GetIoU() > iou, f"{name}: silhouette IoU > {iou}", ev.GetIoU())
