@@ -14,7 +14,7 @@ packages=(
   cmake ninja-build g++ pkg-config
   libvtk9-dev python3-vtk9 python3-numpy
   libopenimageio-dev openimageio-tools
-  libglm-dev nlohmann-json3-dev libcli11-dev
+  libglm-dev nlohmann-json3-dev libcli11-dev libopencv-dev
   xvfb xauth
 )
 

@@ -42,7 +42,8 @@ t.check(code == 0 and all(c in out for c in ("synth", "import", "info", "render"
                                            "bench", "demo")), "lfd --help lists the subcommands",
         code)
 for sub in (["synth"], ["import", "middlebury"], ["info"], ["render"], ["animate"], ["eval", "loo"],
-            ["eval", "groundtruth"], ["lattice"], ["bench"], ["demo"]):
+            ["eval", "groundtruth"], ["lattice"], ["bench"], ["demo"], ["split", "projector"],
+            ["split", "scanline"], ["split", "propagate"], ["split", "check"]):
     code, out, _ = lfd(*sub, "--help")
     t.check(code == 0 and "Options" in out, "lfd " + " ".join(sub) + " --help", code)
 
@@ -150,6 +151,56 @@ if code == 0:
     labels = sorted(set(vtk_to_numpy(reader.GetOutput().GetPass(lfd_module.vtkLightField.LABEL))))
 t.check(labels == [0, 1, 2], "synth --mesh --scene: the boxes' labels reach the Label pass",
         labels or err.strip())
+
+# Splitting the sphere: projectors, rows, painted views, and the box check.
+projected = os.path.join(WORK, "sphere_projected.lf")
+code, out, err = lfd("synth", "--mesh", ply, "--scene", boxes, "--views", "12", "--rows", "1",
+                     "--width", "64", "--height", "64", "--projectors", "3", "--out", projected)
+t.check(code == 0 and os.path.isdir(os.path.join(projected, "coded"))
+        and len(os.listdir(os.path.join(projected, "projectors"))) == 3,
+        "synth --projectors 3: Coded, Flood and 3 masks", err.strip() or sorted(os.listdir(projected)))
+split_lf = os.path.join(WORK, "sphere_split.lf")
+code, out, err = lfd("split", "projector", projected, "--truth", projected, "--out", split_lf)
+accuracy = [float(line.split()[4]) for line in out.splitlines() if line.startswith("accuracy")]
+t.check(code == 0 and accuracy and accuracy[0] > 97.0 and os.path.isdir(os.path.join(split_lf, "confidence")),
+        "split projector: accuracy against the true labels (%)", accuracy or err.strip())
+code, out, err = lfd("split", "check", split_lf, "--scene", boxes)
+t.check(code == 0 and "every label is inside its boxes" in out, "split check passes", out + err)
+one_box = os.path.join(WORK, "one_box.json")
+with open(one_box, "w") as f:
+    json.dump({"format": "lfd-scene", "version": 1, "lightfield": "sphere.lf",
+               "cage": {"rest_points": [p for layer in layers for p in layer],
+                        "boxes": [{"corners": list(range(0, 8)), "label": 1}]}}, f)
+expect_error(["split", "check", split_lf, "--scene", one_box], "outside their boxes")
+code, out, err = lfd("split", "scanline", projected, "--rows", "20,40", "--labels", "3,1,2",
+                     "--out", os.path.join(WORK, "sphere_rows.lf"))
+rows = []
+if code == 0:
+    reader = lfd_module.vtkLightFieldReader()
+    reader.SetFileName(os.path.join(WORK, "sphere_rows.lf"))
+    reader.Update()
+    rows = vtk_to_numpy(reader.GetOutput().GetPass(lfd_module.vtkLightField.LABEL)).reshape(12, 64, 64)
+    rows = [sorted(set(rows[0][::-1][y].tolist()) - {0}) for y in (19, 20, 39, 40)]
+t.check(rows == [[3], [1], [1], [2]], "split scanline: bands 3 | 1 | 2 at rows 20 and 40",
+        rows or err.strip())
+code, out, err = lfd("split", "propagate", projected, "--paint",
+                     "0=" + os.path.join(projected, "label", "view_0000.png"), "--paint",
+                     "6=" + os.path.join(projected, "label", "view_0006.png"), "--truth", projected,
+                     "--out", os.path.join(WORK, "sphere_propagated.lf"))
+accuracy = [float(line.split()[4]) for line in out.splitlines() if line.startswith("accuracy")]
+t.check(code == 0 and accuracy and accuracy[0] > 97.0,
+        "split propagate from 2 views through the depth (%)", accuracy or err.strip())
+expect_error(["split", "propagate", projected, "--paint", "zero.png", "--out",
+              os.path.join(WORK, "never.lf")], "VIEW=LABELS.png")
+expect_error(["split", "propagate", projected, "--paint",
+              "0=" + os.path.join(projected, "coaxial", "view_0000.png"), "--out",
+              os.path.join(WORK, "never.lf")], "view_0000.png", "one channel")
+expect_error(["split", "propagate", projected, "--paint",
+              "0=" + os.path.join(os.path.dirname(t.BASELINE_DIR), "templeRing", "painted_view_0000.png"),
+              "--out", os.path.join(WORK, "never.lf")], "640x480", "64x64")
+expect_error(["split", "projector", lf, "--out", os.path.join(WORK, "never.lf")], "board.lf",
+             "no Coded pass")
+t.check(not os.path.exists(os.path.join(WORK, "never.lf")), "a failed split writes nothing", False)
 
 # Demo outputs.
 demo = os.path.join(WORK, "demo")
