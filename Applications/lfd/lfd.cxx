@@ -6,12 +6,14 @@
 // non-zero exit status.
 #include "lfdConsole.h"
 
+#include "vtkBoxCoverageCheck.h"
 #include "vtkCagePoseFilter.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkCellData.h"
 #include "vtkDeformationCage.h"
+#include "vtkExecutive.h"
 #include "vtkGroundTruthEvaluator.h"
 #include "vtkImageData.h"
 #include "vtkImageFileReader.h"
@@ -19,14 +21,9 @@
 #include "vtkImageResize.h"
 #include "vtkIntArray.h"
 #include "vtkKeyframeInterpolator.h"
-#include "vtkBoxCoverageCheck.h"
-#include "vtkCellData.h"
-#include "vtkExecutive.h"
+#include "vtkLabelCellsByBoxes.h"
 #include "vtkLabelPalette.h"
 #include "vtkLabelPropagation.h"
-#include "vtkProjectorSegmentation.h"
-#include "vtkScanlineSplit.h"
-#include "vtkLabelCellsByBoxes.h"
 #include "vtkLatticeCageFilter.h"
 #include "vtkLeaveOneOutEvaluator.h"
 #include "vtkLightField.h"
@@ -46,8 +43,10 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataReader.h"
 #include "vtkProceduralObjectSource.h"
+#include "vtkProjectorSegmentation.h"
 #include "vtkSMPTools.h"
 #include "vtkSTLReader.h"
+#include "vtkScanlineSplit.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkTimerLog.h"
@@ -1222,8 +1221,8 @@ int SplitScanline(const SplitOptions& options)
   if (!options.Labels.empty() && options.Labels.size() != options.Rows.size() + 1)
   {
     Fail("--labels: " + std::to_string(options.Rows.size()) + " rows make " +
-      std::to_string(options.Rows.size() + 1) + " bands, " +
-      std::to_string(options.Labels.size()) + " labels given");
+      std::to_string(options.Rows.size() + 1) + " bands, " + std::to_string(options.Labels.size()) +
+      " labels given");
   }
   for (size_t band = 0; band < options.Labels.size(); ++band)
   {
@@ -1278,7 +1277,8 @@ int SplitPropagate(const SplitOptions& options)
     propagation->SetThreshold(options.Threshold);
   }
   RunSplit(propagation, lightField, options);
-  std::printf("proxy voxels: %lld\n", static_cast<long long>(propagation->GetNumberOfProxyVoxels()));
+  std::printf(
+    "proxy voxels: %lld\n", static_cast<long long>(propagation->GetNumberOfProxyVoxels()));
   return 0;
 }
 
@@ -1481,8 +1481,11 @@ int main(int argc, char* argv[])
     "label by the projector colour masks: Eq. 1 normalisation of Coded by Flood, nearest "
     "palette colour (CIELAB), morphological clean-up");
   addSplitIO(splitProjector);
-  splitProjector->add_option("--dark", split.Threshold, "Flood level below which a channel is dark (default: from the noise)");
-  splitProjector->add_option("--morphology", split.Morphology, "clean-up radius in pixels (0 = none)")
+  splitProjector->add_option("--dark",
+    split.Threshold,
+    "Flood level below which a channel is dark (default: from the noise)");
+  splitProjector
+    ->add_option("--morphology", split.Morphology, "clean-up radius in pixels (0 = none)")
     ->capture_default_str();
   auto* splitScanline = splitCommand->add_subcommand("scanline",
     "label by image rows within the object (aligned rings): band 1 above the first row, ...");
@@ -1492,27 +1495,34 @@ int main(int argc, char* argv[])
     ->required();
   splitScanline->add_option("--labels", split.Labels, "label of each band (default 1, 2, ...)")
     ->delimiter(',');
-  splitScanline->add_option("--threshold", split.Threshold, "object brightness threshold when IN has no Label pass (default 10)");
+  splitScanline->add_option("--threshold",
+    split.Threshold,
+    "object brightness threshold when IN has no Label pass (default 10)");
   splitScanline->add_option("--morphology", split.Morphology, "clean-up radius of the object mask")
     ->capture_default_str();
   auto* splitPropagate = splitCommand->add_subcommand("propagate",
     "carry labels painted in a few views to every view through the Depth pass or a visual hull");
   addSplitIO(splitPropagate);
-  splitPropagate->add_option("--paint", split.Paint, "VIEW=LABELS.png (one channel, 0 = unpainted); repeat")
+  splitPropagate
+    ->add_option("--paint", split.Paint, "VIEW=LABELS.png (one channel, 0 = unpainted); repeat")
     ->required();
   splitPropagate->add_option("--proxy", split.Proxy, "auto (depth when present), depth or hull")
     ->check(CLI::IsMember({ "auto", "depth", "hull" }))
     ->capture_default_str();
-  splitPropagate->add_option("--resolution", split.Resolution, "proxy voxels along its longest side")
+  splitPropagate
+    ->add_option("--resolution", split.Resolution, "proxy voxels along its longest side")
     ->check(CLI::Range(8, 1024))
     ->capture_default_str();
-  splitPropagate->add_option("--threshold", split.Threshold, "silhouette brightness threshold (default 20)");
+  splitPropagate->add_option(
+    "--threshold", split.Threshold, "silhouette brightness threshold (default 20)");
   auto* splitCheck = splitCommand->add_subcommand("check",
     "project each rest box into every view and report the fraction of its label's pixels "
     "inside; exits 1 under the threshold");
   splitCheck->add_option("IN", split.In, "light-field directory (with a Label pass)")->required();
-  splitCheck->add_option("--scene", split.Scene, "scene.json whose cage holds the boxes")->required();
-  splitCheck->add_option("--threshold", split.Threshold, "smallest acceptable fraction (default 0.95)");
+  splitCheck->add_option("--scene", split.Scene, "scene.json whose cage holds the boxes")
+    ->required();
+  splitCheck->add_option(
+    "--threshold", split.Threshold, "smallest acceptable fraction (default 0.95)");
 
   CLI11_PARSE(app, argc, argv);
   try

@@ -113,8 +113,7 @@ std::vector<ManifestView> ParseViews(const Json& views, const std::string& key)
 {
   if (!views.is_array() || views.empty())
   {
-    throw FieldError(
-      key, "expected a non-empty array of views, found " + lfd::io::Describe(views));
+    throw FieldError(key, "expected a non-empty array of views, found " + lfd::io::Describe(views));
   }
   std::vector<ManifestView> parsed;
   for (size_t i = 0; i < views.size(); ++i)
@@ -153,8 +152,7 @@ void ParseProjectors(const Json& document, Manifest& manifest)
   if (!projectors->is_object())
   {
     throw FieldError("projectors",
-      "expected an object {width, height, views, masks}, found " +
-        lfd::io::Describe(*projectors));
+      "expected an object {width, height, views, masks}, found " + lfd::io::Describe(*projectors));
   }
   manifest.ProjectorWidth = static_cast<int>(lfd::io::GetInteger(
     lfd::io::RequireMember(*projectors, "projectors", "width"), "projectors.width", 1, 1 << 20));
@@ -216,7 +214,8 @@ void ParseManifest(const Json& document, Manifest& manifest)
     const int pass = vtkLightField::GetPassFromName(it.key().c_str());
     if (pass < 0)
     {
-      throw FieldError(path, "unknown pass (expected coaxial, coded, flood, label, depth or confidence)");
+      throw FieldError(
+        path, "unknown pass (expected coaxial, coded, flood, label, depth or confidence)");
     }
     if (!it->is_array() || it->size() != manifest.Views.size())
     {

@@ -256,11 +256,8 @@ void vtkLightFieldWriter::WriteData()
         char name[48];
         std::snprintf(name, sizeof(name), "projectors/mask_%04d.png", i);
         maskNames.push_back(name);
-        files.push_back({ name,
-          maskArray,
-          i,
-          projectors->GetImageSize()[0],
-          projectors->GetImageSize()[1] });
+        files.push_back(
+          { name, maskArray, i, projectors->GetImageSize()[0], projectors->GetImageSize()[1] });
       }
       projectorEntry["masks"] = maskNames;
     }

@@ -36,7 +36,8 @@ Polygon ConvexHull(Polygon points)
 {
   std::sort(points.begin(),
     points.end(),
-    [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    [](const glm::dvec2& a, const glm::dvec2& b)
+    { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   Polygon hull(2 * points.size());
   size_t k = 0;
   for (size_t i = 0; i < points.size(); ++i)
@@ -100,8 +101,8 @@ void vtkBoxCoverageCheck::SetCageData(vtkDataObject* cage)
 //------------------------------------------------------------------------------
 int vtkBoxCoverageCheck::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(),
-    port == 0 ? "vtkLightField" : "vtkUnstructuredGrid");
+  info->Set(
+    vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkLightField" : "vtkUnstructuredGrid");
   return 1;
 }
 
@@ -194,7 +195,8 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
       ++count.first;
       const glm::dvec2 pixel(static_cast<double>(p % width), height - 1.0 - p / width);
       const auto& boxes = hulls[label];
-      if (std::any_of(boxes.begin(), boxes.end(), [&](const Polygon& h) { return Inside(h, pixel); }))
+      if (std::any_of(
+            boxes.begin(), boxes.end(), [&](const Polygon& h) { return Inside(h, pixel); }))
       {
         ++count.second;
       }

@@ -107,9 +107,7 @@ std::vector<unsigned char> Carve(const VoxelGrid& grid, vtkCameraRig* rig, const
           const lfd::PinholeCamera& camera = rig->GetCamera(view);
           glm::dvec2 pixel;
           inside = camera.Project(X, pixel) &&
-            s.Near(view,
-              pixel,
-              0.866 * grid.Size * camera.K[0][0] / (camera.R * X + camera.t).z);
+            s.Near(view, pixel, 0.866 * grid.Size * camera.K[0][0] / (camera.R * X + camera.t).z);
         }
         occupied[v] = inside ? 1 : 0;
       }
@@ -280,8 +278,8 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
   {
     const lfd::PinholeCamera& camera = rig->GetCamera(view);
     const glm::dvec3 pixel(static_cast<double>(p % width), height - 1.0 - p / width, 1.0);
-    return camera.Center() + static_cast<double>(depth->GetValue(view * pixels + p)) *
-      (camera.PixelToDirection() * pixel);
+    return camera.Center() +
+      static_cast<double>(depth->GetValue(view * pixels + p)) * (camera.PixelToDirection() * pixel);
   };
   glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-low);
   if (useDepth)

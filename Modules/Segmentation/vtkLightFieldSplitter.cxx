@@ -55,7 +55,9 @@ int vtkLightFieldSplitter::RequestData(vtkInformation*,
   vtkLightField* output = vtkLightField::GetData(outputVector);
   if (!input || input->GetNumberOfPoints() == 0)
   {
-    this->Fail(output, vtkErrorCode::UnknownError, this->GetClassName() + std::string(": the input light field is empty"));
+    this->Fail(output,
+      vtkErrorCode::UnknownError,
+      this->GetClassName() + std::string(": the input light field is empty"));
     return 0;
   }
   output->ShallowCopy(input);

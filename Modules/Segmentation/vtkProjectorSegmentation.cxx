@@ -26,7 +26,9 @@ vtkProjectorSegmentation::~vtkProjectorSegmentation()
 }
 
 //------------------------------------------------------------------------------
-bool vtkProjectorSegmentation::Split(vtkLightField* input, vtkLightField* output, std::string& error)
+bool vtkProjectorSegmentation::Split(vtkLightField* input,
+  vtkLightField* output,
+  std::string& error)
 {
   auto* codedArray = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::CODED));
   auto* floodArray = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::FLOOD));
@@ -88,9 +90,8 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input, vtkLightField* output
   this->EstimatedNoise = sigma;
   const double dark = this->DarkThreshold >= 0.0 ? this->DarkThreshold : std::max(8.0, 5.0 * sigma);
   const double separation = vtkLabelPalette::GetSeparation(palette);
-  const double accepted = labels > 1
-    ? this->RejectionFactor * 0.5 * separation
-    : std::numeric_limits<double>::infinity();
+  const double accepted =
+    labels > 1 ? this->RejectionFactor * 0.5 * separation : std::numeric_limits<double>::infinity();
   std::vector<glm::dvec3> colours(labels + 1);
   for (int label = 1; label <= labels; ++label)
   {

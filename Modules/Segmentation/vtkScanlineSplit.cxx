@@ -98,9 +98,9 @@ bool vtkScanlineSplit::Split(vtkLightField* input, vtkLightField* output, std::s
   std::vector<unsigned char> rowLabel(height);
   for (int y = 0; y < height; ++y)
   {
-    const int band = static_cast<int>(
-      std::upper_bound(this->Boundaries.begin(), this->Boundaries.end(), y) -
-      this->Boundaries.begin());
+    const int band =
+      static_cast<int>(std::upper_bound(this->Boundaries.begin(), this->Boundaries.end(), y) -
+        this->Boundaries.begin());
     rowLabel[y] = static_cast<unsigned char>(this->GetBandLabel(band));
   }
   // The input's Label is read before the output's replaces it.
@@ -124,7 +124,8 @@ bool vtkScanlineSplit::Split(vtkLightField* input, vtkLightField* output, std::s
     }
     if (!silhouette)
     {
-      lfd::segmentation::CleanLabels(mask.data(), nullptr, width, height, 1, this->MorphologyRadius);
+      lfd::segmentation::CleanLabels(
+        mask.data(), nullptr, width, height, 1, this->MorphologyRadius);
     }
     for (vtkIdType p = 0; p < pixels; ++p)
     {

@@ -1,5 +1,6 @@
 #include "vtkLightFieldCapture.h"
 
+#include "lfdPinholeCamera.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
@@ -12,7 +13,6 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLight.h"
-#include "lfdPinholeCamera.h"
 #include "vtkLightField.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -462,7 +462,8 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
         return 0;
       }
       masks->DeepCopy(this->ProjectorMasks);
-      maskArray = vtkUnsignedCharArray::SafeDownCast(masks->GetPointData()->GetArray(maskArray->GetName()));
+      maskArray =
+        vtkUnsignedCharArray::SafeDownCast(masks->GetPointData()->GetArray(maskArray->GetName()));
       maskArray->SetName("Mask");
     }
     else if (!this->Palette || this->Palette->GetNumberOfComponents() != 3 ||
@@ -754,7 +755,8 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
           }
           const double x = static_cast<double>(q % width);
           const double y = static_cast<double>(height - 1 - q / width);
-          const glm::dvec3 X = origin + static_cast<double>(z[q]) * (toWorld * glm::dvec3(x, y, 1.0));
+          const glm::dvec3 X =
+            origin + static_cast<double>(z[q]) * (toWorld * glm::dvec3(x, y, 1.0));
           glm::dvec2 pixel;
           if (!projector.Project(X, pixel))
           {
@@ -775,7 +777,8 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
           {
             continue;
           }
-          const unsigned char* colour = maskArray->GetPointer(3 * (p * projectorPixels + projected));
+          const unsigned char* colour =
+            maskArray->GetPointer(3 * (p * projectorPixels + projected));
           for (int c = 0; c < 3; ++c)
           {
             const double irradiance = rgbBuffer->GetValue(3 * q + c);

@@ -82,25 +82,10 @@ def segment(lf, **settings):
     return seg
 
 
-def capture(obj, views=90, projectors=0, noise=0.0, ambient=0.0, depth=True):
-    source = lfd.vtkProceduralObjectSource()
-    source.SetObject(obj)
-    source.Update()
-    cap = lfd.vtkLightFieldCapture()
-    cap.SetInputConnection(source.GetOutputPort())
-    cap.SetTextureConnection(source.GetOutputPort(1))
-    cap.SetViewsPerRing(views)
-    cap.SetNumberOfRows(1)
-    cap.SetCaptureDepth(depth)
-    if projectors:
-        cap.SetPalette(palette(3)[0])
-        cap.SetNumberOfProjectors(projectors)
-        cap.SetProjectorNoise(noise)
-        cap.SetProjectorAmbient(ambient)
-    cap.Update()
-    out = lfd.vtkLightField()
-    out.ShallowCopy(cap.GetOutput())
-    return source, out
+def capture(obj, projectors=4, noise=0.0, ambient=0.0):
+    """90 views in one ring, with Depth, lit by projectors painting 3 parts."""
+    return t.capture(obj, depth=True, ViewsPerRing=90, NumberOfRows=1, Palette=palette(3)[0],
+                     NumberOfProjectors=projectors, ProjectorNoise=noise, ProjectorAmbient=ambient)
 
 
 def accuracy(found, truth):
@@ -160,14 +145,14 @@ t.check(2.0 < noisy.GetEstimatedNoise() < 4.0, "noise sigma 3 estimated from the
         round(noisy.GetEstimatedNoise(), 2))
 
 # 2. Projector segmentation of the synthetic fish and figure.
-fish, fish_lf = capture(lfd.vtkProceduralObjectSource.FISH, projectors=4)
+fish, fish_lf = capture(lfd.vtkProceduralObjectSource.FISH)
 for name, (obj, lf) in (("fish", (fish, fish_lf)),
-                        ("figure", capture(lfd.vtkProceduralObjectSource.FIGURE, projectors=4))):
+                        ("figure", capture(lfd.vtkProceduralObjectSource.FIGURE))):
     seg = segment(lf)
     score, confusion = accuracy(labels_of(seg.GetOutput()), labels_of(lf))
     t.check(score >= PROJECTOR_ACCURACY, f"{name}: projector labels vs truth on object pixels",
             f"{100 * score:.2f} % (confusion truth -> [0,1,2,3]: {confusion})")
-_, noisy_fish = capture(lfd.vtkProceduralObjectSource.FISH, projectors=4, noise=4.0, ambient=0.05)
+_, noisy_fish = capture(lfd.vtkProceduralObjectSource.FISH, noise=4.0, ambient=0.05)
 seg = segment(noisy_fish)
 score, confusion = accuracy(labels_of(seg.GetOutput()), labels_of(noisy_fish))
 t.check(score >= NOISY_ACCURACY, "fish with noise sigma 4 and 5 % room light",

@@ -55,16 +55,19 @@ def temp_path(*parts):
     return path
 
 
-def capture(obj):
+def capture(obj, depth=False, **settings):
     """A built-in object (vtkProceduralObjectSource) and its light field
-    (default rig, no Depth pass)."""
+    (default rig; no Depth pass unless asked). `settings` are
+    vtkLightFieldCapture setters without "Set", e.g. ViewsPerRing=90."""
     source = lfd.vtkProceduralObjectSource()
     source.SetObject(obj)
     source.Update()
     cap = lfd.vtkLightFieldCapture()
     cap.SetInputConnection(source.GetOutputPort())
     cap.SetTextureConnection(source.GetOutputPort(1))
-    cap.CaptureDepthOff()
+    cap.SetCaptureDepth(depth)
+    for name, value in settings.items():
+        getattr(cap, "Set" + name)(value)
     cap.Update()
     return source, cap.GetOutput()
 

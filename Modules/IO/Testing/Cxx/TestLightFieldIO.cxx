@@ -1,8 +1,8 @@
 // Round trip of a light-field dataset through vtkLightFieldWriter and
 // vtkLightFieldReader: every pass with exact pixel values and the row
 // order checked against VTK's own PNG reader, the rig, names, palette,
-// projectors with their masks and provenance; pass selection and progress events; atomic replacement of an
-// existing dataset.
+// projectors with their masks and provenance; pass selection and progress events; atomic
+// replacement of an existing dataset.
 #include "lfdIOTestUtilities.h"
 
 #include "vtkCameraRig.h"
@@ -273,7 +273,8 @@ int TestLightFieldIO(int, char*[])
     int maskMismatches = mask ? 0 : -1;
     for (vtkIdType i = 0; mask && i < mask->GetNumberOfValues(); ++i)
     {
-      maskMismatches += mask->GetComponent(i / 3, i % 3) == written->GetComponent(i / 3, i % 3) ? 0 : 1;
+      maskMismatches +=
+        mask->GetComponent(i / 3, i % 3) == written->GetComponent(i / 3, i % 3) ? 0 : 1;
     }
     CheckEqual(maskMismatches, 0, "mask values differing after the round trip");
     CheckEqual(masks->GetDimensions()[2], 2, "masks");
