@@ -255,6 +255,11 @@ constexpr int MaxWarpedSegments = 6;
  * Intervals shorter than 1e-7 x the box size (a ray grazing a face or an
  * edge) are dropped. A ray lying in a planar face is on the closed box and
  * gets the interval along the face.
+ *
+ * `startsOutside` is the caller's promise that the point at tMin lies outside
+ * the box (a camera outside the cage): a ray with exactly two distinct face
+ * crossings is then inside between them by parity, and the Newton test of
+ * that stretch is skipped.
  */
 inline int WarpRayThroughBox(const Hexahedron& rest,
   const Hexahedron& deformed,
@@ -262,7 +267,8 @@ inline int WarpRayThroughBox(const Hexahedron& rest,
   const glm::dvec3& d,
   double tMin,
   WarpedSegment* out,
-  int maxSegments)
+  int maxSegments,
+  bool startsOutside = false)
 {
   const double size = BoxSize(deformed);
   const double speed = glm::length(d);
@@ -337,7 +343,8 @@ inline int WarpRayThroughBox(const Hexahedron& rest,
       // fallback when the close start fails).
       glm::dvec3 uvw = a.OnFace ? 0.5 * (a.Uvw + b.Uvw) : b.Uvw;
       const glm::dvec3 mid = o + (0.5 * (a.T + b.T)) * d;
-      const bool inside = (InvertTrilinear(deformed, mid, uvw) &&
+      const bool inside = (startsOutside && m == 2 && a.OnFace && b.OnFace) ||
+        (InvertTrilinear(deformed, mid, uvw) &&
                             glm::all(glm::greaterThanEqual(uvw, glm::dvec3(-1e-9))) &&
                             glm::all(glm::lessThanEqual(uvw, glm::dvec3(1.0 + 1e-9)))) ||
         Contains(deformed, mid, uvw);

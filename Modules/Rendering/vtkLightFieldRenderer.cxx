@@ -41,6 +41,7 @@ struct CageBox
   int Label = 0;
   glm::dvec3 Low{ 0.0 };
   glm::dvec3 High{ 0.0 };
+  bool EyeOutside = false; // the eye is outside the deformed box (set per frame)
 };
 
 /// Slab test of the line o + t d (t >= 0) against an axis-aligned box.
@@ -222,6 +223,7 @@ struct RenderRows
   const lfd::LightFieldSampler& Sampler;
   const std::vector<CageBox>& Boxes;
   const std::array<bool, 256>& Owned; // labels that have a box
+  bool AllOwned; // every part of the light field has a box: no part stays put
   glm::dvec3 Origin;
   glm::dmat3 PixelToDirection;
   int Width;
@@ -254,8 +256,14 @@ struct RenderRows
         continue;
       }
       lfd::WarpedSegment found[lfd::MaxWarpedSegments];
-      const int n = lfd::WarpRayThroughBox(
-        box.Rest, box.Deformed, this->Origin, d, 0.0, found, lfd::MaxWarpedSegments);
+      const int n = lfd::WarpRayThroughBox(box.Rest,
+        box.Deformed,
+        this->Origin,
+        d,
+        0.0,
+        found,
+        lfd::MaxWarpedSegments,
+        box.EyeOutside);
       for (int k = 0; k < n && count < MaxSegments; ++k)
       {
         segments[count++] = { found[k], static_cast<int>(b) };
@@ -280,6 +288,12 @@ struct RenderRows
         depth = 0.5 * (segment.TEnter + segment.TExit);
         return label;
       }
+    }
+    if (this->UseLabels && this->AllOwned)
+    {
+      // Every part moved with its box: what no box shows is background,
+      // without looking the ray up.
+      return 0;
     }
     if (!this->Sampler.Gather(this->Origin, d, samples))
     {
@@ -526,6 +540,14 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     std::copy(this->PinholeT, this->PinholeT + 3, t);
   }
   const lfd::PinholeCamera eye = lfd::PinholeCamera::FromRowMajor(K, R, t);
+  for (CageBox& box : boxes)
+  {
+    glm::dvec3 uvw(0.5);
+    const glm::dvec3 center = eye.Center();
+    const bool inBounds = glm::all(glm::greaterThanEqual(center, box.Low)) &&
+      glm::all(glm::lessThanEqual(center, box.High));
+    box.EyeOutside = !inBounds || !lfd::Contains(box.Deformed, center, uvw);
+  }
 
   output->SetExtent(0, this->Width - 1, 0, this->Height - 1, 0, 0);
   output->SetSpacing(1.0, 1.0, 1.0);
@@ -541,9 +563,32 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   imageDepths->SetName("Depth");
   imageDepths->SetNumberOfTuples(image->GetNumberOfTuples());
 
+  // With a cage, a ray that no box claims shows the parts without a box;
+  // when every part of the light field has one, it shows background.
+  bool allOwned = false;
+  if (useLabels && !boxes.empty())
+  {
+    if (this->LabelsPresentArray != labels || this->LabelsPresentTime < labels->GetMTime())
+    {
+      this->LabelsPresent.assign(256, false);
+      const std::uint8_t* values = labels->GetPointer(0);
+      for (vtkIdType i = 0; i < labels->GetNumberOfValues(); ++i)
+      {
+        this->LabelsPresent[values[i]] = true;
+      }
+      this->LabelsPresentArray = labels;
+      this->LabelsPresentTime = labels->GetMTime();
+    }
+    allOwned = true;
+    for (int label = 1; label < 256; ++label)
+    {
+      allOwned = allOwned && (!this->LabelsPresent[label] || owned[label]);
+    }
+  }
   RenderRows functor{ sampler,
     boxes,
     owned,
+    allOwned,
     eye.Center(),
     eye.PixelToDirection(),
     this->Width,
