@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace lfd
@@ -317,6 +318,110 @@ struct LightFieldSampler
       }
     }
     return out.Count > 0;
+  }
+
+  /**
+   * Sec. 8 of the paper, the widened camera search for a region that a
+   * deformation uncovers: the nearby cameras of a warped ray see another
+   * part where the ray's own part should be (it was hidden behind that part
+   * before the deformation). Points p along the rest-space segment [a, b],
+   * front to back (`steps` of them), are tried in the `reach` views on each
+   * side of the ray's azimuth in the row nearest p's height, stepping
+   * outwards. Each view tells what p projects onto: `label` (a vote), another
+   * part (p is hidden from that view: no say) or background (p is in the
+   * air: p is refused, as a visual hull carves it). Of the points with two
+   * votes or more and no refusal, the most photo-consistent (most votes,
+   * then the smallest spread of the voting colours) gives the pixel: the
+   * mean colour of the voting views at its projection, weighted by angular
+   * nearness. Returns false when no point qualifies.
+   */
+  bool Widen(const glm::dvec3& a,
+    const glm::dvec3& b,
+    int label,
+    int steps,
+    int reach,
+    glm::dvec3& color) const
+  {
+    const glm::dvec3 d = b - a;
+    double s;
+    if (!this->Labels.Data || !IntersectCylinderEntry(this->Layout->Cyl, a, d, s))
+    {
+      return false;
+    }
+    double azimuth, height;
+    this->Layout->Locate(a + s * d, azimuth, height);
+    const RingRow* row = &this->Layout->Rows[0];
+    for (const RingRow& candidate : this->Layout->Rows)
+    {
+      row = std::abs(candidate.Height - height) < std::abs(row->Height - height) ? &candidate : row;
+    }
+    const int n = static_cast<int>(row->Azimuth.size());
+    if (n < 2)
+    {
+      return false;
+    }
+    const int upper = static_cast<int>(
+      std::upper_bound(row->Azimuth.begin(), row->Azimuth.end(), azimuth) - row->Azimuth.begin());
+    const int w = this->Radiance.Width;
+    const int h = this->Radiance.Height;
+    // The most photo-consistent point: most votes, then the least spread of
+    // the voting colours.
+    int bestVotes = 1;
+    double bestSpread = std::numeric_limits<double>::infinity();
+    for (int step = 0; step < steps; ++step)
+    {
+      const glm::dvec3 p = a + ((step + 0.5) / steps) * d;
+      glm::dvec3 sum(0.0), squares(0.0);
+      double total = 0.0;
+      int votes = 0;
+      bool refused = false;
+      for (int k = 0; k < 2 * std::min(reach, n / 2) && !refused; ++k)
+      {
+        // Alternate sides, nearest first: upper, lower, upper + 1, ...
+        const int offset = k / 2;
+        const int index = (k % 2 == 0) ? (upper + offset) % n : ((upper - 1 - offset) % n + n) % n;
+        glm::dvec2 uv;
+        if (!this->Cameras[row->View[index]].Project(p, uv))
+        {
+          continue;
+        }
+        const int px = static_cast<int>(std::lround(uv.x));
+        const int py = static_cast<int>(std::lround(uv.y));
+        if (px < 0 || py < 0 || px >= w || py >= h)
+        {
+          continue;
+        }
+        const int seen = *this->Labels.Pixel(row->View[index], px, py);
+        if (seen == 0)
+        {
+          refused = true;
+        }
+        else if (seen == label)
+        {
+          const std::uint8_t* rgb = this->Radiance.Pixel(row->View[index], px, py);
+          const glm::dvec3 sample(rgb[0], rgb[1], rgb[2]);
+          const double weight = 1.0 / (1.0 + offset);
+          sum += weight * sample;
+          squares += weight * sample * sample;
+          total += weight;
+          ++votes;
+        }
+      }
+      if (refused || votes < 2)
+      {
+        continue;
+      }
+      const glm::dvec3 mean = sum / total;
+      const glm::dvec3 variance = squares / total - mean * mean;
+      const double spread = variance.x + variance.y + variance.z;
+      if (votes > bestVotes || (votes == bestVotes && spread < bestSpread))
+      {
+        bestVotes = votes;
+        bestSpread = spread;
+        color = mean;
+      }
+    }
+    return bestVotes >= 2;
   }
 };
 

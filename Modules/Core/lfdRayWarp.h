@@ -345,8 +345,8 @@ inline int WarpRayThroughBox(const Hexahedron& rest,
       const glm::dvec3 mid = o + (0.5 * (a.T + b.T)) * d;
       const bool inside = (startsOutside && m == 2 && a.OnFace && b.OnFace) ||
         (InvertTrilinear(deformed, mid, uvw) &&
-                            glm::all(glm::greaterThanEqual(uvw, glm::dvec3(-1e-9))) &&
-                            glm::all(glm::lessThanEqual(uvw, glm::dvec3(1.0 + 1e-9)))) ||
+          glm::all(glm::greaterThanEqual(uvw, glm::dvec3(-1e-9))) &&
+          glm::all(glm::lessThanEqual(uvw, glm::dvec3(1.0 + 1e-9)))) ||
         Contains(deformed, mid, uvw);
       if (!inside)
       {

@@ -172,6 +172,7 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
   renderer->SetHeight(this->Height);
   renderer->SetFocalDistance(this->FocalDistance);
   renderer->SetSubdivision(this->Subdivision);
+  renderer->SetWidenedSearch(this->WidenedSearch);
 
   // The mesh through the same map, captured with the same light from the
   // same camera.
@@ -258,6 +259,7 @@ void vtkGroundTruthEvaluator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
   os << indent << "Subdivision: " << this->Subdivision << "\n";
+  os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";
   os << indent << "PSNR: " << this->PSNR << "\n";
   os << indent << "SSIM: " << this->SSIM << "\n";
   os << indent << "IoU: " << this->IoU << "\n";

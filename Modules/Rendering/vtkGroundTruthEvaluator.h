@@ -62,13 +62,16 @@ public:
 
   ///@{
   /**
-   * Focal distance and box subdivision of the light-field render (see
-   * vtkLightFieldRenderer; subdivision 0 = automatic).
+   * Focal distance, box subdivision and widened camera search of the
+   * light-field render (see vtkLightFieldRenderer; subdivision 0 =
+   * automatic, widened search 0 = off).
    */
   vtkSetMacro(FocalDistance, double);
   vtkGetMacro(FocalDistance, double);
   vtkSetClampMacro(Subdivision, int, 0, 64);
   vtkGetMacro(Subdivision, int);
+  vtkSetClampMacro(WidenedSearch, int, 0, 64);
+  vtkGetMacro(WidenedSearch, int);
   ///@}
 
   ///@{
@@ -107,6 +110,7 @@ protected:
   int Height = 256;
   double FocalDistance = 0.0;
   int Subdivision = 1;
+  int WidenedSearch = 2;
   double PSNR = 0.0;
   double SSIM = 0.0;
   double IoU = 0.0;

@@ -42,6 +42,7 @@ struct CageBox
   glm::dvec3 Low{ 0.0 };
   glm::dvec3 High{ 0.0 };
   bool EyeOutside = false; // the eye is outside the deformed box (set per frame)
+  bool Moved = false;      // deformed differs from rest: it may uncover regions
 };
 
 /// Slab test of the line o + t d (t >= 0) against an axis-aligned box.
@@ -223,7 +224,8 @@ struct RenderRows
   const lfd::LightFieldSampler& Sampler;
   const std::vector<CageBox>& Boxes;
   const std::array<bool, 256>& Owned; // labels that have a box
-  bool AllOwned; // every part of the light field has a box: no part stays put
+  bool AllOwned;                      // every part of the light field has a box: no part stays put
+  int WidenReach;                     // views tried on each side by the widened search (0: off)
   glm::dvec3 Origin;
   glm::dmat3 PixelToDirection;
   int Width;
@@ -236,6 +238,7 @@ struct RenderRows
   glm::dvec3 Forward; // the camera's optical axis: d's camera z is 1
 
   static constexpr int MaxSegments = 64;
+  static constexpr int WidenSteps = 8;
 
   /**
    * Label and colour seen along the view ray d (camera z component 1);
@@ -272,8 +275,10 @@ struct RenderRows
     std::sort(segments,
       segments + count,
       [](const BoxSegment& a, const BoxSegment& b) { return a.Segment.TEnter < b.Segment.TEnter; });
+    int seen[MaxSegments];
     for (int k = 0; k < count; ++k)
     {
+      seen[k] = -1;
       const lfd::WarpedSegment& segment = segments[k].Segment;
       const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
       if (glm::dot(direction, direction) <= 0.0 ||
@@ -281,12 +286,28 @@ struct RenderRows
       {
         continue;
       }
-      const int label = this->Boxes[segments[k].Box].Label;
-      if (lfd::VoteLabel(samples) == label)
+      const CageBox& box = this->Boxes[segments[k].Box];
+      seen[k] = lfd::VoteLabel(samples);
+      if (seen[k] == box.Label)
       {
-        lfd::BlendLabel(samples, label, color);
+        lfd::BlendLabel(samples, box.Label, color);
         depth = 0.5 * (segment.TEnter + segment.TExit);
-        return label;
+        return box.Label;
+      }
+    }
+    // No segment matched. Where the nearby cameras saw another part in a
+    // moved box, that part may have hidden this one before the deformation
+    // uncovered it (paper Sec. 8): look in further cameras, front to back.
+    for (int k = 0; k<count&& this->WidenReach> 0; ++k)
+    {
+      const CageBox& box = this->Boxes[segments[k].Box];
+      const lfd::WarpedSegment& segment = segments[k].Segment;
+      if (box.Moved && seen[k] > 0 &&
+        this->Sampler.Widen(
+          segment.RestEnter, segment.RestExit, box.Label, WidenSteps, this->WidenReach, color))
+      {
+        depth = 0.5 * (segment.TEnter + segment.TExit);
+        return box.Label;
       }
     }
     if (this->UseLabels && this->AllOwned)
@@ -547,6 +568,13 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     const bool inBounds = glm::all(glm::greaterThanEqual(center, box.Low)) &&
       glm::all(glm::lessThanEqual(center, box.High));
     box.EyeOutside = !inBounds || !lfd::Contains(box.Deformed, center, uvw);
+    const double size = lfd::BoxSize(box.Rest);
+    box.Moved = false;
+    for (int c = 0; c < 8; ++c)
+    {
+      box.Moved =
+        box.Moved || glm::distance(box.Rest.Corners[c], box.Deformed.Corners[c]) > 1e-9 * size;
+    }
   }
 
   output->SetExtent(0, this->Width - 1, 0, this->Height - 1, 0, 0);
@@ -589,6 +617,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     boxes,
     owned,
     allOwned,
+    this->WidenedSearch,
     eye.Center(),
     eye.PixelToDirection(),
     this->Width,

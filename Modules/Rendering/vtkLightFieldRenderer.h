@@ -119,6 +119,25 @@ public:
 
   ///@{
   /**
+   * Widened camera search (paper Sec. 8) for regions a deformation uncovers:
+   * when no segment of a view ray matched and the cameras around a moved
+   * box's warped ray saw another part there (it hid this one before the
+   * deformation), up to WidenedSearch views on each side of the ray are
+   * asked what points along the warped segment project onto (see
+   * lfd::LightFieldSampler::Widen: background refuses a point, the part
+   * votes for it, another part has no say); the most photo-consistent point
+   * gives the pixel. It runs only after every segment failed, so it fills
+   * holes and never overrides a match; boxes at rest never use it (a cage
+   * at rest renders exactly the undeformed light field). 0 turns it off.
+   * Default 2 (fish swim: 25.40 -> 25.56 dB, IoU 0.985 -> 0.986; wider
+   * reaches do not help more).
+   */
+  vtkSetClampMacro(WidenedSearch, int, 0, 64);
+  vtkGetMacro(WidenedSearch, int);
+  ///@}
+
+  ///@{
+  /**
    * Views left out of the sampling, with their near-duplicates
    * (leave-one-out evaluation).
    */
@@ -167,6 +186,7 @@ protected:
   double Background[3] = { 0.0, 0.0, 0.0 };
   bool UseLabels = true;
   int Subdivision = 1;
+  int WidenedSearch = 2;
   double SubdivisionTolerance = 1e-3;
   std::vector<int> ExcludedViews;
 

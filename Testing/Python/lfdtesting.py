@@ -83,7 +83,7 @@ def side_camera(rig, azimuth=0.35, angle=22.0):
     return camera
 
 
-def evaluate(name, source, lf, cage, camera, subdivision=1, size=256):
+def evaluate(name, source, lf, cage, camera, subdivision=1, size=256, widen=2):
     """vtkGroundTruthEvaluator of the light field deformed by `cage` against
     the source mesh deformed by the same cage; prints the figures."""
     ev = lfd.vtkGroundTruthEvaluator()
@@ -93,6 +93,7 @@ def evaluate(name, source, lf, cage, camera, subdivision=1, size=256):
     ev.SetCageData(cage)
     ev.SetCamera(camera)
     ev.SetSubdivision(subdivision)
+    ev.SetWidenedSearch(widen)
     ev.SetWidth(size)
     ev.SetHeight(size)
     ev.Update()
