@@ -122,6 +122,7 @@ struct SynthOptions
   int Projectors = 0;
   double ProjectorNoise = 0.0;
   double ProjectorAmbient = 0.0;
+  std::vector<std::string> ProjectorMasks;
 };
 
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
@@ -296,6 +297,61 @@ vtkSmartPointer<vtkPolyData> SourceMesh(const std::string& name,
   return source->GetOutput();
 }
 
+/// The painted masks of `projectors` projectors, one RGB image each, stacked
+/// into one image of Wp x Hp x projectors (the "Mask" array).
+vtkSmartPointer<vtkImageData> ReadProjectorMasks(const std::vector<std::string>& files,
+  int projectors)
+{
+  if (static_cast<int>(files.size()) != projectors)
+  {
+    Fail("--projector-mask: " + std::to_string(files.size()) + " masks for " +
+      std::to_string(projectors) + " projectors (give one per projector)");
+  }
+  auto masks = vtkSmartPointer<vtkImageData>::New();
+  vtkNew<vtkUnsignedCharArray> stack;
+  stack->SetName("Mask");
+  stack->SetNumberOfComponents(3);
+  for (size_t p = 0; p < files.size(); ++p)
+  {
+    vtkNew<vtkImageFileReader> reader;
+    reader->SetFileName(files[p].c_str());
+    reader->Update();
+    if (reader->GetErrorCode() != 0)
+    {
+      Fail(reader->GetErrorMessage());
+    }
+    vtkImageData* image = reader->GetOutput();
+    vtkDataArray* rgb = image->GetPointData()->GetScalars();
+    const int* dims = image->GetDimensions();
+    if (!rgb || rgb->GetNumberOfComponents() < 3)
+    {
+      Fail(files[p] + ": a projector mask is an RGB image");
+    }
+    if (p == 0)
+    {
+      masks->SetDimensions(dims[0], dims[1], projectors);
+      stack->SetNumberOfTuples(masks->GetNumberOfPoints());
+    }
+    else if (dims[0] != masks->GetDimensions()[0] || dims[1] != masks->GetDimensions()[1])
+    {
+      Fail(files[p] + ": is " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + ", " +
+        files[0] + " " + std::to_string(masks->GetDimensions()[0]) + "x" +
+        std::to_string(masks->GetDimensions()[1]) + " (every projector mask has the same size)");
+    }
+    const vtkIdType pixels = static_cast<vtkIdType>(dims[0]) * dims[1];
+    for (vtkIdType i = 0; i < pixels; ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        stack->SetTypedComponent(
+          p * pixels + i, c, static_cast<unsigned char>(rgb->GetComponent(i, c)));
+      }
+    }
+  }
+  masks->GetPointData()->SetScalars(stack);
+  return masks;
+}
+
 /// Captures a light field of `mesh` (with `texture`, optional) with the options' rig and light.
 vtkSmartPointer<vtkLightField> Capture(vtkPolyData* mesh,
   vtkImageData* texture,
@@ -335,6 +391,12 @@ vtkSmartPointer<vtkLightField> Capture(vtkPolyData* mesh,
     }
     capture->SetPalette(palette);
     capture->SetNumberOfProjectors(options.Projectors);
+    if (!options.ProjectorMasks.empty())
+    {
+      capture->SetProjectorMasks(ReadProjectorMasks(options.ProjectorMasks, options.Projectors));
+      capture->SetProjectorWidth(capture->GetProjectorMasks()->GetDimensions()[0]);
+      capture->SetProjectorHeight(capture->GetProjectorMasks()->GetDimensions()[1]);
+    }
     capture->SetProjectorNoise(options.ProjectorNoise);
     capture->SetProjectorAmbient(options.ProjectorAmbient);
   }
@@ -414,6 +476,10 @@ void AddSynthOptions(CLI::App* command, SynthOptions& options)
       options.ProjectorNoise,
       "sensor noise sigma of the projector passes (8-bit levels)")
     ->check(CLI::Range(0.0, 255.0));
+  command->add_option("--projector-mask",
+    options.ProjectorMasks,
+    "a painted mask (RGB image in the palette's colours, see the palette printed) for each "
+    "projector, in order; repeat (default: masks generated from the part labels)");
   command
     ->add_option("--projector-ambient",
       options.ProjectorAmbient,
@@ -497,6 +563,17 @@ int Synth(const SynthOptions& options)
   const double start = vtkTimerLog::GetUniversalTime();
   auto lightField = Synthesize(options);
   WriteLightField(lightField, options.Out);
+  if (vtkUnsignedCharArray* palette = lightField->GetPalette())
+  {
+    std::cout << "palette:";
+    for (vtkIdType label = 1; label < palette->GetNumberOfTuples(); ++label)
+    {
+      std::cout << " " << label << "=(" << static_cast<int>(palette->GetTypedComponent(label, 0))
+                << "," << static_cast<int>(palette->GetTypedComponent(label, 1)) << ","
+                << static_cast<int>(palette->GetTypedComponent(label, 2)) << ")";
+    }
+    std::cout << "\n";
+  }
   std::cout << "wrote " << lightField->GetNumberOfViews() << " views of " << lightField->GetWidth()
             << "x" << lightField->GetHeight() << " to " << options.Out << " in " << Seconds(start)
             << " s\n";

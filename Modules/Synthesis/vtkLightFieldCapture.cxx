@@ -477,6 +477,21 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
     }
     else
     {
+      if (vtkDataArray* parts = input->GetCellData()->GetArray("Label"))
+      {
+        double range[2];
+        parts->GetRange(range, 0);
+        if (range[1] >= this->Palette->GetNumberOfTuples())
+        {
+          this->Fail(output,
+            vtkErrorCode::UnknownError,
+            "vtkLightFieldCapture: the mesh has part label " +
+              std::to_string(static_cast<long long>(range[1])) + " but the palette colours only " +
+              std::to_string(this->Palette->GetNumberOfTuples() - 1) +
+              " labels; give a palette with one colour per part");
+          return 0;
+        }
+      }
       masks->SetDimensions(projectorWidth, projectorHeight, projectorCount);
       vtkNew<vtkUnsignedCharArray> generated;
       generated->SetName("Mask");

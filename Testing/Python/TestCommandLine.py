@@ -9,10 +9,12 @@ import shutil
 import subprocess
 
 import lfdtesting as t
-from vtkmodules.util.numpy_support import vtk_to_numpy
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 from vtkmodules.vtkIOPLY import vtkPLYWriter
 
 import lfd as lfd_module
@@ -154,11 +156,11 @@ t.check(labels == [0, 1, 2], "synth --mesh --scene: the boxes' labels reach the 
 
 # Splitting the sphere: projectors, rows, painted views, and the box check.
 projected = os.path.join(WORK, "sphere_projected.lf")
-code, out, err = lfd("synth", "--mesh", ply, "--scene", boxes, "--views", "12", "--rows", "1",
-                     "--width", "64", "--height", "64", "--projectors", "3", "--out", projected)
+code, out_synth, err = lfd("synth", "--mesh", ply, "--scene", boxes, "--views", "12", "--rows", "1",
+                           "--width", "64", "--height", "64", "--projectors", "3", "--out", projected)
 t.check(code == 0 and os.path.isdir(os.path.join(projected, "coded"))
         and len(os.listdir(os.path.join(projected, "projectors"))) == 3,
-        "synth --projectors 3: Coded, Flood and 3 masks", err.strip() or sorted(os.listdir(projected)))
+        "synth --projectors 3: Coded, Flood and 3 masks", err.strip() or out_synth.strip())
 split_lf = os.path.join(WORK, "sphere_split.lf")
 code, out, err = lfd("split", "projector", projected, "--truth", projected, "--out", split_lf)
 accuracy = [float(line.split()[4]) for line in out.splitlines() if line.startswith("accuracy")]
@@ -190,6 +192,36 @@ code, out, err = lfd("split", "propagate", projected, "--paint",
 accuracy = [float(line.split()[4]) for line in out.splitlines() if line.startswith("accuracy")]
 t.check(code == 0 and accuracy and accuracy[0] > 97.0,
         "split propagate from 2 views through the depth (%)", accuracy or err.strip())
+# Painted masks: every projector shows label 2's colour, so every lit
+# object pixel is split as label 2.
+palette_line = [line for line in out_synth.splitlines() if line.startswith("palette:")]
+colour = [int(v) for v in palette_line[0].split("2=(")[1].split(")")[0].split(",")] if palette_line else [0, 0, 0]
+masks = []
+for p in range(3):
+    image = vtkImageData()
+    image.SetDimensions(32, 32, 1)
+    image.GetPointData().SetScalars(numpy_to_vtk(np.tile(np.array(colour, np.uint8), (32 * 32, 1)), deep=True))
+    masks.append(os.path.join(WORK, f"mask_{p}.png"))
+    png = vtkPNGWriter()
+    png.SetInputData(image)
+    png.SetFileName(masks[-1])
+    png.Write()
+painted_lf = os.path.join(WORK, "sphere_painted.lf")
+code, out, err = lfd("synth", "--mesh", ply, "--scene", boxes, "--views", "12", "--rows", "1",
+                     "--width", "64", "--height", "64", "--projectors", "3",
+                     *[arg for m in masks for arg in ("--projector-mask", m)], "--out", painted_lf)
+split_labels = []
+if code == 0:
+    code, out, err = lfd("split", "projector", painted_lf, "--out", os.path.join(WORK, "painted_split.lf"))
+    reader = lfd_module.vtkLightFieldReader()
+    reader.SetFileName(os.path.join(WORK, "painted_split.lf"))
+    reader.Update()
+    split_labels = sorted(set(vtk_to_numpy(reader.GetOutput().GetPass(lfd_module.vtkLightField.LABEL)).tolist()))
+t.check(split_labels == [0, 2], "synth --projector-mask: painted masks decide the labels",
+        split_labels or err.strip())
+expect_error(["synth", "--mesh", ply, "--scene", boxes, "--views", "12", "--rows", "1", "--projectors",
+              "2", "--projector-mask", masks[0], "--out", os.path.join(WORK, "never.lf")],
+             "2 projectors")
 expect_error(["split", "propagate", projected, "--paint", "zero.png", "--out",
               os.path.join(WORK, "never.lf")], "VIEW=LABELS.png")
 expect_error(["split", "propagate", projected, "--paint",
