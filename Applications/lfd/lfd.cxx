@@ -613,6 +613,17 @@ int Info(const std::string& path)
     }
   }
   std::cout << "\n";
+  if (vtkUnsignedCharArray* palette = lightField->GetPalette())
+  {
+    std::cout << "palette      " << palette->GetNumberOfTuples() - 1 << " label colours\n";
+  }
+  if (vtkCameraRig* projectors = lightField->GetProjectors();
+      projectors && projectors->GetNumberOfViews() > 0)
+  {
+    std::cout << "projectors   " << projectors->GetNumberOfViews() << " of "
+              << projectors->GetImageSize()[0] << " x " << projectors->GetImageSize()[1]
+              << (lightField->GetProjectorMasks() ? ", with masks" : "") << "\n";
+  }
   if (!rig->FitCylinder())
   {
     Fail("no cylinder can be fitted to the cameras of '" + path + "'");

@@ -340,8 +340,8 @@ cap.SetNumberOfRows(1)
 cap.SetNumberOfProjectors(4)
 cap.SetProjectorMasks(masks)
 cap.Update()
-t.check(cap.GetOutput().GetNumberOfPoints() == 0, "masks of the wrong size: no output",
-        cap.GetOutput().GetNumberOfPoints())
+t.check(cap.GetOutput().GetNumberOfPoints() == 0 and "10x10x4" in cap.GetErrorMessage(),
+        "masks of the wrong size: one error, no output", cap.GetErrorMessage())
 short_palette = vtkUnsignedCharArray()
 short_palette.SetNumberOfComponents(3)
 short_palette.InsertNextTuple3(0, 0, 0)
