@@ -76,6 +76,17 @@ public:
 
   ///@{
   /**
+   * Before the cage map deforms it, the mesh is refined
+   * (vtkAdaptiveSubdivisionFilter) until no edge is longer than this, so
+   * the deformed mesh follows the map inside its triangles too (a map bends
+   * straight edges). 0 (default): 1 % of the mesh's bounding-box diagonal.
+   */
+  vtkSetClampMacro(MaximumEdgeLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumEdgeLength, double);
+  ///@}
+
+  ///@{
+  /**
    * The figures, after Update(): PSNR (dB, 100 when equal) and SSIM (mean
    * over 7x7 windows centred on object pixels, luminance) over the object
    * pixels, silhouette IoU, label agreement over the object pixels, and the
@@ -111,6 +122,7 @@ protected:
   double FocalDistance = 0.0;
   int Subdivision = 1;
   int WidenedSearch = 2;
+  double MaximumEdgeLength = 0.0;
   double PSNR = 0.0;
   double SSIM = 0.0;
   double IoU = 0.0;
