@@ -25,17 +25,6 @@ BEND = (16.6, 0.72, 0.95)
 OCCLUSION_AGREEMENT = 0.93
 
 
-def posed(cage_output_port, mode, angle, turn_axis=(0, 1, 0), phase=0.0):
-    pose = lfd.vtkCagePoseFilter()
-    pose.SetInputConnection(cage_output_port)
-    pose.SetMode(mode)
-    pose.SetAngle(angle)
-    pose.SetTurnAxis(*turn_axis)
-    pose.SetPhase(phase)
-    pose.Update()
-    return pose.GetOutput()
-
-
 def render(lf, cage, camera):
     renderer = lfd.vtkLightFieldRenderer()
     renderer.SetInputData(lf)
@@ -59,7 +48,7 @@ difference = np.abs(render(fish_lf, None, camera) - render(fish_lf, rest, camera
 t.check(difference.max() == 0, "a cage at rest renders the undeformed light field exactly",
         int(difference.max()))
 
-swim = posed(parts.GetOutputPort(), lfd.vtkCagePoseFilter.SWIM, 20.0, (0, 0, 1), 1.0)
+swim = t.pose(parts.GetOutputPort(), lfd.vtkCagePoseFilter.SWIM, 20.0, (0, 0, 1), 1.0).GetOutput()
 widened = t.evaluate("fish swim", fish, fish_lf, swim, camera)
 t.expect("fish swim", widened, *SWIM)
 # The widened camera search (paper Sec. 8, on by default) fills regions the
@@ -106,13 +95,13 @@ figure_parts = lfd.vtkPartCageSource()
 figure_parts.SetInputConnection(figure.GetOutputPort())
 figure_parts.Update()
 camera = t.side_camera(figure_lf.GetRig(), azimuth=0.2, angle=26.0)
-twist = posed(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 45.0)
+twist = t.pose(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 45.0).GetOutput()
 t.expect("figure twist", t.evaluate("figure twist", figure, figure_lf, twist, camera), *TWIST)
 # Tessellation (beyond the paper): a 90-degree twist bends the inverse images
 # of view rays; splitting the boxes into 2^3 sub-boxes (or the automatic
 # choice) follows them better (measured: 15.05 -> 17.44 dB, SSIM 0.630 ->
 # 0.766 at k = 2; 17.01 dB automatic).
-strong = posed(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 90.0)
+strong = t.pose(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 90.0).GetOutput()
 plain = t.evaluate("twist 90 k=1", figure, figure_lf, strong, camera, 1)
 split = t.evaluate("twist 90 k=2", figure, figure_lf, strong, camera, 2)
 automatic = t.evaluate("twist 90 auto", figure, figure_lf, strong, camera, 0)
@@ -122,6 +111,6 @@ t.check(split.GetSSIM() > plain.GetSSIM() + 0.05, "subdivision 2 gains > 0.05 SS
         split.GetSSIM() - plain.GetSSIM())
 t.check(automatic.GetPSNR() > plain.GetPSNR() + 1.0, "automatic subdivision gains > 1 dB",
         automatic.GetPSNR() - plain.GetPSNR())
-bend = posed(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.BEND, 30.0, (0, 0, 1))
+bend = t.pose(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.BEND, 30.0, (0, 0, 1)).GetOutput()
 t.expect("figure bend", t.evaluate("figure bend", figure, figure_lf, bend, camera), *BEND)
 t.finish()

@@ -295,13 +295,7 @@ t.check(not check.GetPassed() and check.GetWorstFraction(0) == 0.0,
         "a label without a box fails the check", check.GetWorstFraction(0))
 
 # 5. The projector-split fish deforms like the synthetic-label one.
-pose = lfd.vtkCagePoseFilter()
-pose.SetInputConnection(parts.GetOutputPort())
-pose.SetMode(lfd.vtkCagePoseFilter.SWIM)
-pose.SetAngle(20.0)
-pose.SetTurnAxis(0, 0, 1)
-pose.SetPhase(1.0)
-pose.Update()
+pose = t.pose(parts.GetOutputPort(), lfd.vtkCagePoseFilter.SWIM, 20.0, (0, 0, 1), 1.0)
 camera = t.side_camera(fish_lf.GetRig())
 renders = []
 for lf in (fish_lf, projector_fish):
@@ -332,30 +326,30 @@ t.check("palette" in seg.GetErrorMessage(), "missing palette", seg.GetErrorMessa
 masks = vtkImageData()
 masks.SetDimensions(10, 10, 4)
 masks.GetPointData().SetScalars(numpy_to_vtk(np.zeros((400, 3), np.uint8), deep=True))
-source = lfd.vtkProceduralObjectSource()
-cap = quiet(lfd.vtkLightFieldCapture())
-cap.SetInputConnection(source.GetOutputPort())
-cap.SetViewsPerRing(4)
-cap.SetNumberOfRows(1)
-cap.SetNumberOfProjectors(4)
-cap.SetProjectorMasks(masks)
-cap.Update()
-t.check(cap.GetOutput().GetNumberOfPoints() == 0 and "10x10x4" in cap.GetErrorMessage(),
-        "masks of the wrong size: one error, no output", cap.GetErrorMessage())
+
+
+def failed_capture(**settings):
+    """A 4-view capture of the fish that must fail: its error message, and
+    whether it left an empty output."""
+    source = lfd.vtkProceduralObjectSource()
+    cap = quiet(lfd.vtkLightFieldCapture())
+    cap.SetInputConnection(source.GetOutputPort())
+    cap.SetViewsPerRing(4)
+    cap.SetNumberOfRows(1)
+    for name, value in settings.items():
+        getattr(cap, "Set" + name)(value)
+    cap.Update()
+    return cap.GetErrorMessage(), cap.GetOutput().GetNumberOfPoints() == 0
+
+
+message, empty = failed_capture(NumberOfProjectors=4, ProjectorMasks=masks)
+t.check(empty and "10x10x4" in message, "masks of the wrong size: one error, no output", message)
 short_palette = vtkUnsignedCharArray()
 short_palette.SetNumberOfComponents(3)
 short_palette.InsertNextTuple3(0, 0, 0)
 short_palette.InsertNextTuple3(255, 0, 0)
-fish_source = lfd.vtkProceduralObjectSource()
-cap = quiet(lfd.vtkLightFieldCapture())
-cap.SetInputConnection(fish_source.GetOutputPort())
-cap.SetViewsPerRing(4)
-cap.SetNumberOfRows(1)
-cap.SetNumberOfProjectors(2)
-cap.SetPalette(short_palette)
-cap.Update()
-t.check("part label 3" in cap.GetErrorMessage() and cap.GetOutput().GetNumberOfPoints() == 0,
-        "a palette with fewer colours than parts", cap.GetErrorMessage())
+message, empty = failed_capture(NumberOfProjectors=2, Palette=short_palette)
+t.check(empty and "part label 3" in message, "a palette with fewer colours than parts", message)
 wrong = vtkImageData()
 wrong.SetDimensions(10, 10, 1)
 wrong.GetPointData().SetScalars(numpy_to_vtk(np.ones(100, np.uint8), deep=True))

@@ -72,6 +72,18 @@ def capture(obj, depth=False, **settings):
     return source, cap.GetOutput()
 
 
+def pose(cage_port, mode, angle, turn_axis=(0, 1, 0), phase=0.0):
+    """vtkCagePoseFilter (twist, swim or bend) of the cage on `cage_port`, updated."""
+    posed = lfd.vtkCagePoseFilter()
+    posed.SetInputConnection(cage_port)
+    posed.SetMode(mode)
+    posed.SetAngle(angle)
+    posed.SetTurnAxis(*turn_axis)
+    posed.SetPhase(phase)
+    posed.Update()
+    return posed
+
+
 def side_camera(rig, azimuth=0.35, angle=22.0):
     """A camera at the ring's height, between captured views, outside the ring."""
     camera = vtkCamera()
