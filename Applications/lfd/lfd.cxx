@@ -254,6 +254,7 @@ void ConfigureRenderer(vtkLightFieldRenderer* renderer,
   renderer->SetHeight(scene->GetHeight());
   renderer->SetFocalDistance(scene->GetFocalDistance());
   renderer->SetSubdivision(scene->GetSubdivision()); // 0 = "auto" in both
+  renderer->SetWidenedSearch(scene->GetWidenedSearch());
   renderer->SetBackground(scene->GetBackground());
 }
 
@@ -768,6 +769,7 @@ int EvalGroundTruth(const std::string& scenePath,
   evaluator->SetHeight(scene->GetHeight());
   evaluator->SetFocalDistance(scene->GetFocalDistance());
   evaluator->SetSubdivision(scene->GetSubdivision());
+  evaluator->SetWidenedSearch(scene->GetWidenedSearch());
   Run(evaluator.Get(), "ground-truth evaluation");
   std::printf("object PSNR       %.2f dB\n", evaluator->GetPSNR());
   std::printf("object SSIM       %.4f\n", evaluator->GetSSIM());
@@ -1377,6 +1379,11 @@ int SplitCheck(const SplitOptions& options)
   if (!scene->HasCage())
   {
     Fail(options.Scene + ": the scene has no cage to check");
+  }
+  if (!lightField->GetPass(vtkLightField::LABEL))
+  {
+    Fail(options.In +
+      ": has no Label pass to check; split it first (lfd split projector|scanline|propagate)");
   }
   vtkNew<vtkBoxCoverageCheck> check;
   check->SetInputData(0, lightField);

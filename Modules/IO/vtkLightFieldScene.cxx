@@ -235,7 +235,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
   auto cage = vtkSmartPointer<vtkUnstructuredGrid>::New();
   std::vector<Keyframe> keyframes;
   auto camera = vtkSmartPointer<vtkCamera>::New();
-  int width = 512, height = 512, subdivision = 1;
+  int width = 512, height = 512, subdivision = 1, widenedSearch = 2;
   double focalDistance = 0.0;
   double background[3] = { 0.0, 0.0, 0.0 };
   try
@@ -415,6 +415,10 @@ bool vtkLightFieldScene::Read(const char* fileName)
             "expected an integer in [1, 1024] or \"auto\", found " + lfd::io::Describe(*v));
         }
       }
+      if (const Json* v = lfd::io::FindMember(*render, "render", "widened_search"))
+      {
+        widenedSearch = static_cast<int>(lfd::io::GetInteger(*v, "render.widened_search", 0, 64));
+      }
       if (const Json* v = lfd::io::FindMember(*render, "render", "background"))
       {
         const std::vector<double> rgb = lfd::io::GetNumbers(*v, "render.background", 3);
@@ -444,6 +448,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
   this->Height = height;
   this->FocalDistance = focalDistance;
   this->Subdivision = subdivision;
+  this->WidenedSearch = widenedSearch;
   std::copy(background, background + 3, this->Background);
   this->Modified();
   return true;
@@ -550,6 +555,7 @@ bool vtkLightFieldScene::Write(const char* fileName)
   {
     render["subdivision"] = this->Subdivision;
   }
+  render["widened_search"] = this->WidenedSearch;
   render["background"] = VectorToJson(this->Background);
   document["render"] = render;
   if (!std::isfinite(this->FocalDistance))
@@ -603,6 +609,7 @@ void vtkLightFieldScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
   os << indent << "Subdivision: " << this->Subdivision << (this->Subdivision == 0 ? " (auto)" : "")
      << "\n";
+  os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";
   os << indent << "Background: (" << this->Background[0] << ", " << this->Background[1] << ", "
      << this->Background[2] << ")\n";
   os << indent << "ErrorMessage: "

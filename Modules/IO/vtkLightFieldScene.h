@@ -20,8 +20,9 @@
  *   degrees) and the image Width x Height (default 512 x 512, 30 degrees).
  * - Render settings: FocalDistance (default 0), Subdivision (k x k x k
  *   sub-boxes per box, >= 1, default 1; the string "auto" is stored as 0,
- *   see GetSubdivisionAuto()) and Background (RGB, each in [0, 1], default
- *   black).
+ *   see GetSubdivisionAuto()), WidenedSearch (views searched on each side
+ *   for regions a deformation uncovers, >= 0, default 2, 0 = off) and
+ *   Background (RGB, each in [0, 1], default black).
  *
  * Read() validates the whole file before changing anything and returns false
  * with one line in GetErrorMessage() naming the file and the field: malformed
@@ -157,6 +158,16 @@ public:
 
   ///@{
   /**
+   * Widened camera search of the renderer (paper Sec. 8, see
+   * vtkLightFieldRenderer::SetWidenedSearch): views tried on each side for
+   * regions a deformation uncovers; 0 turns it off. Default 2.
+   */
+  vtkSetClampMacro(WidenedSearch, int, 0, 64);
+  vtkGetMacro(WidenedSearch, int);
+  ///@}
+
+  ///@{
+  /**
    * Background colour, RGB in [0, 1] (default black).
    */
   vtkSetVector3Macro(Background, double);
@@ -173,6 +184,7 @@ protected:
   int Height = 512;
   double FocalDistance = 0.0;
   int Subdivision = 1;
+  int WidenedSearch = 2;
   double Background[3] = { 0.0, 0.0, 0.0 };
 
 private:

@@ -174,6 +174,14 @@ with open(one_box, "w") as f:
                "cage": {"rest_points": [p for layer in layers for p in layer],
                         "boxes": [{"corners": list(range(0, 8)), "label": 1}]}}, f)
 expect_error(["split", "check", split_lf, "--scene", one_box], "outside their boxes")
+unlabelled = os.path.join(WORK, "unlabelled.lf")
+shutil.copytree(projected, unlabelled)
+with open(os.path.join(unlabelled, "lightfield.json")) as f:
+    manifest = json.load(f)
+del manifest["passes"]["label"]
+with open(os.path.join(unlabelled, "lightfield.json"), "w") as f:
+    json.dump(manifest, f)
+expect_error(["split", "check", unlabelled, "--scene", boxes], "unlabelled.lf", "no Label pass")
 code, out, err = lfd("split", "scanline", projected, "--rows", "20,40", "--labels", "3,1,2",
                      "--out", os.path.join(WORK, "sphere_rows.lf"))
 rows = []

@@ -106,6 +106,7 @@ int TestLightFieldScene(int, char*[])
   scene->SetHeight(360);
   scene->SetFocalDistance(0.35);
   scene->SetSubdivision(3);
+  scene->SetWidenedSearch(0);
   scene->SetBackground(0.25, 0.5, 1.0);
   Check(scene->Write(file.c_str()), "Write " + file);
   CheckEqual(lfdtest::CountEntries(folder, "scene.tmp-"), 0, "temporary files left");
@@ -152,6 +153,7 @@ int TestLightFieldScene(int, char*[])
   CheckEqual(read->GetHeight(), 360, "height");
   CheckEqual(read->GetFocalDistance(), 0.35, "focal distance");
   CheckEqual(read->GetSubdivision(), 3, "subdivision");
+  CheckEqual(read->GetWidenedSearch(), 0, "widened search");
   CheckEqual(read->GetBackground()[0], 0.25, "background red");
   CheckEqual(read->GetBackground()[2], 1.0, "background blue");
 
@@ -175,6 +177,7 @@ int TestLightFieldScene(int, char*[])
   CheckEqual(plain->GetHeight(), 512, "default height");
   CheckEqual(plain->GetCamera()->GetViewAngle(), 30.0, "default view angle");
   CheckEqual(plain->GetSubdivision(), 1, "default subdivision");
+  CheckEqual(plain->GetWidenedSearch(), 2, "default widened search");
   CheckEqual(plain->GetFocalDistance(), 0.0, "default focal distance");
 
   const std::string restOnly = folder + "/rest.json";

@@ -89,6 +89,9 @@ int TestLightFieldSceneErrors(int, char*[])
   expectFailure("NaN token",
     Scene(Cage("", Box), ", \"render\": {\"focal_distance\": NaN}"),
     { "not valid JSON", "line 3" });
+  expectFailure("widened search out of range",
+    Scene(Cage("", Box), ", \"render\": {\"widened_search\": -1}"),
+    { "\"render.widened_search\"", "[0, 64]" });
   expectFailure("subdivision 0",
     Scene(Cage("", Box), ", \"render\": {\"subdivision\": 0}"),
     { "\"render.subdivision\"", "[1, 1024]" });
