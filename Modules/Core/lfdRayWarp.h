@@ -314,7 +314,8 @@ inline int WarpRayThroughBox(const Hexahedron& rest,
   // Merge coincident hits; the point at tMin goes first unless a hit is there.
   Crossing merged[13];
   int m = 0;
-  if (std::isfinite(tMin) && (n == 0 || crossings[0].T > tMin + mergeT))
+  // (A point at tMin known to be outside starts no stretch that matters.)
+  if (!startsOutside && std::isfinite(tMin) && (n == 0 || crossings[0].T > tMin + mergeT))
   {
     merged[m++] = { tMin, glm::dvec3(0.5), false };
   }
