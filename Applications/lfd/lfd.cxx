@@ -1201,6 +1201,7 @@ struct SplitOptions
   std::vector<std::string> Paint;
   std::string Proxy = "auto";
   int Resolution = 128;
+  double Tolerance = 1.5;
   double Threshold = -1.0;
   int Morphology = 1;
   std::string Scene;
@@ -1362,6 +1363,7 @@ int SplitPropagate(const SplitOptions& options)
       : options.Proxy == "hull"                  ? vtkLabelPropagation::VISUAL_HULL
                                                  : vtkLabelPropagation::AUTOMATIC);
   propagation->SetResolution(options.Resolution);
+  propagation->SetSilhouetteTolerance(options.Tolerance);
   if (options.Threshold >= 0.0)
   {
     propagation->SetThreshold(options.Threshold);
@@ -1607,6 +1609,12 @@ int main(int argc, char* argv[])
   splitPropagate
     ->add_option("--resolution", split.Resolution, "proxy voxels along its longest side")
     ->check(CLI::Range(8, 1024))
+    ->capture_default_str();
+  splitPropagate
+    ->add_option("--tolerance",
+      split.Tolerance,
+      "pixels of silhouette or calibration error the visual hull tolerates")
+    ->check(CLI::Range(0.0, 100.0))
     ->capture_default_str();
   splitPropagate->add_option(
     "--threshold", split.Threshold, "silhouette brightness threshold (default 20)");

@@ -88,9 +88,13 @@ struct Silhouettes
 };
 
 // Keeps the voxels of `grid` that overlap every silhouette: the projected
-// centre lies within the voxel's projected half-diagonal of it, so that
-// parts thinner than a voxel (fins, thin columns) survive the carve.
-std::vector<unsigned char> Carve(const VoxelGrid& grid, vtkCameraRig* rig, const Silhouettes& s)
+// centre lies within the voxel's projected half-diagonal (plus `slack`
+// pixels) of it, so that parts thinner than a voxel (fins, thin columns)
+// and small calibration errors survive the carve.
+std::vector<unsigned char> Carve(const VoxelGrid& grid,
+  vtkCameraRig* rig,
+  const Silhouettes& s,
+  double slack)
 {
   std::vector<unsigned char> occupied(grid.Voxels(), 0);
   const int views = rig->GetNumberOfViews();
@@ -107,7 +111,9 @@ std::vector<unsigned char> Carve(const VoxelGrid& grid, vtkCameraRig* rig, const
           const lfd::PinholeCamera& camera = rig->GetCamera(view);
           glm::dvec2 pixel;
           inside = camera.Project(X, pixel) &&
-            s.Near(view, pixel, 0.866 * grid.Size * camera.K[0][0] / (camera.R * X + camera.t).z);
+            s.Near(view,
+              pixel,
+              0.866 * grid.Size * camera.K[0][0] / (camera.R * X + camera.t).z + slack);
         }
         occupied[v] = inside ? 1 : 0;
       }
@@ -339,7 +345,8 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
       reach = std::max(reach, glm::length(rig->GetCamera(view).Center() - centre));
     }
     const VoxelGrid coarse(centre - reach, centre + reach, 64);
-    if (!OccupiedBounds(coarse, Carve(coarse, rig, silhouettes), 1.0, low, high))
+    if (!OccupiedBounds(
+          coarse, Carve(coarse, rig, silhouettes, this->SilhouetteTolerance), 1.0, low, high))
     {
       error = "vtkLabelPropagation: the visual hull is empty (no point projects inside the "
               "silhouette in every view; check Threshold and the calibration)";
@@ -369,7 +376,7 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
   }
   else
   {
-    occupied = Carve(grid, rig, silhouettes);
+    occupied = Carve(grid, rig, silhouettes, this->SilhouetteTolerance);
   }
   this->NumberOfProxyVoxels = std::count(occupied.begin(), occupied.end(), 1);
   if (this->NumberOfProxyVoxels == 0)
@@ -514,5 +521,6 @@ void vtkLabelPropagation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Proxy: " << this->Proxy << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "Threshold: " << this->Threshold << "\n";
+  os << indent << "SilhouetteTolerance: " << this->SilhouetteTolerance << "\n";
   os << indent << "NumberOfProxyVoxels: " << this->NumberOfProxyVoxels << "\n";
 }
