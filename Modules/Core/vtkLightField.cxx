@@ -186,8 +186,21 @@ vtkIdType vtkLightField::GetPointIndex(int view, int x, int y)
 }
 
 //------------------------------------------------------------------------------
+void vtkLightField::Initialize()
+{
+  this->Superclass::Initialize();
+  vtkNew<vtkCameraRig> rig;
+  this->SetRig(rig);
+  vtkNew<vtkCameraRig> projectors;
+  this->SetProjectors(projectors);
+  this->SetProjectorMasks(nullptr);
+  this->SetProvenance(nullptr);
+}
+
+//------------------------------------------------------------------------------
 void vtkLightField::ShallowCopy(vtkDataObject* source)
 {
+  this->Superclass::ShallowCopy(source);
   if (vtkLightField* lightField = vtkLightField::SafeDownCast(source))
   {
     this->SetRig(lightField->GetRig());
@@ -195,12 +208,12 @@ void vtkLightField::ShallowCopy(vtkDataObject* source)
     this->SetProjectorMasks(lightField->GetProjectorMasks());
     this->SetProvenance(lightField->GetProvenance());
   }
-  this->Superclass::ShallowCopy(source);
 }
 
 //------------------------------------------------------------------------------
 void vtkLightField::DeepCopy(vtkDataObject* source)
 {
+  this->Superclass::DeepCopy(source);
   if (vtkLightField* lightField = vtkLightField::SafeDownCast(source))
   {
     vtkNew<vtkCameraRig> rig;
@@ -218,7 +231,6 @@ void vtkLightField::DeepCopy(vtkDataObject* source)
     this->SetProjectorMasks(masks);
     this->SetProvenance(lightField->GetProvenance());
   }
-  this->Superclass::DeepCopy(source);
 }
 
 //------------------------------------------------------------------------------

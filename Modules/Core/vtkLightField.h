@@ -160,6 +160,13 @@ public:
   vtkGetStringMacro(Provenance);
   ///@}
 
+  /**
+   * Empties the light field completely: no passes, an empty rig, no
+   * projectors or masks, no provenance (vtkImageData::Initialize() alone
+   * would keep them).
+   */
+  void Initialize() override;
+
   ///@{
   /**
    * Shallow copies share the rig, the projectors and their masks; deep

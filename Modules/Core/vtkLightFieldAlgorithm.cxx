@@ -136,9 +136,6 @@ void vtkLightFieldAlgorithm::Fail(vtkLightField* output,
   if (output)
   {
     output->Initialize();
-    vtkNew<vtkCameraRig> rig;
-    output->SetRig(rig);
-    output->SetProvenance(nullptr);
   }
   this->SetErrorCode(errorCode);
   this->ErrorMessage = message;

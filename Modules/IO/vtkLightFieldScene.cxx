@@ -114,6 +114,7 @@ void vtkLightFieldScene::Initialize()
   this->Height = 512;
   this->FocalDistance = 0.0;
   this->Subdivision = 1;
+  this->WidenedSearch = 2;
   this->Background[0] = this->Background[1] = this->Background[2] = 0.0;
   this->Modified();
 }
