@@ -64,22 +64,22 @@ bool vtkLabelPalette::Build(vtkUnsignedCharArray* palette)
   }
   // What the camera sees of each candidate, and all pairwise distances.
   const double* m = this->ColourResponse;
-  std::vector<glm::dvec3> seen(n);
+  std::vector<glm::dvec3> lab(n);
   for (int i = 0; i < n; ++i)
   {
     const glm::dvec3& c = candidates[i];
-    seen[i] = glm::clamp(glm::dvec3(m[0] * c.x + m[1] * c.y + m[2] * c.z,
-                           m[3] * c.x + m[4] * c.y + m[5] * c.z,
-                           m[6] * c.x + m[7] * c.y + m[8] * c.z),
+    lab[i] = lfd::SrgbToLab(glm::clamp(glm::dvec3(m[0] * c.x + m[1] * c.y + m[2] * c.z,
+                                         m[3] * c.x + m[4] * c.y + m[5] * c.z,
+                                         m[6] * c.x + m[7] * c.y + m[8] * c.z),
       0.0,
-      255.0);
+      255.0));
   }
   std::vector<double> distance(static_cast<size_t>(n) * n, 0.0);
   for (int a = 0; a < n; ++a)
   {
-    for (int b = 0; b < n; ++b)
+    for (int b = a + 1; b < n; ++b)
     {
-      distance[a * n + b] = lfd::ColourDistance(seen[a], seen[b]);
+      distance[a * n + b] = distance[b * n + a] = glm::length(lab[a] - lab[b]);
     }
   }
 

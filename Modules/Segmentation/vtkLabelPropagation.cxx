@@ -280,12 +280,23 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
   silhouettes.Width = width;
   silhouettes.Height = height;
   silhouettes.Mask.assign(pixels * views, 0);
+  // Per view: the camera centre and R^T K^-1, the pixel-to-direction map.
+  std::vector<glm::dvec3> centres(views);
+  std::vector<glm::dmat3> toWorld(views);
+  for (int view = 0; view < views; ++view)
+  {
+    centres[view] = rig->GetCamera(view).Center();
+    toWorld[view] = rig->GetCamera(view).PixelToDirection();
+  }
+  auto directionOf = [&](int view, vtkIdType p)
+  {
+    return toWorld[view] *
+      glm::dvec3(static_cast<double>(p % width), height - 1.0 - p / width, 1.0);
+  };
   auto pointOf = [&](int view, vtkIdType p)
   {
-    const lfd::PinholeCamera& camera = rig->GetCamera(view);
-    const glm::dvec3 pixel(static_cast<double>(p % width), height - 1.0 - p / width, 1.0);
-    return camera.Center() +
-      static_cast<double>(depth->GetValue(view * pixels + p)) * (camera.PixelToDirection() * pixel);
+    return centres[view] +
+      static_cast<double>(depth->GetValue(view * pixels + p)) * directionOf(view, p);
   };
   glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-low);
   if (useDepth)
@@ -337,12 +348,12 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
     glm::dvec3 centre(0.0);
     for (int view = 0; view < views; ++view)
     {
-      centre += rig->GetCamera(view).Center() / static_cast<double>(views);
+      centre += centres[view] / static_cast<double>(views);
     }
     double reach = 0.0;
     for (int view = 0; view < views; ++view)
     {
-      reach = std::max(reach, glm::length(rig->GetCamera(view).Center() - centre));
+      reach = std::max(reach, glm::length(centres[view] - centre));
     }
     const VoxelGrid coarse(centre - reach, centre + reach, 64);
     if (!OccupiedBounds(
@@ -355,22 +366,40 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
   }
   this->UpdateProgress(0.1);
   const VoxelGrid grid(low, high, this->Resolution);
+  // The voxel each object pixel sees: with depth, the one holding its
+  // surface point (these voxels are the proxy); for a hull, the first
+  // occupied one along its ray (visibility), once the hull is carved.
+  std::vector<vtkIdType> seen(pixels * views, -1);
+  auto findSeen = [&](bool march, const std::vector<unsigned char>& occupied)
+  {
+    vtkSMPTools::For(0,
+      views,
+      [&](int first, int last)
+      {
+        for (int view = first; view < last; ++view)
+        {
+          for (vtkIdType p = 0; p < pixels; ++p)
+          {
+            const vtkIdType index = view * pixels + p;
+            if (silhouettes.Mask[index])
+            {
+              seen[index] = march ? March(grid, occupied, centres[view], directionOf(view, p))
+                                  : grid.Find(pointOf(view, p));
+            }
+          }
+        }
+      });
+  };
   std::vector<unsigned char> occupied;
   if (useDepth)
   {
+    findSeen(false, occupied);
     occupied.assign(grid.Voxels(), 0);
-    for (int view = 0; view < views; ++view)
+    for (vtkIdType v : seen)
     {
-      for (vtkIdType p = 0; p < pixels; ++p)
+      if (v >= 0)
       {
-        if (silhouettes.Mask[view * pixels + p])
-        {
-          const vtkIdType v = grid.Find(pointOf(view, p));
-          if (v >= 0)
-          {
-            occupied[v] = 1;
-          }
-        }
+        occupied[v] = 1;
       }
     }
   }
@@ -386,35 +415,10 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
   }
   this->UpdateProgress(0.3);
 
-  // The voxel each object pixel sees (visibility: the first along its ray).
-  std::vector<vtkIdType> seen(pixels * views, -1);
-  vtkSMPTools::For(0,
-    views,
-    [&](int first, int last)
-    {
-      for (int view = first; view < last; ++view)
-      {
-        const lfd::PinholeCamera& camera = rig->GetCamera(view);
-        const glm::dmat3 toWorld = camera.PixelToDirection();
-        for (vtkIdType p = 0; p < pixels; ++p)
-        {
-          const vtkIdType index = view * pixels + p;
-          if (!silhouettes.Mask[index])
-          {
-            continue;
-          }
-          if (useDepth)
-          {
-            seen[index] = grid.Find(pointOf(view, p));
-          }
-          else
-          {
-            const glm::dvec3 pixel(static_cast<double>(p % width), height - 1.0 - p / width, 1.0);
-            seen[index] = March(grid, occupied, camera.Center(), toWorld * pixel);
-          }
-        }
-      }
-    });
+  if (!useDepth)
+  {
+    findSeen(true, occupied);
+  }
   this->UpdateProgress(0.6);
 
   // Votes of the painted pixels, then the nearest voted voxel for all.

@@ -92,12 +92,13 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input,
   const double separation = vtkLabelPalette::GetSeparation(palette);
   const double accepted =
     labels > 1 ? this->RejectionFactor * 0.5 * separation : std::numeric_limits<double>::infinity();
-  std::vector<glm::dvec3> colours(labels + 1);
+  std::vector<glm::dvec3> colours(labels + 1), coloursLab(labels + 1);
   for (int label = 1; label <= labels; ++label)
   {
     colours[label] = glm::dvec3(palette->GetTypedComponent(label, 0),
       palette->GetTypedComponent(label, 1),
       palette->GetTypedComponent(label, 2));
+    coloursLab[label] = lfd::SrgbToLab(colours[label]);
   }
 
   unsigned char* label =
@@ -141,15 +142,24 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input,
           double d1 = std::numeric_limits<double>::infinity();
           double d2 = d1;
           int nearest = 0;
+          // With every channel bright, the pixel's CIELAB is the same for
+          // every candidate; otherwise its dark channels take each
+          // candidate's own value, so they do not vote.
+          const bool allBright = bright[0] && bright[1] && bright[2];
+          const glm::dvec3 seenLab = allBright ? lfd::SrgbToLab(normalised) : glm::dvec3(0.0);
           for (int candidate = 1; candidate <= labels; ++candidate)
           {
-            // Dark channels take the candidate's own value: they do not vote.
-            glm::dvec3 seen = normalised;
-            for (int c = 0; c < 3; ++c)
+            glm::dvec3 lab = seenLab;
+            if (!allBright)
             {
-              seen[c] = bright[c] ? seen[c] : colours[candidate][c];
+              glm::dvec3 seen = normalised;
+              for (int c = 0; c < 3; ++c)
+              {
+                seen[c] = bright[c] ? seen[c] : colours[candidate][c];
+              }
+              lab = lfd::SrgbToLab(seen);
             }
-            const double d = lfd::ColourDistance(seen, colours[candidate]);
+            const double d = glm::length(lab - coloursLab[candidate]);
             if (d < d1)
             {
               d2 = d1;

@@ -691,6 +691,7 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
   }
   std::vector<float> viewDepth(project && !depth ? pixels : 0);
   vtkNew<vtkUnsignedCharArray> albedo;
+  std::vector<glm::dvec3> surface(project ? pixels : 0);
   std::vector<double> codedSum(project ? 3 * pixels : 0), floodSum(project ? 3 * pixels : 0);
   std::mt19937 random(static_cast<unsigned int>(this->NoiseSeed));
   std::normal_distribution<double> noise(0.0, this->ProjectorNoise);
@@ -736,21 +737,30 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
 
     if (project)
     {
-      // The albedo (unlit) for the room light, then each projector's
-      // Lambertian irradiance x albedo, masked by its visibility.
+      // The albedo (unlit) for the room light, if any, then each
+      // projector's Lambertian irradiance x albedo, masked by its visibility.
       shaded->VisibilityOn();
       flat->VisibilityOff();
       material->SetAmbient(0.0);
       material->SetDiffuse(1.0);
-      material->LightingOff();
-      window->Render();
-      window->GetPixelData(0, 0, width - 1, height - 1, 0, albedo, 0);
-      material->LightingOn();
+      if (this->ProjectorAmbient > 0.0)
+      {
+        material->LightingOff();
+        window->Render();
+        window->GetPixelData(0, 0, width - 1, height - 1, 0, albedo, 0);
+        material->LightingOn();
+      }
       std::fill(codedSum.begin(), codedSum.end(), 0.0);
       std::fill(floodSum.begin(), floodSum.end(), 0.0);
+      // The surface point each pixel sees, from the depth.
       const lfd::PinholeCamera& viewCamera = rig->GetCamera(view);
       const glm::dmat3 toWorld = viewCamera.PixelToDirection();
-      const glm::dvec3 origin = viewCamera.Center();
+      for (vtkIdType q = 0; q < pixels; ++q)
+      {
+        const glm::dvec3 pixel(
+          static_cast<double>(q % width), static_cast<double>(height - 1 - q / width), 1.0);
+        surface[q] = viewCamera.Center() + static_cast<double>(z[q]) * (toWorld * pixel);
+      }
       for (int p = 0; p < projectorCount; ++p)
       {
         const lfd::PinholeCamera& projector = projectors->GetCamera(p);
@@ -768,10 +778,7 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
           {
             continue;
           }
-          const double x = static_cast<double>(q % width);
-          const double y = static_cast<double>(height - 1 - q / width);
-          const glm::dvec3 X =
-            origin + static_cast<double>(z[q]) * (toWorld * glm::dvec3(x, y, 1.0));
+          const glm::dvec3& X = surface[q];
           glm::dvec2 pixel;
           if (!projector.Project(X, pixel))
           {
@@ -811,7 +818,8 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
       };
       for (vtkIdType i = 0; i < 3 * pixels; ++i)
       {
-        const double room = this->ProjectorAmbient * albedo->GetValue(i);
+        const double room =
+          this->ProjectorAmbient > 0.0 ? this->ProjectorAmbient * albedo->GetValue(i) : 0.0;
         coded[3 * slice + i] = expose(codedSum[i] + room);
         flood[3 * slice + i] = expose(floodSum[i] + room);
       }
