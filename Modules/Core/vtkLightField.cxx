@@ -149,6 +149,42 @@ vtkDataArray* vtkLightField::GetPass(int pass)
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightField::HasLabel(int label)
+{
+  vtkDataArray* labels = this->GetPass(LABEL);
+  if (!labels || label < 0 || label > 255)
+  {
+    return false;
+  }
+  if (this->LabelsPresentArray != labels || this->LabelsPresentTime < labels->GetMTime())
+  {
+    this->LabelsPresent.assign(256, false);
+    if (auto* bytes = vtkUnsignedCharArray::SafeDownCast(labels))
+    {
+      const unsigned char* values = bytes->GetPointer(0);
+      for (vtkIdType i = 0; i < bytes->GetNumberOfValues(); ++i)
+      {
+        this->LabelsPresent[values[i]] = true;
+      }
+    }
+    else
+    {
+      for (vtkIdType i = 0; i < labels->GetNumberOfTuples(); ++i)
+      {
+        const double value = labels->GetComponent(i, 0);
+        if (value >= 0.0 && value <= 255.0)
+        {
+          this->LabelsPresent[static_cast<int>(value)] = true;
+        }
+      }
+    }
+    this->LabelsPresentArray = labels;
+    this->LabelsPresentTime = labels->GetMTime();
+  }
+  return this->LabelsPresent[label];
+}
+
+//------------------------------------------------------------------------------
 vtkDataArray* vtkLightField::AllocatePass(int pass)
 {
   const char* name = GetPassName(pass);

@@ -40,6 +40,8 @@
 #include "lfdCoreModule.h" // For export macro
 #include "vtkImageData.h"
 
+#include <vector> // For std::vector
+
 class vtkCameraRig;
 class vtkDataArray;
 class vtkInformation;
@@ -108,6 +110,14 @@ public:
    * The array of a pass, or nullptr when the light field does not hold it.
    */
   vtkDataArray* GetPass(int pass);
+
+  /**
+   * Whether the Label pass holds `label` anywhere (false without a Label
+   * pass). The scan is cached until the pass array is replaced or
+   * modified: after editing its values in place, call its Modified(), as
+   * for vtkDataArray::GetRange().
+   */
+  bool HasLabel(int label);
 
   /**
    * Creates (or replaces) the zero-filled array of a pass, sized to the
@@ -192,6 +202,12 @@ protected:
   vtkCameraRig* Projectors = nullptr;
   vtkImageData* ProjectorMasks = nullptr;
   char* Provenance = nullptr;
+
+  // The labels the Label pass holds (index = label), for the array and
+  // modification time they were counted from.
+  std::vector<bool> LabelsPresent;
+  vtkDataArray* LabelsPresentArray = nullptr;
+  vtkMTimeType LabelsPresentTime = 0;
 
 private:
   vtkLightField(const vtkLightField&) = delete;

@@ -429,34 +429,9 @@ bool vtkDeformationCage::Validate(vtkLightField* lightField)
       "cage: the cell array \"Label\" is missing or does not hold one value per box");
   }
 
-  // Which labels the light field's Label pass holds: a box moves the rays of
-  // its label only (paper Sec. 4), so a label that never occurs is an error.
-  std::array<bool, 256> labelPresent{};
-  vtkDataArray* labelPass = lightField ? lightField->GetPass(vtkLightField::LABEL) : nullptr;
-  if (labelPass)
-  {
-    if (auto* bytes = vtkUnsignedCharArray::SafeDownCast(labelPass))
-    {
-      const unsigned char* values = bytes->GetPointer(0);
-      const vtkIdType count = bytes->GetNumberOfValues();
-      for (vtkIdType i = 0; i < count; ++i)
-      {
-        labelPresent[values[i]] = true;
-      }
-    }
-    else
-    {
-      const vtkIdType count = labelPass->GetNumberOfTuples();
-      for (vtkIdType i = 0; i < count; ++i)
-      {
-        const double value = labelPass->GetComponent(i, 0);
-        if (value >= 0.0 && value <= 255.0)
-        {
-          labelPresent[static_cast<int>(value)] = true;
-        }
-      }
-    }
-  }
+  // A box moves the rays of its label only (paper Sec. 4), so a label the
+  // light field's Label pass never holds is an error.
+  const bool checkLabels = lightField && lightField->GetPass(vtkLightField::LABEL);
 
   std::vector<lfd::Hexahedron> restBoxes(numberOfBoxes);
   for (vtkIdType b = 0; b < numberOfBoxes; ++b)
@@ -490,7 +465,7 @@ bool vtkDeformationCage::Validate(vtkLightField* lightField)
     {
       return this->Fail(name.str() + ": label out of range [1, 255]");
     }
-    if (labelPass && !labelPresent[label])
+    if (checkLabels && !lightField->HasLabel(label))
     {
       return this->Fail(name.str() + ": the light field's Label pass has no sub-light field " +
         std::to_string(label));

@@ -596,21 +596,10 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   bool allOwned = false;
   if (useLabels && !boxes.empty())
   {
-    if (this->LabelsPresentArray != labels || this->LabelsPresentTime < labels->GetMTime())
-    {
-      this->LabelsPresent.assign(256, false);
-      const std::uint8_t* values = labels->GetPointer(0);
-      for (vtkIdType i = 0; i < labels->GetNumberOfValues(); ++i)
-      {
-        this->LabelsPresent[values[i]] = true;
-      }
-      this->LabelsPresentArray = labels;
-      this->LabelsPresentTime = labels->GetMTime();
-    }
     allOwned = true;
     for (int label = 1; label < 256; ++label)
     {
-      allOwned = allOwned && (!this->LabelsPresent[label] || owned[label]);
+      allOwned = allOwned && (owned[label] || !input->HasLabel(label));
     }
   }
   RenderRows functor{ sampler,

@@ -190,12 +190,6 @@ protected:
   double SubdivisionTolerance = 1e-3;
   std::vector<int> ExcludedViews;
 
-  // The labels the input's Label pass holds (index = label), cached for the
-  // array and modification time they were counted from.
-  std::vector<bool> LabelsPresent;
-  const void* LabelsPresentArray = nullptr;
-  vtkMTimeType LabelsPresentTime = 0;
-
 private:
   vtkLightFieldRenderer(const vtkLightFieldRenderer&) = delete;
 

@@ -198,6 +198,7 @@ int TestDeformationCageValidation(int, char*[])
       lightField,
       { "box 1 (label 2)", "no sub-light field 2" });
     labels->SetComponent(6, 0, 2);
+    labels->Modified(); // edited in place: as for GetRange(), say so
     ok &= ExpectValid("labels 1 and 2 in the Label pass", TwoBoxes(1.0), lightField);
   }
 
