@@ -326,9 +326,9 @@ struct LightFieldSampler
    * part where the ray's own part should be (it was hidden behind that part
    * before the deformation). Points p along the rest-space segment [a, b],
    * front to back (`steps` of them), are tried in the `reach` views on each
-   * side of the ray's azimuth in the row nearest p's height, stepping
-   * outwards. Each view tells what p projects onto: `label` (a vote), another
-   * part (p is hidden from that view: no say) or background (p is in the
+   * side of the ray's azimuth, stepping outwards, in the row nearest the
+   * height where the segment's line enters the rig cylinder. Each view tells what p projects onto:
+   * `label` (a vote), another part (p is hidden from that view: no say) or background (p is in the
    * air: p is refused, as a visual hull carves it). Of the points with two
    * votes or more and no refusal, the most photo-consistent (most votes,
    * then the smallest spread of the voting colours) gives the pixel: the

@@ -344,7 +344,8 @@ inline int WarpRayThroughBox(const Hexahedron& rest,
       // fallback when the close start fails).
       glm::dvec3 uvw = a.OnFace ? 0.5 * (a.Uvw + b.Uvw) : b.Uvw;
       const glm::dvec3 mid = o + (0.5 * (a.T + b.T)) * d;
-      const bool inside = (startsOutside && m == 2 && a.OnFace && b.OnFace) ||
+      // From an outside eye every crossing is on a face (no tMin point).
+      const bool inside = (startsOutside && m == 2) ||
         (InvertTrilinear(deformed, mid, uvw) &&
           glm::all(glm::greaterThanEqual(uvw, glm::dvec3(-1e-9))) &&
           glm::all(glm::lessThanEqual(uvw, glm::dvec3(1.0 + 1e-9)))) ||

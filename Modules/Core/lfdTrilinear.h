@@ -40,6 +40,36 @@ struct Hexahedron
   glm::dvec3 Corners[8];
 };
 
+/// The box of 24 values x0 y0 z0 x1 y1 z1 ... (VTK corner order), as
+/// vtkDeformationCage::GetRestCorners() gives them.
+inline Hexahedron HexahedronFromArray(const double corners[24])
+{
+  Hexahedron box;
+  for (int i = 0; i < 8; ++i)
+  {
+    box.Corners[i] = glm::dvec3(corners[3 * i], corners[3 * i + 1], corners[3 * i + 2]);
+  }
+  return box;
+}
+
+/// Axis-aligned bounds of a box: those of its corners (a trilinear box lies
+/// in their convex hull).
+struct AxisBounds
+{
+  glm::dvec3 Min, Max;
+};
+
+inline AxisBounds BoxBounds(const Hexahedron& box)
+{
+  AxisBounds bounds{ box.Corners[0], box.Corners[0] };
+  for (const glm::dvec3& c : box.Corners)
+  {
+    bounds.Min = glm::min(bounds.Min, c);
+    bounds.Max = glm::max(bounds.Max, c);
+  }
+  return bounds;
+}
+
 /// Eq. (2): the point of the box at parametric coordinates uvw.
 inline glm::dvec3 TrilinearMap(const Hexahedron& box, const glm::dvec3& uvw)
 {

@@ -146,20 +146,12 @@ void vtkCageTransform::InternalUpdate()
       continue;
     }
     vtkCageTransformBox box;
-    box.Moved = false;
-    for (int i = 0; i < 8; ++i)
-    {
-      box.Rest.Corners[i] = glm::dvec3(rest[3 * i], rest[3 * i + 1], rest[3 * i + 2]);
-      box.Deformed.Corners[i] =
-        glm::dvec3(deformed[3 * i], deformed[3 * i + 1], deformed[3 * i + 2]);
-      box.Moved = box.Moved || box.Rest.Corners[i] != box.Deformed.Corners[i];
-    }
-    box.RestMin = box.RestMax = box.Rest.Corners[0];
-    for (const glm::dvec3& c : box.Rest.Corners)
-    {
-      box.RestMin = glm::min(box.RestMin, c);
-      box.RestMax = glm::max(box.RestMax, c);
-    }
+    box.Rest = lfd::HexahedronFromArray(rest);
+    box.Deformed = lfd::HexahedronFromArray(deformed);
+    box.Moved = !std::equal(rest, rest + 24, deformed);
+    const lfd::AxisBounds bounds = lfd::BoxBounds(box.Rest);
+    box.RestMin = bounds.Min;
+    box.RestMax = bounds.Max;
     // lfd::Contains accepts points up to 1e-9 (parametric) outside the box.
     const glm::dvec3 slack(1e-8 * lfd::BoxSize(box.Rest));
     box.RestMin -= slack;

@@ -24,16 +24,6 @@ namespace
 constexpr const char* RestPositionName = "RestPosition";
 constexpr const char* LabelName = "Label";
 
-lfd::Hexahedron ToHexahedron(const double corners[24])
-{
-  lfd::Hexahedron box;
-  for (int i = 0; i < 8; ++i)
-  {
-    box.Corners[i] = glm::dvec3(corners[3 * i], corners[3 * i + 1], corners[3 * i + 2]);
-  }
-  return box;
-}
-
 std::string FormatPoint(const glm::dvec3& p)
 {
   std::ostringstream text;
@@ -115,23 +105,7 @@ std::vector<glm::dvec3> InteriorSamples(const lfd::Hexahedron& box)
   return samples;
 }
 
-struct AxisBounds
-{
-  glm::dvec3 Min, Max;
-};
-
-AxisBounds BoxBounds(const lfd::Hexahedron& box)
-{
-  AxisBounds bounds{ box.Corners[0], box.Corners[0] };
-  for (const glm::dvec3& c : box.Corners)
-  {
-    bounds.Min = glm::min(bounds.Min, c);
-    bounds.Max = glm::max(bounds.Max, c);
-  }
-  return bounds;
-}
-
-bool BoundsOverlap(const AxisBounds& a, const AxisBounds& b)
+bool BoundsOverlap(const lfd::AxisBounds& a, const lfd::AxisBounds& b)
 {
   return a.Min.x < b.Max.x && b.Min.x < a.Max.x && a.Min.y < b.Max.y && b.Min.y < a.Max.y &&
     a.Min.z < b.Max.z && b.Min.z < a.Max.z;
@@ -473,14 +447,14 @@ bool vtkDeformationCage::Validate(vtkLightField* lightField)
 
     double corners[24];
     this->GetRestCorners(b, corners);
-    restBoxes[b] = ToHexahedron(corners);
+    restBoxes[b] = lfd::HexahedronFromArray(corners);
     std::string fold = FindFold(restBoxes[b]);
     if (!fold.empty())
     {
       return this->Fail(name.str() + ": the rest box " + fold);
     }
     this->GetDeformedCorners(b, corners);
-    fold = FindFold(ToHexahedron(corners));
+    fold = FindFold(lfd::HexahedronFromArray(corners));
     if (!fold.empty())
     {
       return this->Fail(name.str() + ": the deformed box " + fold);
@@ -488,11 +462,11 @@ bool vtkDeformationCage::Validate(vtkLightField* lightField)
   }
 
   // Rest boxes must not overlap: a rest-space point belongs to one part.
-  std::vector<AxisBounds> bounds(numberOfBoxes);
+  std::vector<lfd::AxisBounds> bounds(numberOfBoxes);
   std::vector<std::vector<glm::dvec3>> samples(numberOfBoxes);
   for (vtkIdType b = 0; b < numberOfBoxes; ++b)
   {
-    bounds[b] = BoxBounds(restBoxes[b]);
+    bounds[b] = lfd::BoxBounds(restBoxes[b]);
     samples[b] = InteriorSamples(restBoxes[b]);
   }
   for (vtkIdType a = 0; a < numberOfBoxes; ++a)

@@ -250,11 +250,7 @@ int vtkLatticeCageFilter::RequestData(vtkInformation*,
       vtkErrorMacro("Box " << b << " of the input cage is not a hexahedron of 8 existing points.");
       return 0;
     }
-    lfd::Hexahedron box;
-    for (int c = 0; c < 8; ++c)
-    {
-      box.Corners[c] = glm::dvec3(corners[3 * c], corners[3 * c + 1], corners[3 * c + 2]);
-    }
+    const lfd::Hexahedron box = lfd::HexahedronFromArray(corners);
     vtkIdType npts;
     const vtkIdType* ids;
     cage->GetCellPoints(b, npts, ids);

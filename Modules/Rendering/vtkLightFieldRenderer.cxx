@@ -9,6 +9,7 @@
 #include "vtkCameraRig.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDeformationCage.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -41,8 +42,8 @@ struct CageBox
   int Label = 0;
   glm::dvec3 Low{ 0.0 };
   glm::dvec3 High{ 0.0 };
-  bool EyeOutside = false; // the eye is outside the deformed box (set per frame)
   bool Moved = false;      // deformed differs from rest: it may uncover regions
+  bool EyeOutside = false; // the eye is outside the deformed box (set per frame)
 };
 
 /// Slab test of the line o + t d (t >= 0) against an axis-aligned box.
@@ -118,8 +119,7 @@ void Subdivide(const CageBox& box, int k, std::vector<CageBox>& boxes)
       {
         CageBox sub;
         sub.Label = box.Label;
-        sub.Low = glm::dvec3(std::numeric_limits<double>::infinity());
-        sub.High = -sub.Low;
+        sub.Moved = box.Moved;
         for (int c = 0; c < 8; ++c)
         {
           const glm::dvec3 uvw =
@@ -128,9 +128,10 @@ void Subdivide(const CageBox& box, int k, std::vector<CageBox>& boxes)
             static_cast<double>(k);
           sub.Rest.Corners[c] = lfd::TrilinearMap(box.Rest, uvw);
           sub.Deformed.Corners[c] = lfd::TrilinearMap(box.Deformed, uvw);
-          sub.Low = glm::min(sub.Low, sub.Deformed.Corners[c]);
-          sub.High = glm::max(sub.High, sub.Deformed.Corners[c]);
         }
+        const lfd::AxisBounds bounds = lfd::BoxBounds(sub.Deformed);
+        sub.Low = bounds.Min;
+        sub.High = bounds.Max;
         boxes.push_back(sub);
       }
     }
@@ -144,51 +145,35 @@ void Subdivide(const CageBox& box, int k, std::vector<CageBox>& boxes)
  * False (with an error on `self`) when the grid is malformed.
  */
 bool CollectBoxes(vtkObject* self,
-  vtkUnstructuredGrid* cage,
+  vtkDeformationCage* cage,
   int subdivision,
   double tolerance,
   std::vector<CageBox>& boxes)
 {
-  vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
-  vtkDataArray* labels = cage->GetCellData()->GetArray("Label");
-  if (!labels)
+  for (vtkIdType b = 0; b < cage->GetNumberOfBoxes(); ++b)
   {
-    vtkErrorWithObjectMacro(
-      self, "The cage has no cell array 'Label': every box needs the label of its part.");
-    return false;
-  }
-  for (vtkIdType cell = 0; cell < cage->GetNumberOfCells(); ++cell)
-  {
-    if (cage->GetCellType(cell) != VTK_HEXAHEDRON)
+    double rest[24], deformed[24];
+    if (!cage->GetRestCorners(b, rest) || !cage->GetDeformedCorners(b, deformed))
     {
-      vtkErrorWithObjectMacro(self, "Cage cell " << cell << " is not a hexahedron.");
+      vtkErrorWithObjectMacro(
+        self, "Cage cell " << b << " is not a hexahedron of 8 existing points.");
       return false;
     }
     CageBox box;
-    box.Label = static_cast<int>(labels->GetComponent(cell, 0));
+    box.Label = cage->GetBoxLabel(b);
     if (box.Label < 1 || box.Label > 255)
     {
       vtkErrorWithObjectMacro(
-        self, "Box " << cell << " has label " << box.Label << "; labels are 1..255.");
+        self, "Box " << b << " has label " << box.Label << "; labels are 1..255.");
       return false;
     }
-    vtkIdType npts;
-    const vtkIdType* ids;
-    cage->GetCellPoints(cell, npts, ids);
-    box.Low = glm::dvec3(std::numeric_limits<double>::infinity());
-    box.High = -box.Low;
+    box.Rest = lfd::HexahedronFromArray(rest);
+    box.Deformed = lfd::HexahedronFromArray(deformed);
+    const double size = lfd::BoxSize(box.Rest);
     for (int c = 0; c < 8; ++c)
     {
-      double p[3], r[3];
-      cage->GetPoint(ids[c], p);
-      if (rest)
-      {
-        rest->GetTuple(ids[c], r);
-      }
-      box.Deformed.Corners[c] = glm::dvec3(p[0], p[1], p[2]);
-      box.Rest.Corners[c] = rest ? glm::dvec3(r[0], r[1], r[2]) : box.Deformed.Corners[c];
-      box.Low = glm::min(box.Low, box.Deformed.Corners[c]);
-      box.High = glm::max(box.High, box.Deformed.Corners[c]);
+      box.Moved =
+        box.Moved || glm::distance(box.Rest.Corners[c], box.Deformed.Corners[c]) > 1e-9 * size;
     }
     int k = subdivision;
     if (k == 0)
@@ -298,7 +283,8 @@ struct RenderRows
     // No segment matched. Where the nearby cameras saw another part in a
     // moved box, that part may have hidden this one before the deformation
     // uncovered it (paper Sec. 8): look in further cameras, front to back.
-    for (int k = 0; k<count&& this->WidenReach> 0; ++k)
+    const int widen = this->WidenReach > 0 ? count : 0;
+    for (int k = 0; k < widen; ++k)
     {
       const CageBox& box = this->Boxes[segments[k].Box];
       const lfd::WarpedSegment& segment = segments[k].Segment;
@@ -520,8 +506,20 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   }
   std::vector<CageBox> boxes;
   std::array<bool, 256> owned{};
-  if (vtkUnstructuredGrid* cage = vtkUnstructuredGrid::GetData(inputVector[1]))
+  if (vtkUnstructuredGrid* grid = vtkUnstructuredGrid::GetData(inputVector[1]))
   {
+    if (!grid->GetCellData()->GetArray("Label"))
+    {
+      vtkErrorMacro("The cage has no cell array 'Label': every box needs the label of its part.");
+      return 0;
+    }
+    // A plain grid (or one without rest positions: at rest) is read as a cage.
+    vtkSmartPointer<vtkDeformationCage> cage = vtkDeformationCage::SafeDownCast(grid);
+    if (!cage || !cage->GetRestPositions())
+    {
+      cage = vtkSmartPointer<vtkDeformationCage>::New();
+      cage->InitializeFromGrid(grid);
+    }
     if (!CollectBoxes(this, cage, this->Subdivision, this->SubdivisionTolerance, boxes))
     {
       return 0;
@@ -561,20 +559,13 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     std::copy(this->PinholeT, this->PinholeT + 3, t);
   }
   const lfd::PinholeCamera eye = lfd::PinholeCamera::FromRowMajor(K, R, t);
+  const glm::dvec3 eyeCenter = eye.Center();
   for (CageBox& box : boxes)
   {
     glm::dvec3 uvw(0.5);
-    const glm::dvec3 center = eye.Center();
-    const bool inBounds = glm::all(glm::greaterThanEqual(center, box.Low)) &&
-      glm::all(glm::lessThanEqual(center, box.High));
-    box.EyeOutside = !inBounds || !lfd::Contains(box.Deformed, center, uvw);
-    const double size = lfd::BoxSize(box.Rest);
-    box.Moved = false;
-    for (int c = 0; c < 8; ++c)
-    {
-      box.Moved =
-        box.Moved || glm::distance(box.Rest.Corners[c], box.Deformed.Corners[c]) > 1e-9 * size;
-    }
+    const bool inBounds = glm::all(glm::greaterThanEqual(eyeCenter, box.Low)) &&
+      glm::all(glm::lessThanEqual(eyeCenter, box.High));
+    box.EyeOutside = !inBounds || !lfd::Contains(box.Deformed, eyeCenter, uvw);
   }
 
   output->SetExtent(0, this->Width - 1, 0, this->Height - 1, 0, 0);
