@@ -189,6 +189,21 @@ vtkSmartPointer<vtkLightFieldScene> ReadScene(const std::string& path)
   return scene;
 }
 
+/// An image file (PNG, EXR, ... through OpenImageIO), rows bottom first.
+vtkSmartPointer<vtkImageData> ReadImage(const std::string& path)
+{
+  vtkNew<vtkImageFileReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (reader->GetErrorCode() != 0)
+  {
+    Fail(reader->GetErrorMessage());
+  }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->ShallowCopy(reader->GetOutput());
+  return image;
+}
+
 vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
 {
   vtkNew<vtkLightFieldReader> reader;
@@ -241,6 +256,18 @@ vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
   return cage;
 }
 
+/// The scene's view and render settings on a renderer or an evaluator.
+template<typename Target>
+void ApplySceneView(Target* target, vtkLightFieldScene* scene)
+{
+  target->SetCamera(scene->GetCamera());
+  target->SetWidth(scene->GetWidth());
+  target->SetHeight(scene->GetHeight());
+  target->SetFocalDistance(scene->GetFocalDistance());
+  target->SetSubdivision(scene->GetSubdivision()); // 0 = "auto" in all three
+  target->SetWidenedSearch(scene->GetWidenedSearch());
+}
+
 /// A renderer of the scene's light field from the scene's camera.
 void ConfigureRenderer(vtkLightFieldRenderer* renderer,
   vtkLightFieldScene* scene,
@@ -249,12 +276,7 @@ void ConfigureRenderer(vtkLightFieldRenderer* renderer,
 {
   renderer->SetInputData(lightField);
   renderer->SetCageData(cage);
-  renderer->SetCamera(scene->GetCamera());
-  renderer->SetWidth(scene->GetWidth());
-  renderer->SetHeight(scene->GetHeight());
-  renderer->SetFocalDistance(scene->GetFocalDistance());
-  renderer->SetSubdivision(scene->GetSubdivision()); // 0 = "auto" in both
-  renderer->SetWidenedSearch(scene->GetWidenedSearch());
+  ApplySceneView(renderer, scene);
   renderer->SetBackground(scene->GetBackground());
 }
 
@@ -314,14 +336,7 @@ vtkSmartPointer<vtkImageData> ReadProjectorMasks(const std::vector<std::string>&
   stack->SetNumberOfComponents(3);
   for (size_t p = 0; p < files.size(); ++p)
   {
-    vtkNew<vtkImageFileReader> reader;
-    reader->SetFileName(files[p].c_str());
-    reader->Update();
-    if (reader->GetErrorCode() != 0)
-    {
-      Fail(reader->GetErrorMessage());
-    }
-    vtkImageData* image = reader->GetOutput();
+    vtkSmartPointer<vtkImageData> image = ReadImage(files[p]);
     vtkDataArray* rgb = image->GetPointData()->GetScalars();
     const int* dims = image->GetDimensions();
     if (!rgb || rgb->GetNumberOfComponents() < 3)
@@ -418,14 +433,7 @@ vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options)
     mesh = ReadMesh(options.Mesh);
     if (!options.Texture.empty())
     {
-      vtkNew<vtkImageFileReader> reader;
-      reader->SetFileName(options.Texture.c_str());
-      reader->Update();
-      if (reader->GetErrorCode() != 0)
-      {
-        Fail(reader->GetErrorMessage());
-      }
-      texture = reader->GetOutput();
+      texture = ReadImage(options.Texture);
     }
   }
   else
@@ -516,14 +524,6 @@ void OrbitCamera(vtkCameraRig* rig,
   camera->SetFocalPoint(focal);
   camera->SetViewUp(axis[0], axis[1], axis[2]);
   camera->SetViewAngle(viewAngle);
-}
-
-/// Vertical view angle of view 0 of a rig, in degrees.
-double RigViewAngle(vtkCameraRig* rig)
-{
-  double K[9];
-  rig->GetIntrinsics(0, K);
-  return vtkMath::DegreesFromRadians(2.0 * std::atan(0.5 * rig->GetImageSize()[1] / K[4]));
 }
 
 /// A grid of thumbnails of the frames.
@@ -764,12 +764,7 @@ int EvalGroundTruth(const std::string& scenePath,
   evaluator->SetMeshData(mesh);
   evaluator->SetCageData(cage);
   evaluator->SetTextureData(texture);
-  evaluator->SetCamera(scene->GetCamera());
-  evaluator->SetWidth(scene->GetWidth());
-  evaluator->SetHeight(scene->GetHeight());
-  evaluator->SetFocalDistance(scene->GetFocalDistance());
-  evaluator->SetSubdivision(scene->GetSubdivision());
-  evaluator->SetWidenedSearch(scene->GetWidenedSearch());
+  ApplySceneView(evaluator.Get(), scene);
   Run(evaluator.Get(), "ground-truth evaluation");
   std::printf("object PSNR       %.2f dB\n", evaluator->GetPSNR());
   std::printf("object SSIM       %.4f\n", evaluator->GetSSIM());
@@ -892,14 +887,6 @@ int Lattice(const LatticeOptions& options)
     Fail(options.Out + ": the sampled cage is refused: " + cage->GetErrorMessage());
   }
 
-  if (scene->GetLightFieldPath())
-  {
-    const std::string lightField =
-      vtksys::SystemTools::CollapseFullPath(scene->GetResolvedLightFieldPath());
-    const std::string folder =
-      vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(options.Out));
-    scene->SetLightFieldPath(vtksys::SystemTools::RelativePath(folder, lightField).c_str());
-  }
   scene->SetCage(cage);
   scene->RemoveAllKeyframes();
   if (!scene->Write(options.Out.c_str()))
@@ -962,7 +949,7 @@ int Bench(int repeat, int size)
     auto lightField = Synthesize(options);
     vtkCameraRig* rig = lightField->GetRig();
     vtkNew<vtkCamera> camera;
-    OrbitCamera(rig, 0.37, 1.2, 0.0, RigViewAngle(rig), camera);
+    OrbitCamera(rig, 0.37, 1.2, 0.0, rig->GetViewAngle(0), camera);
     vtkNew<vtkLightFieldRenderer> renderer;
     renderer->SetInputData(lightField);
     renderer->SetCamera(camera);
@@ -1157,7 +1144,7 @@ int Demo(const std::string& sceneName,
     // Half-way between two captured views, further out than the ring. For
     // the fish, swimming about the camera's viewing axis keeps the motion in
     // the picture (a ring light field has horizontal parallax only).
-    OrbitCamera(rig, 0.5 * step, 1.15, 0.0, 0.7 * RigViewAngle(rig), scene->GetCamera());
+    OrbitCamera(rig, 0.5 * step, 1.15, 0.0, 0.7 * rig->GetViewAngle(0), scene->GetCamera());
     scene->SetWidth(size);
     scene->SetHeight(size);
     const std::string scenePath = out + "/" + demo->Name + suffix + ".json";
@@ -1341,16 +1328,8 @@ int SplitPropagate(const SplitOptions& options)
     {
       Fail("--paint '" + paint + "': expected VIEW=LABELS.png, e.g. 0=paint/view0.png");
     }
-    vtkNew<vtkImageFileReader> reader;
     const std::string file = paint.substr(equals + 1);
-    reader->SetFileName(file.c_str());
-    reader->Update();
-    if (reader->GetErrorCode() != 0)
-    {
-      Fail(reader->GetErrorMessage());
-    }
-    vtkNew<vtkImageData> image;
-    image->ShallowCopy(reader->GetOutput());
+    vtkSmartPointer<vtkImageData> image = ReadImage(file);
     vtkDataArray* scalars = image->GetPointData()->GetScalars();
     if (scalars && scalars->GetNumberOfComponents() > 1)
     {

@@ -120,8 +120,6 @@ void InstallConsoleOutput()
   vtkOutputWindow::SetInstance(window);
   // vtkLogger would print every error a second time, with a timestamp.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  // vtkLogger would print every error a second time, with a timestamp.
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 }
 
 bool ErrorReported()

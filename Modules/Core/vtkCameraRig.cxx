@@ -217,6 +217,13 @@ bool vtkCameraRig::Project(int i, const double point[3], double pixel[2]) const
 }
 
 //------------------------------------------------------------------------------
+double vtkCameraRig::GetViewAngle(int i) const
+{
+  return vtkMath::DegreesFromRadians(
+    2.0 * std::atan(0.5 * this->ImageSize[1] / this->GetCamera(i).K[1][1]));
+}
+
+//------------------------------------------------------------------------------
 void vtkCameraRig::ApplyToCamera(int i, vtkCamera* camera) const
 {
   if (!camera)
@@ -239,8 +246,7 @@ void vtkCameraRig::ApplyToCamera(int i, vtkCamera* camera) const
   camera->SetPosition(center.x, center.y, center.z);
   camera->SetFocalPoint(focal.x, focal.y, focal.z);
   camera->SetViewUp(up.x, up.y, up.z);
-  const double fy = pinhole.K[1][1];
-  camera->SetViewAngle(vtkMath::DegreesFromRadians(2.0 * std::atan(0.5 * height / fy)));
+  camera->SetViewAngle(this->GetViewAngle(i));
   // The optical axis lands on NDC (-wx, -wy) (vtkCamera's frustum); OpenCV
   // pixel centres are at integer coordinates, VTK's at half-integers, and
   // VTK's y grows upwards.

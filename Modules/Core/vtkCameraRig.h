@@ -118,6 +118,12 @@ public:
   void ApplyToCamera(int i, vtkCamera* camera) const;
 
   /**
+   * Vertical field of view of view `i` in degrees, from fy and the image
+   * height (the view angle ApplyToCamera() sets).
+   */
+  double GetViewAngle(int i) const;
+
+  /**
    * The pinhole (K, R, t, row-major) that a vtkCamera renders into a
    * `width` x `height` window: the inverse of ApplyToCamera().
    */

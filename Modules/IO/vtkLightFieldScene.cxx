@@ -16,6 +16,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <utility>
@@ -467,9 +468,22 @@ bool vtkLightFieldScene::Write(const char* fileName)
   Json document;
   document["format"] = "lfd-scene";
   document["version"] = SceneVersion;
+  // A relative light-field path is relative to the scene file: written into
+  // another folder, it is rewritten to name the same light field from there.
+  std::string lightFieldPath = this->LightFieldPath ? this->LightFieldPath : "";
+  if (this->LightFieldPath && this->FileName &&
+    !std::filesystem::path(this->LightFieldPath).is_absolute())
+  {
+    const std::filesystem::path target =
+      std::filesystem::absolute(std::filesystem::path(file)).parent_path().lexically_normal();
+    const std::filesystem::path source =
+      std::filesystem::absolute(this->GetResolvedLightFieldPath()).lexically_normal();
+    const std::filesystem::path relative = source.lexically_relative(target);
+    lightFieldPath = relative.empty() ? source.string() : relative.string();
+  }
   if (this->LightFieldPath)
   {
-    document["lightfield"] = this->LightFieldPath;
+    document["lightfield"] = lightFieldPath;
   }
   vtkUnstructuredGrid* cage = this->Internal->Cage;
   const vtkIdType cagePoints = cage->GetNumberOfPoints();
@@ -585,6 +599,7 @@ bool vtkLightFieldScene::Write(const char* fileName)
     return this->Fail(file + ": " + error);
   }
   this->SetFileName(fileName);
+  this->SetLightFieldPath(this->LightFieldPath ? lightFieldPath.c_str() : nullptr);
   return true;
 }
 

@@ -61,7 +61,10 @@ public:
 
   /**
    * Writes `fileName` atomically. On failure returns false and sets
-   * GetErrorMessage(); an existing file is left untouched.
+   * GetErrorMessage(); an existing file is left untouched. A relative
+   * light-field path of a scene read from (or written to) a file is
+   * rewritten relative to `fileName`'s folder, so the new file names the
+   * same light field.
    */
   bool Write(const char* fileName);
 

@@ -242,9 +242,10 @@ expect_error(["split", "projector", lf, "--out", os.path.join(WORK, "never.lf")]
              "no Coded pass")
 t.check(not os.path.exists(os.path.join(WORK, "never.lf")), "a failed split writes nothing", False)
 
-# Demo outputs.
+# Demo outputs (a small capture: the checks are on the files).
 demo = os.path.join(WORK, "demo")
-code, out, err = lfd("demo", "--out", demo, "--frames", "4", "--size", "96")
+code, out, err = lfd("demo", "--out", demo, "--frames", "4", "--size", "96", "--views", "36",
+                     "--rows", "1", "--capture-size", "96")
 frames = sorted(os.listdir(os.path.join(demo, "frames"))) if code == 0 else []
 t.check(code == 0 and frames == [f"frame_000{i}.png" for i in range(4)], "demo writes 4 frames",
         frames or err.strip())

@@ -62,8 +62,7 @@ def versus(render, truth):
     """Object PSNR and silhouette IoU of two evaluator outputs."""
     a, b = t.image_array(render).astype(float), t.image_array(truth).astype(float)
     la, lb = t.image_array(render, "Label")[..., 0] > 0, t.image_array(truth, "Label")[..., 0] > 0
-    mse = ((a - b)[la | lb] ** 2).mean()
-    return 10 * np.log10(255.0 ** 2 / mse), (la & lb).sum() / (la | lb).sum()
+    return t.psnr(a, b, la | lb), (la & lb).sum() / (la | lb).sum()
 
 
 # The smooth lattice's own ground truth: the mesh through the finest cage.

@@ -5,6 +5,8 @@ and ground-truth evaluations of the deformed-rendering tests."""
 import os
 import sys
 
+import numpy as np
+
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkRenderingCore import vtkCamera
 
@@ -47,6 +49,16 @@ def top_over_bottom(image):
     white = luminance > 0.5 * luminance.max()
     half = luminance.shape[0] // 2
     return luminance[:half][white[:half]].mean() / luminance[half:][white[half:]].mean()
+
+
+def psnr(a, b, mask=None):
+    """PSNR in dB of two 8-bit images (arrays), over `mask` when given; 100 dB
+    for identical images, as vtkLeaveOneOutEvaluator::ComputePSNR."""
+    difference = np.asarray(a, float) - np.asarray(b, float)
+    if mask is not None:
+        difference = difference[mask]
+    mse = float((difference ** 2).mean())
+    return 100.0 if mse == 0.0 else 10.0 * np.log10(255.0 ** 2 / mse)
 
 
 def temp_path(*parts):
