@@ -97,8 +97,6 @@ int vtkCagePoseFilter::RequestData(vtkInformation*,
     vtkErrorMacro("The input cage has no points: there is nothing to pose.");
     return 0;
   }
-  cage->SetPointsToRest();
-
   std::vector<double> rest(3 * numberOfPoints);
   double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
   double hi[3] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MIN, VTK_DOUBLE_MIN };

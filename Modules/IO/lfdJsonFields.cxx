@@ -12,7 +12,6 @@ namespace io
 //------------------------------------------------------------------------------
 FieldError::FieldError(const std::string& field, const std::string& problem)
   : std::runtime_error("field \"" + field + "\": " + problem)
-  , Field(field)
 {
 }
 

@@ -24,18 +24,17 @@ namespace io
 // Insertion-ordered: files keep the documented key order, provenance its own.
 using Json = nlohmann::ordered_json;
 
+/// The version of lightfield.json this code reads and writes.
+constexpr int LightFieldManifestVersion = 1;
+
 /**
- * A field that is missing or malformed: `Field` is its path, what() the
- * complete message "field \"path\": problem".
+ * A field that is missing or malformed: what() is the complete message
+ * "field \"path\": problem".
  */
 class FieldError : public std::runtime_error
 {
 public:
   FieldError(const std::string& field, const std::string& problem);
-  const std::string& GetField() const { return this->Field; }
-
-private:
-  std::string Field;
 };
 
 /**

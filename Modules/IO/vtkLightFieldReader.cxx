@@ -33,8 +33,6 @@ using lfd::io::FieldError;
 using lfd::io::Json;
 using lfd::io::MemberPath;
 
-constexpr int ManifestVersion = 1;
-
 struct ManifestView
 {
   std::string Name;
@@ -189,11 +187,11 @@ void ParseManifest(const Json& document, Manifest& manifest)
   const Json& versionValue = lfd::io::RequireMember(document, "", "version");
   const long long version =
     lfd::io::GetInteger(versionValue, "version", 0, std::numeric_limits<int>::max());
-  if (version != ManifestVersion)
+  if (version != lfd::io::LightFieldManifestVersion)
   {
     throw FieldError("version",
       "unsupported version " + std::to_string(version) + " (this reader reads version " +
-        std::to_string(ManifestVersion) + ")");
+        std::to_string(lfd::io::LightFieldManifestVersion) + ")");
   }
   manifest.Width = static_cast<int>(
     lfd::io::GetInteger(lfd::io::RequireMember(document, "", "width"), "width", 1, 1 << 20));
@@ -408,8 +406,6 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
   this->ClearError();
   vtkLightField* output = vtkLightField::GetData(outputs);
   const Manifest& manifest = this->Internal->Parsed;
-  unsigned long errorCode = vtkErrorCode::NoError;
-  std::string error;
 
   const int views = static_cast<int>(manifest.Views.size());
   output->Initialize();
@@ -556,6 +552,4 @@ void vtkLightFieldReader::PrintSelf(ostream& os, vtkIndent indent)
     os << " " << vtkLightField::GetPassName(pass) << "=" << (this->ReadPass[pass] ? "on" : "off");
   }
   os << "\n";
-  os << indent << "ErrorMessage: " << (this->ErrorMessage.empty() ? "(none)" : this->ErrorMessage)
-     << "\n";
 }

@@ -216,7 +216,7 @@ void vtkLightFieldWriter::WriteData()
   // The manifest.
   Json manifest;
   manifest["format"] = "lfd-lightfield";
-  manifest["version"] = 1;
+  manifest["version"] = lfd::io::LightFieldManifestVersion;
   manifest["width"] = width;
   manifest["height"] = height;
   manifest["views"] = ViewsToJson(rig);

@@ -328,6 +328,4 @@ void vtkMiddleburyImporter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "FitRigCylinder: " << (this->FitRigCylinder ? "On" : "Off") << "\n";
-  os << indent << "ErrorMessage: " << (this->ErrorMessage.empty() ? "(none)" : this->ErrorMessage)
-     << "\n";
 }

@@ -131,6 +131,12 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
     return 0;
   }
   vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
+  if (rest &&
+    (rest->GetNumberOfComponents() != 3 || rest->GetNumberOfTuples() != cage->GetNumberOfPoints()))
+  {
+    vtkErrorMacro("The cage's \"RestPosition\" array does not hold 3 values per point.");
+    return 0;
+  }
   const int width = lightField->GetWidth();
   const int height = lightField->GetHeight();
   const int views = lightField->GetNumberOfViews();

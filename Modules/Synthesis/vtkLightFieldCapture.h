@@ -29,7 +29,7 @@
  * Axis through Center, at distance Radius, Width x Height pixels and a
  * vertical ViewAngle. Radius 0 frames the mesh: the sphere about Center that
  * holds the bounds fills the narrower field of view with a 10 % margin.
- * Rows are symmetric about Center, RowSpacing apart (0 = 0.15 x radius).
+ * Rows are symmetric about Center, RowSpacing apart (0 = 0.05 x radius).
  * Alternatively SetRig() captures from the views of a given rig (its image
  * size wins over Width and Height).
  *
@@ -114,7 +114,7 @@ public:
   ///@{
   /**
    * Distance between neighbouring rows along the axis; 0 (default) is
-   * 0.15 x the radius.
+   * 0.05 x the radius.
    */
   vtkSetClampMacro(RowSpacing, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(RowSpacing, double);
