@@ -57,6 +57,21 @@ void CleanLabels(unsigned char* image,
   }
 }
 
+void ObjectMask(const unsigned char* rgb,
+  int width,
+  int height,
+  double threshold,
+  int radius,
+  unsigned char* mask)
+{
+  const long pixels = static_cast<long>(width) * height;
+  for (long p = 0; p < pixels; ++p)
+  {
+    mask[p] = (rgb[3 * p] + rgb[3 * p + 1] + rgb[3 * p + 2]) / 3.0 > threshold ? 1 : 0;
+  }
+  CleanLabels(mask, nullptr, width, height, 1, radius);
+}
+
 void DistanceToMask(const unsigned char* mask, int width, int height, std::vector<float>& distance)
 {
   distance.resize(static_cast<size_t>(width) * height);

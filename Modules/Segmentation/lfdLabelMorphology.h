@@ -28,6 +28,18 @@ void CleanLabels(unsigned char* image,
   int radius);
 
 /**
+ * The object pixels of one RGB view: mean of the channels above `threshold`
+ * (1, else 0), cleaned by an opening and a closing of `radius` pixels, into
+ * `mask` (width x height bytes).
+ */
+void ObjectMask(const unsigned char* rgb,
+  int width,
+  int height,
+  double threshold,
+  int radius,
+  unsigned char* mask);
+
+/**
  * Distance in pixels from every pixel of a `width` x `height` mask to the
  * nearest non-zero pixel (0 on the mask), into `distance` (resized).
  */

@@ -193,24 +193,18 @@ vtkIdType March(const VoxelGrid& grid,
 vtkLabelPropagation::vtkLabelPropagation() = default;
 
 //------------------------------------------------------------------------------
-vtkLabelPropagation::~vtkLabelPropagation()
-{
-  this->RemoveAllPaintedViews();
-}
+vtkLabelPropagation::~vtkLabelPropagation() = default;
 
 //------------------------------------------------------------------------------
 void vtkLabelPropagation::SetPaintedView(int view, vtkImageData* labels)
 {
-  auto it = this->Painted.find(view);
-  if (it != this->Painted.end())
-  {
-    it->second->UnRegister(this);
-    this->Painted.erase(it);
-  }
   if (labels)
   {
-    labels->Register(this);
     this->Painted[view] = labels;
+  }
+  else
+  {
+    this->Painted.erase(view);
   }
   this->Modified();
 }
@@ -218,10 +212,6 @@ void vtkLabelPropagation::SetPaintedView(int view, vtkImageData* labels)
 //------------------------------------------------------------------------------
 void vtkLabelPropagation::RemoveAllPaintedViews()
 {
-  for (auto& painted : this->Painted)
-  {
-    painted.second->UnRegister(this);
-  }
   this->Painted.clear();
   this->Modified();
 }
@@ -327,13 +317,12 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
   {
     for (int view = 0; view < views; ++view)
     {
-      unsigned char* mask = silhouettes.Mask.data() + view * pixels;
-      for (vtkIdType p = 0; p < pixels; ++p)
-      {
-        const unsigned char* rgb = coaxial->GetPointer(3 * (view * pixels + p));
-        mask[p] = (rgb[0] + rgb[1] + rgb[2]) / 3.0 > this->Threshold ? 1 : 0;
-      }
-      lfd::segmentation::CleanLabels(mask, nullptr, width, height, 1, 1);
+      lfd::segmentation::ObjectMask(coaxial->GetPointer(3 * view * pixels),
+        width,
+        height,
+        this->Threshold,
+        1,
+        silhouettes.Mask.data() + view * pixels);
     }
     silhouettes.Distance.resize(silhouettes.Mask.size());
     std::vector<float> distance;

@@ -41,6 +41,8 @@
 #include "lfdSegmentationModule.h" // For export macro
 #include "vtkLightFieldSplitter.h"
 
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
 #include <map> // For std::map
 
 class vtkImageData;
@@ -117,7 +119,7 @@ protected:
 
   bool Split(vtkLightField* input, vtkLightField* output, std::string& error) override;
 
-  std::map<int, vtkImageData*> Painted;
+  std::map<int, vtkSmartPointer<vtkImageData>> Painted;
   int Proxy = AUTOMATIC;
   int Resolution = 128;
   double Threshold = 20.0;

@@ -110,22 +110,21 @@ bool vtkScanlineSplit::Split(vtkLightField* input, vtkLightField* output, std::s
   for (int view = 0; view < views; ++view)
   {
     const vtkIdType offset = view * pixels;
-    for (vtkIdType p = 0; p < pixels; ++p)
+    if (silhouette)
     {
-      if (silhouette)
+      for (vtkIdType p = 0; p < pixels; ++p)
       {
         mask[p] = silhouette->GetValue(offset + p) > 0 ? 1 : 0;
       }
-      else
-      {
-        const unsigned char* rgb = coaxial->GetPointer(3 * (offset + p));
-        mask[p] = (rgb[0] + rgb[1] + rgb[2]) / 3.0 > this->Threshold ? 1 : 0;
-      }
     }
-    if (!silhouette)
+    else
     {
-      lfd::segmentation::CleanLabels(
-        mask.data(), nullptr, width, height, 1, this->MorphologyRadius);
+      lfd::segmentation::ObjectMask(coaxial->GetPointer(3 * offset),
+        width,
+        height,
+        this->Threshold,
+        this->MorphologyRadius,
+        mask.data());
     }
     for (vtkIdType p = 0; p < pixels; ++p)
     {
