@@ -5,6 +5,7 @@
 // wires the pipeline, reports progress and turns errors into one line and a
 // non-zero exit status.
 #include "lfdConsole.h"
+#include "lfdFileUtilities.h"
 
 #include "vtkBoxCoverageCheck.h"
 #include "vtkCagePoseFilter.h"
@@ -58,12 +59,23 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <functional>
 #include <iostream>
+#include <limits>
+#include <memory>
+#include <new>
+#include <set>
+#include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
+
+#include <fnmatch.h>
 
 namespace
 {
@@ -94,6 +106,242 @@ void Run(Algorithm* algorithm, const std::string& what)
     Fail(what + " failed");
   }
 }
+
+/// Stops before an output is written when any error was reported so far.
+void CheckNoError()
+{
+  if (lfd::ErrorReported())
+  {
+    Fail("");
+  }
+}
+
+/**
+ * A multi-file output folder written under a temporary sibling name
+ * (lfd::io::TemporaryDirectoryName) and renamed onto its target by Commit()
+ * only when complete: a command that fails leaves neither a partial folder
+ * nor the temporary, and an existing target is replaced only on success.
+ * Since the whole target is replaced, an existing one must hold nothing but
+ * files the command writes (`patterns`, fnmatch globs): a folder of the
+ * user's is never swept away.
+ */
+class StagedFolder
+{
+public:
+  StagedFolder(const std::string& target,
+    const std::string& command,
+    const std::vector<std::string>& patterns)
+    : Target(lfd::io::TrimSeparators(target))
+    , Temporary(lfd::io::TemporaryDirectoryName(target))
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::file_status status = fs::status(this->Target, error);
+    if (fs::exists(status) && !fs::is_directory(status))
+    {
+      Fail("--out " + this->Target + ": exists and is not a folder");
+    }
+    if (fs::is_directory(status))
+    {
+      for (const fs::directory_entry& entry : fs::directory_iterator(this->Target, error))
+      {
+        const std::string name = entry.path().filename().string();
+        if (std::none_of(patterns.begin(),
+              patterns.end(),
+              [&name](const std::string& pattern)
+              { return fnmatch(pattern.c_str(), name.c_str(), 0) == 0; }))
+        {
+          Fail("--out " + this->Target + ": holds '" + name + "', which " + command +
+            " does not write; it replaces the whole folder, so choose a new or empty one");
+        }
+      }
+    }
+    lfd::io::RemoveQuietly(this->Temporary);
+    if (!fs::create_directories(this->Temporary, error))
+    {
+      Fail("--out " + this->Target + ": cannot create " + this->Temporary + ": " + error.message());
+    }
+    lfd::AliasPath(this->Temporary, this->Target);
+  }
+  ~StagedFolder()
+  {
+    if (!this->Committed)
+    {
+      lfd::io::RemoveQuietly(this->Temporary);
+    }
+  }
+  StagedFolder(const StagedFolder&) = delete;
+  void operator=(const StagedFolder&) = delete;
+
+  /// Where the command writes.
+  const std::string& GetPath() const { return this->Temporary; }
+
+  /// Replaces the target with the complete folder.
+  void Commit()
+  {
+    CheckNoError();
+    std::string error;
+    if (!lfd::io::CommitDirectory(this->Temporary, this->Target, error))
+    {
+      Fail(error);
+    }
+    this->Committed = true;
+  }
+
+private:
+  std::string Target;
+  std::string Temporary;
+  bool Committed = false;
+};
+
+/**
+ * The numeric options of every subcommand. CLI11 stores their text; after
+ * parsing, Convert() turns each given one into its variable and refuses a
+ * value that is not a number or outside its range the same way as any other
+ * refused input (one line naming the option, exit status 1). The ranges are
+ * the ones the receiving classes accept (their vtkSetClampMacro limits)
+ * where there is such a class.
+ */
+class NumericOptions
+{
+public:
+  /// A single value in [lowest, highest].
+  template<typename T>
+  CLI::Option* Add(CLI::App* command,
+    const std::string& name,
+    T& value,
+    T lowest,
+    T highest,
+    const std::string& description)
+  {
+    Entry* entry = this->NewEntry();
+    entry->Assign = [&value, name, lowest, highest](const std::vector<std::string>& text)
+    { value = Parse(name, text.back(), lowest, highest); };
+    return command->add_option(name, entry->Text, description + " (" + Range(lowest, highest) + ")")
+      ->type_name(std::is_integral<T>::value ? "INT" : "FLOAT")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
+      ->default_str(Format(value));
+  }
+
+  /// A list of values, each in [lowest, highest].
+  template<typename T>
+  CLI::Option* Add(CLI::App* command,
+    const std::string& name,
+    std::vector<T>& values,
+    T lowest,
+    T highest,
+    const std::string& description)
+  {
+    Entry* entry = this->NewEntry();
+    entry->Assign = [&values, name, lowest, highest](const std::vector<std::string>& text)
+    {
+      values.clear();
+      for (const std::string& item : text)
+      {
+        values.push_back(Parse(name, item, lowest, highest));
+      }
+    };
+    std::string defaults;
+    for (const T& value : values)
+    {
+      defaults += (defaults.empty() ? "" : " ") + Format(value);
+    }
+    return command
+      ->add_option(name, entry->Text, description + " (each " + Range(lowest, highest) + ")")
+      ->type_name(std::is_integral<T>::value ? "INT" : "FLOAT")
+      ->default_str(defaults);
+  }
+
+  /// A finite real number (no other bound).
+  CLI::Option* AddReal(CLI::App* command,
+    const std::string& name,
+    double& value,
+    const std::string& description)
+  {
+    return this->Add(command, name, value, -Huge, Huge, description);
+  }
+  CLI::Option* AddReal(CLI::App* command,
+    const std::string& name,
+    std::vector<double>& values,
+    const std::string& description)
+  {
+    return this->Add(command, name, values, -Huge, Huge, description);
+  }
+
+  /// Converts every numeric option given on the command line.
+  void Convert()
+  {
+    for (const auto& entry : this->Entries)
+    {
+      if (!entry->Text.empty())
+      {
+        entry->Assign(entry->Text);
+      }
+    }
+  }
+
+private:
+  static constexpr double Huge = std::numeric_limits<double>::max();
+
+  struct Entry
+  {
+    std::vector<std::string> Text;
+    std::function<void(const std::vector<std::string>&)> Assign;
+  };
+
+  Entry* NewEntry()
+  {
+    this->Entries.push_back(std::make_unique<Entry>());
+    return this->Entries.back().get();
+  }
+
+  template<typename T>
+  static std::string Format(T value)
+  {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+  }
+
+  template<typename T>
+  static std::string Range(T lowest, T highest)
+  {
+    const char* kind = std::is_integral<T>::value ? "an integer" : "a number";
+    if (static_cast<double>(highest) >= static_cast<double>(std::numeric_limits<int>::max()))
+    {
+      return static_cast<double>(lowest) <= -Huge ? std::string(kind)
+                                                  : std::string(kind) + " >= " + Format(lowest);
+    }
+    return std::string(kind) + " from " + Format(lowest) + " to " + Format(highest);
+  }
+
+  template<typename T>
+  static T Parse(const std::string& name, const std::string& text, T lowest, T highest)
+  {
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    errno = 0;
+    double number = 0.0;
+    if (std::is_integral<T>::value)
+    {
+      number = static_cast<double>(std::strtoll(begin, &end, 10));
+    }
+    else
+    {
+      number = std::strtod(begin, &end);
+    }
+    // !(a <= b) also refuses NaN.
+    if (end == begin || *end != '\0' || errno != 0 || !std::isfinite(number) ||
+      !(number >= static_cast<double>(lowest) && number <= static_cast<double>(highest)))
+    {
+      Fail(name + " " + text + ": expected " + Range(lowest, highest));
+    }
+    return static_cast<T>(number);
+  }
+
+  std::vector<std::unique_ptr<Entry>> Entries;
+};
 
 double Seconds(double start)
 {
@@ -179,8 +427,35 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   return mesh;
 }
 
+/**
+ * A scene is a JSON file: a folder (a light-field dataset given where its
+ * scene is expected, a common slip) or a device is refused with a line that
+ * says what was expected.
+ */
+void ExpectSceneFile(const std::string& path)
+{
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (fs::is_directory(status))
+  {
+    if (fs::is_regular_file(fs::path(path) / "lightfield.json", error))
+    {
+      Fail(path +
+        ": is a light-field dataset, not a scene file; write a scene.json whose "
+        "\"lightfield\" names it (see Data/README.md), or try 'lfd demo'");
+    }
+    Fail(path + ": is a folder, not a scene file (scene.json)");
+  }
+  if (fs::exists(status) && !fs::is_regular_file(status))
+  {
+    Fail(path + ": is not a regular file; a scene file (scene.json) was expected");
+  }
+}
+
 vtkSmartPointer<vtkLightFieldScene> ReadScene(const std::string& path)
 {
+  ExpectSceneFile(path);
   auto scene = vtkSmartPointer<vtkLightFieldScene>::New();
   if (!scene->Read(path.c_str()))
   {
@@ -219,9 +494,31 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
   return lightField;
 }
 
+/// Records the last error an object reports instead of printing it, so that
+/// the caller says it once, with the file it came from.
+class ErrorCatcher
+{
+public:
+  explicit ErrorCatcher(vtkObject* object)
+  {
+    this->Callback->SetCallback(
+      [](vtkObject*, unsigned long, void* clientData, void* callData) {
+        *static_cast<std::string*>(clientData) = callData ? static_cast<const char*>(callData) : "";
+      });
+    this->Callback->SetClientData(&this->Message);
+    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+  }
+  const std::string& GetMessage() const { return this->Message; }
+
+private:
+  std::string Message;
+  vtkNew<vtkCallbackCommand> Callback;
+};
+
 /**
- * The scene's cage, validated against the light field (nullptr when the scene
- * has none). With keyframes and a time, the cage points are the keyframes'
+ * The scene's cage, validated (against the light field when given; nullptr
+ * when the scene has none): the one check of a scene's boxes for every
+ * command. With keyframes and a time, the cage points are the keyframes'
  * Catmull-Rom interpolation at that time.
  */
 vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
@@ -237,9 +534,14 @@ vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
   if (time && scene->GetNumberOfKeyframes() > 0)
   {
     vtkNew<vtkKeyframeInterpolator> keyframes;
+    ErrorCatcher refusal(keyframes);
     for (int k = 0; k < scene->GetNumberOfKeyframes(); ++k)
     {
       keyframes->AddKeyframe(scene->GetKeyframeTime(k), scene->GetKeyframePoints(k));
+      if (!refusal.GetMessage().empty())
+      {
+        Fail(std::string(scene->GetFileName()) + ": keyframes: " + refusal.GetMessage());
+      }
     }
     vtkNew<vtkPoints> points;
     keyframes->InterpolatePoints(*time, points);
@@ -254,6 +556,21 @@ vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
     Fail(std::string(scene->GetFileName()) + ": " + cage->GetErrorMessage());
   }
   return cage;
+}
+
+/**
+ * The mesh with its cells labelled by the scene's rest boxes (a triangle
+ * takes the box holding its centroid), after the boxes passed SceneCage():
+ * how `synth --scene` splits a mesh into parts and how `eval groundtruth`
+ * gives the ground truth the parts the light field was split into.
+ */
+vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldScene* scene)
+{
+  vtkNew<vtkLabelCellsByBoxes> labeler;
+  labeler->SetInputData(mesh);
+  labeler->SetBoxesData(scene->GetCage());
+  Run(labeler.Get(), "labelling the mesh by the scene's boxes");
+  return labeler->GetOutput();
 }
 
 /// The scene's view and render settings on a renderer or an evaluator.
@@ -282,6 +599,7 @@ void ConfigureRenderer(vtkLightFieldRenderer* renderer,
 
 void WriteLightField(vtkLightField* lightField, const std::string& directory)
 {
+  CheckNoError();
   vtkNew<vtkLightFieldWriter> writer;
   writer->SetInputData(lightField);
   writer->SetDirectory(directory.c_str());
@@ -292,8 +610,18 @@ void WriteLightField(vtkLightField* lightField, const std::string& directory)
   }
 }
 
+void WriteScene(vtkLightFieldScene* scene, const std::string& path)
+{
+  CheckNoError();
+  if (!scene->Write(path.c_str()))
+  {
+    Fail(scene->GetErrorMessage());
+  }
+}
+
 void WriteImage(vtkImageData* image, const std::string& path)
 {
+  CheckNoError();
   vtkNew<vtkImageFileWriter> writer;
   writer->SetInputData(image);
   writer->SetFileName(path.c_str());
@@ -447,53 +775,82 @@ vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options)
     {
       Fail("scene '" + options.Scene + "' has no cage: its rest boxes are what label the mesh");
     }
-    vtkNew<vtkLabelCellsByBoxes> labeler;
-    labeler->SetInputData(mesh);
-    labeler->SetBoxesData(scene->GetCage());
-    Run(labeler.Get(), "labelling the mesh by the scene's boxes");
-    mesh = labeler->GetOutput();
+    SceneCage(scene, nullptr);
+    mesh = LabelByScene(mesh, scene);
   }
   return Capture(mesh, texture, options);
 }
 
-void AddSynthOptions(CLI::App* command, SynthOptions& options)
+void AddSynthOptions(CLI::App* command, SynthOptions& options, NumericOptions& numbers)
 {
+  vtkNew<vtkLightFieldCapture> limits; // the capture's own ranges
   command->add_option("--object", options.Object, "built-in object")
     ->check(CLI::IsMember({ "fish", "figure", "checkerboard" }))
     ->capture_default_str();
-  command->add_option("--views", options.Views, "views per ring")->capture_default_str();
-  command->add_option("--rows", options.Rows, "rings (rows) of views")->capture_default_str();
-  command->add_option("--width", options.Width, "image width in pixels")->capture_default_str();
-  command->add_option("--height", options.Height, "image height in pixels")->capture_default_str();
-  command->add_option("--radius", options.Radius, "ring radius (0: frame the mesh)")
-    ->capture_default_str();
-  command->add_option(
-    "--view-angle", options.ViewAngle, "vertical field of view in degrees (0: frame the mesh)");
-  command->add_option("--axis", options.Axis, "rig axis x y z")->expected(3)->capture_default_str();
+  numbers.Add(command,
+    "--views",
+    options.Views,
+    limits->GetViewsPerRingMinValue(),
+    limits->GetViewsPerRingMaxValue(),
+    "views per ring");
+  numbers.Add(command,
+    "--rows",
+    options.Rows,
+    limits->GetNumberOfRowsMinValue(),
+    limits->GetNumberOfRowsMaxValue(),
+    "rings (rows) of views");
+  numbers.Add(command,
+    "--width",
+    options.Width,
+    limits->GetWidthMinValue(),
+    limits->GetWidthMaxValue(),
+    "image width in pixels");
+  numbers.Add(command,
+    "--height",
+    options.Height,
+    limits->GetHeightMinValue(),
+    limits->GetHeightMaxValue(),
+    "image height in pixels");
+  numbers.Add(command,
+    "--radius",
+    options.Radius,
+    limits->GetRadiusMinValue(),
+    limits->GetRadiusMaxValue(),
+    "ring radius (0: frame the mesh)");
+  numbers.Add(command,
+    "--view-angle",
+    options.ViewAngle,
+    0.0,
+    limits->GetViewAngleMaxValue(),
+    "vertical field of view in degrees (0: frame the mesh)");
+  numbers.AddReal(command, "--axis", options.Axis, "rig axis x y z")->expected(3);
   command->add_flag("--scene-fixed-light",
     options.SceneFixedLight,
     "light fixed in the scene instead of travelling with the camera (paper Fig. 5)");
   command->add_flag("--no-depth", options.NoDepth, "skip the Depth pass");
-  command
-    ->add_option("--projectors",
-      options.Projectors,
-      "also capture the Coded and Flood passes lit by N projectors on the ring, painting each "
-      "part with its palette colour")
-    ->check(CLI::Range(0, 64));
-  command
-    ->add_option("--projector-noise",
-      options.ProjectorNoise,
-      "sensor noise sigma of the projector passes (8-bit levels)")
-    ->check(CLI::Range(0.0, 255.0));
+  numbers.Add(command,
+    "--projectors",
+    options.Projectors,
+    limits->GetNumberOfProjectorsMinValue(),
+    limits->GetNumberOfProjectorsMaxValue(),
+    "also capture the Coded and Flood passes lit by N projectors on the ring, painting each "
+    "part with its palette colour");
+  numbers.Add(command,
+    "--projector-noise",
+    options.ProjectorNoise,
+    limits->GetProjectorNoiseMinValue(),
+    limits->GetProjectorNoiseMaxValue(),
+    "sensor noise sigma of the projector passes (8-bit levels)");
   command->add_option("--projector-mask",
     options.ProjectorMasks,
     "a painted mask (RGB image in the palette's colours, see the palette printed) for each "
     "projector, in order; repeat (default: masks generated from the part labels)");
-  command
-    ->add_option("--projector-ambient",
-      options.ProjectorAmbient,
-      "room light in the projector passes (fraction of the albedo)")
-    ->check(CLI::Range(0.0, 1.0));
+  numbers.Add(command,
+    "--projector-ambient",
+    options.ProjectorAmbient,
+    limits->GetProjectorAmbientMinValue(),
+    limits->GetProjectorAmbientMaxValue(),
+    "room light in the projector passes (fraction of the albedo)");
 }
 
 //------------------------------------------------------------------------------
@@ -559,7 +916,7 @@ vtkSmartPointer<vtkImageData> ContactSheet(const std::vector<vtkSmartPointer<vtk
 //------------------------------------------------------------------------------
 // Subcommands
 
-int Synth(const SynthOptions& options)
+void Synth(const SynthOptions& options)
 {
   const double start = vtkTimerLog::GetUniversalTime();
   auto lightField = Synthesize(options);
@@ -578,10 +935,9 @@ int Synth(const SynthOptions& options)
   std::cout << "wrote " << lightField->GetNumberOfViews() << " views of " << lightField->GetWidth()
             << "x" << lightField->GetHeight() << " to " << options.Out << " in " << Seconds(start)
             << " s\n";
-  return 0;
 }
 
-int ImportMiddlebury(const std::string& par, const std::string& out)
+void ImportMiddlebury(const std::string& par, const std::string& out)
 {
   vtkNew<vtkMiddleburyImporter> importer;
   importer->SetFileName(par.c_str());
@@ -595,10 +951,9 @@ int ImportMiddlebury(const std::string& par, const std::string& out)
   vtkCameraRig* rig = importer->GetOutput()->GetRig();
   std::cout << "imported " << rig->GetNumberOfViews() << " views (" << rig->GetNumberOfDuplicates()
             << " near-duplicates) into " << out << "\n";
-  return 0;
 }
 
-int Info(const std::string& path)
+void Info(const std::string& path)
 {
   auto lightField = ReadLightField(path);
   vtkCameraRig* rig = lightField->GetRig();
@@ -658,10 +1013,9 @@ int Info(const std::string& path)
       azimuths.size(),
       gap);
   }
-  return 0;
 }
 
-int Render(const std::string& scenePath, const std::string& out, const double* time)
+void Render(const std::string& scenePath, const std::string& out, const double* time)
 {
   const double start = vtkTimerLog::GetUniversalTime();
   auto scene = ReadScene(scenePath);
@@ -673,26 +1027,27 @@ int Render(const std::string& scenePath, const std::string& out, const double* t
   WriteImage(renderer->GetOutput(), out);
   std::cout << "wrote " << out << " (" << scene->GetWidth() << "x" << scene->GetHeight() << ") in "
             << Seconds(start) << " s\n";
-  return 0;
 }
 
-/// Encodes frame_%04d.png of a folder into an MP4 with ffmpeg, when installed.
-bool EncodeMovie(const std::string& frameDir, const std::string& movie)
+/// Encodes frame_%04d.png of a folder into an MP4 with ffmpeg, when installed
+/// (the folder is staged: a failed encoding leaves nothing behind).
+void EncodeMovie(const std::string& frameDir, const std::string& movie)
 {
   if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0)
   {
-    return false;
+    return;
   }
-  const std::string partial = movie + ".partial.mp4";
   const std::string command = "ffmpeg -y -loglevel error -framerate 24 -i '" + frameDir +
-    "/frame_%04d.png' -pix_fmt yuv420p '" + partial + "'";
-  if (std::system(command.c_str()) != 0 || std::rename(partial.c_str(), movie.c_str()) != 0)
+    "/frame_%04d.png' -pix_fmt yuv420p '" + movie + "'";
+  if (std::system(command.c_str()) != 0)
   {
-    std::remove(partial.c_str());
     Fail("ffmpeg could not encode '" + movie + "'");
   }
-  return true;
 }
+
+/// What `lfd animate` writes into its folder.
+const std::vector<std::string> AnimationFiles = { "frame_[0-9][0-9][0-9][0-9].png",
+  "animation.mp4" };
 
 /**
  * Renders `frames` frames of a scene's keyframes (evenly from the first to
@@ -704,12 +1059,14 @@ std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldScene* s
   int frames,
   const std::string& out)
 {
-  vtksys::SystemTools::MakeDirectory(out);
+  if (!vtksys::SystemTools::MakeDirectory(out))
+  {
+    Fail("cannot create the folder " + out);
+  }
   const double t0 = scene->GetKeyframeTime(0);
   const double t1 = scene->GetKeyframeTime(scene->GetNumberOfKeyframes() - 1);
   vtkNew<vtkLightFieldRenderer> renderer;
   std::vector<vtkSmartPointer<vtkImageData>> images;
-  const double start = vtkTimerLog::GetUniversalTime();
   for (int f = 0; f < frames; ++f)
   {
     const double time = t0 + (t1 - t0) * f / std::max(frames - 1, 1);
@@ -724,20 +1081,30 @@ std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldScene* s
     images.push_back(frame);
     std::fprintf(stderr, "animating: frame %d/%d\n", f + 1, frames);
   }
+  EncodeMovie(out, out + "/animation.mp4");
+  return images;
+}
+
+/// The report of an animation written into `folder`, to be known as `out`.
+void PrintAnimation(vtkLightFieldScene* scene,
+  int frames,
+  double seconds,
+  const std::string& folder,
+  const std::string& out)
+{
   std::printf("frames    %d of %dx%d in %s/frame_*.png (%.1f ms/frame)\n",
     frames,
     scene->GetWidth(),
     scene->GetHeight(),
     out.c_str(),
-    1000.0 * Seconds(start) / frames);
-  if (EncodeMovie(out, out + "/animation.mp4"))
+    1000.0 * seconds / frames);
+  if (vtksys::SystemTools::FileExists(folder + "/animation.mp4", true))
   {
     std::printf("movie     %s/animation.mp4\n", out.c_str());
   }
-  return images;
 }
 
-int Animate(const std::string& scenePath, int frames, const std::string& out)
+void Animate(const std::string& scenePath, int frames, const std::string& out)
 {
   auto scene = ReadScene(scenePath);
   if (scene->GetNumberOfKeyframes() < 2)
@@ -745,11 +1112,14 @@ int Animate(const std::string& scenePath, int frames, const std::string& out)
     Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
   }
   auto lightField = ReadLightField(scene->GetResolvedLightFieldPath());
-  RenderAnimation(scene, lightField, frames, out);
-  return 0;
+  StagedFolder folder(out, "lfd animate", AnimationFiles);
+  const double start = vtkTimerLog::GetUniversalTime();
+  RenderAnimation(scene, lightField, frames, folder.GetPath());
+  PrintAnimation(scene, frames, Seconds(start), folder.GetPath(), out);
+  folder.Commit();
 }
 
-int EvalGroundTruth(const std::string& scenePath,
+void EvalGroundTruth(const std::string& scenePath,
   const std::string& meshName,
   const std::string& out,
   const double* time)
@@ -759,6 +1129,11 @@ int EvalGroundTruth(const std::string& scenePath,
   auto cage = SceneCage(scene, lightField, time);
   vtkSmartPointer<vtkImageData> texture;
   auto mesh = SourceMesh(meshName, texture);
+  if (cage)
+  {
+    // The light field's parts are its scene's boxes: so are the ground truth's.
+    mesh = LabelByScene(mesh, scene);
+  }
   vtkNew<vtkGroundTruthEvaluator> evaluator;
   evaluator->SetInputData(lightField);
   evaluator->SetMeshData(mesh);
@@ -766,20 +1141,45 @@ int EvalGroundTruth(const std::string& scenePath,
   evaluator->SetTextureData(texture);
   ApplySceneView(evaluator.Get(), scene);
   Run(evaluator.Get(), "ground-truth evaluation");
-  std::printf("object PSNR       %.2f dB\n", evaluator->GetPSNR());
-  std::printf("object SSIM       %.4f\n", evaluator->GetSSIM());
+  std::printf("PSNR (object)     %.2f dB\n", evaluator->GetPSNR());
+  std::printf("SSIM (object)     %.4f\n", evaluator->GetSSIM());
   std::printf("silhouette IoU    %.4f\n", evaluator->GetIoU());
   std::printf("label agreement   %.4f\n", evaluator->GetLabelAgreement());
   std::printf("object pixels     %lld\n", static_cast<long long>(evaluator->GetObjectPixels()));
   if (!out.empty())
   {
-    WriteImage(evaluator->GetOutput(0), out + "_lightfield.png");
-    WriteImage(evaluator->GetOutput(1), out + "_groundtruth.png");
+    // Both images or neither: each is written under a temporary name first.
+    const std::string names[2] = { out + "_lightfield.png", out + "_groundtruth.png" };
+    std::string temporaries[2];
+    for (int i = 0; i < 2; ++i)
+    {
+      temporaries[i] = lfd::io::TemporaryFileName(names[i]);
+      lfd::AliasPath(temporaries[i], names[i]);
+    }
+    try
+    {
+      WriteImage(evaluator->GetOutput(0), temporaries[0]);
+      WriteImage(evaluator->GetOutput(1), temporaries[1]);
+    }
+    catch (const Failure&)
+    {
+      lfd::io::RemoveQuietly(temporaries[0]);
+      lfd::io::RemoveQuietly(temporaries[1]);
+      throw;
+    }
+    for (int i = 0; i < 2; ++i)
+    {
+      std::string error;
+      if (!lfd::io::CommitFile(temporaries[i], names[i], error))
+      {
+        lfd::io::RemoveQuietly(temporaries[1]);
+        Fail(error);
+      }
+    }
   }
-  return 0;
 }
 
-int EvalLeaveOneOut(const std::string& path,
+void EvalLeaveOneOut(const std::string& path,
   int stride,
   const std::vector<int>& views,
   double focalDistance,
@@ -811,7 +1211,6 @@ int EvalLeaveOneOut(const std::string& path,
     evaluator->GetMeanPSNR(),
     evaluator->GetMeanObjectPSNR(),
     static_cast<long long>(table->GetNumberOfRows()));
-  return 0;
 }
 
 //------------------------------------------------------------------------------
@@ -834,7 +1233,7 @@ struct LatticeOptions
  * since they name the old points). The light field is the same one, its
  * path made relative to the new scene file.
  */
-int Lattice(const LatticeOptions& options)
+void Lattice(const LatticeOptions& options)
 {
   auto scene = ReadScene(options.Scene);
   if (!scene->HasCage())
@@ -889,10 +1288,7 @@ int Lattice(const LatticeOptions& options)
 
   scene->SetCage(cage);
   scene->RemoveAllKeyframes();
-  if (!scene->Write(options.Out.c_str()))
-  {
-    Fail(scene->GetErrorMessage());
-  }
+  WriteScene(scene, options.Out);
   double largest = 0.0;
   for (vtkIdType i = 0; i < cage->GetNumberOfPoints(); ++i)
   {
@@ -911,7 +1307,6 @@ int Lattice(const LatticeOptions& options)
     options.Dimensions[2],
     options.Subdivision,
     largest);
-  return 0;
 }
 
 /// Median time (s) of `repeat` updates of the renderer, after a warm-up.
@@ -930,7 +1325,7 @@ double MedianRenderTime(vtkLightFieldRenderer* renderer, int repeat)
   return times[times.size() / 2];
 }
 
-int Bench(int repeat, int size)
+void Bench(int repeat, int size)
 {
   std::printf("threads: %d (vtkSMPTools, %s backend)\n",
     vtkSMPTools::GetEstimatedNumberOfThreads(),
@@ -999,7 +1394,6 @@ int Bench(int repeat, int size)
       deformed / rest);
   }
   std::printf("(median of %d renders each)\n", repeat);
-  return 0;
 }
 
 /**
@@ -1047,6 +1441,14 @@ const DemoScene DemoScenes[] = {
     { 0, 1, 0 } },
 };
 
+/// What `lfd demo` writes into its folder: light fields, scenes, frame
+/// folders and contact sheets.
+const std::vector<std::string> DemoFiles = { "*.lf",
+  "*.json",
+  "frames",
+  "frames_*",
+  "contact_sheet*.png" };
+
 /// The object's mesh with every cell in part 1: one sub-light field for one box.
 vtkSmartPointer<vtkPolyData> SinglePart(vtkPolyData* mesh)
 {
@@ -1066,7 +1468,7 @@ vtkSmartPointer<vtkPolyData> SinglePart(vtkPolyData* mesh)
  * frames and a contact sheet. A second light writes its files with the
  * suffix "_fixed_light".
  */
-int Demo(const std::string& sceneName,
+void Demo(const std::string& sceneName,
   const std::string& out,
   int frames,
   int size,
@@ -1080,7 +1482,8 @@ int Demo(const std::string& sceneName,
       demo = &candidate;
     }
   }
-  vtksys::SystemTools::MakeDirectory(out);
+  StagedFolder folder(out, "lfd demo", DemoFiles);
+  const std::string& staged = folder.GetPath();
   vtkSmartPointer<vtkImageData> texture;
   vtkSmartPointer<vtkPolyData> mesh = SourceMesh(demo->Object, texture);
   if (demo->SingleBox)
@@ -1129,7 +1532,7 @@ int Demo(const std::string& sceneName,
     const double captureTime = Seconds(start);
     start = vtkTimerLog::GetUniversalTime();
     const std::string lightFieldName = std::string(demo->Object) + suffix + ".lf";
-    WriteLightField(lightField, out + "/" + lightFieldName);
+    WriteLightField(lightField, staged + "/" + lightFieldName);
     const double writeTime = Seconds(start);
 
     vtkNew<vtkLightFieldScene> scene;
@@ -1147,11 +1550,8 @@ int Demo(const std::string& sceneName,
     OrbitCamera(rig, 0.5 * step, 1.15, 0.0, 0.7 * rig->GetViewAngle(0), scene->GetCamera());
     scene->SetWidth(size);
     scene->SetHeight(size);
-    const std::string scenePath = out + "/" + demo->Name + suffix + ".json";
-    if (!scene->Write(scenePath.c_str()))
-    {
-      Fail(scene->GetErrorMessage());
-    }
+    const std::string sceneName = std::string(demo->Name) + suffix + ".json";
+    WriteScene(scene, staged + "/" + sceneName);
 
     std::printf("capture   %d views of %dx%d%s in %.2f s; written to %s/%s in %.2f s\n",
       lightField->GetNumberOfViews(),
@@ -1162,17 +1562,21 @@ int Demo(const std::string& sceneName,
       out.c_str(),
       lightFieldName.c_str(),
       writeTime);
-    std::printf("scene     %s (%lld boxes, %d keyframes: %s)\n",
-      scenePath.c_str(),
+    std::printf("scene     %s/%s (%lld boxes, %d keyframes: %s)\n",
+      out.c_str(),
+      sceneName.c_str(),
       static_cast<long long>(parts->GetOutput()->GetNumberOfBoxes()),
       keyframes + 1,
       demo->Motion);
-    const auto images = RenderAnimation(scene, lightField, frames, out + "/frames" + suffix);
-    const std::string sheet = out + "/contact_sheet" + suffix + ".png";
-    WriteImage(ContactSheet(images, 6, 128), sheet);
-    std::printf("sheet     %s\n", sheet.c_str());
+    start = vtkTimerLog::GetUniversalTime();
+    const std::string frameDir = "/frames" + suffix;
+    const auto images = RenderAnimation(scene, lightField, frames, staged + frameDir);
+    PrintAnimation(scene, frames, Seconds(start), staged + frameDir, out + frameDir);
+    const std::string sheet = "/contact_sheet" + suffix + ".png";
+    WriteImage(ContactSheet(images, 6, 128), staged + sheet);
+    std::printf("sheet     %s%s\n", out.c_str(), sheet.c_str());
   }
-  return 0;
+  folder.Commit();
 }
 
 //------------------------------------------------------------------------------
@@ -1274,7 +1678,7 @@ void RunSplit(vtkLightFieldSplitter* splitter, vtkLightField* input, const Split
   std::printf("wrote %s\n", options.Out.c_str());
 }
 
-int SplitProjector(const SplitOptions& options)
+void SplitProjector(const SplitOptions& options)
 {
   auto lightField = ReadLightField(options.In);
   vtkNew<vtkProjectorSegmentation> segmentation;
@@ -1285,10 +1689,9 @@ int SplitProjector(const SplitOptions& options)
   }
   RunSplit(segmentation, lightField, options);
   std::printf("sensor noise sigma: %.2f\n", segmentation->GetEstimatedNoise());
-  return 0;
 }
 
-int SplitScanline(const SplitOptions& options)
+void SplitScanline(const SplitOptions& options)
 {
   auto lightField = ReadLightField(options.In);
   vtkNew<vtkScanlineSplit> split;
@@ -1312,10 +1715,9 @@ int SplitScanline(const SplitOptions& options)
   }
   split->SetMorphologyRadius(options.Morphology);
   RunSplit(split, lightField, options);
-  return 0;
 }
 
-int SplitPropagate(const SplitOptions& options)
+void SplitPropagate(const SplitOptions& options)
 {
   auto lightField = ReadLightField(options.In);
   vtkNew<vtkLabelPropagation> propagation;
@@ -1350,10 +1752,9 @@ int SplitPropagate(const SplitOptions& options)
   RunSplit(propagation, lightField, options);
   std::printf(
     "proxy voxels: %lld\n", static_cast<long long>(propagation->GetNumberOfProxyVoxels()));
-  return 0;
 }
 
-int SplitCheck(const SplitOptions& options)
+void SplitCheck(const SplitOptions& options)
 {
   auto lightField = ReadLightField(options.In);
   auto scene = ReadScene(options.Scene);
@@ -1365,6 +1766,32 @@ int SplitCheck(const SplitOptions& options)
   {
     Fail(options.In +
       ": has no Label pass to check; split it first (lfd split projector|scanline|propagate)");
+  }
+  // Every box's label must have pixels and every label value a box: a
+  // mismatch (a scene written for another split) is warned about per label.
+  std::set<int> boxLabels;
+  vtkDataArray* cellLabels = scene->GetCage()->GetCellData()->GetArray("Label");
+  for (vtkIdType box = 0; cellLabels && box < cellLabels->GetNumberOfTuples(); ++box)
+  {
+    boxLabels.insert(static_cast<int>(cellLabels->GetTuple1(box)));
+  }
+  bool mismatch = false;
+  for (int label = 1; label < 256; ++label)
+  {
+    const bool boxed = boxLabels.count(label) > 0;
+    if (boxed != lightField->HasLabel(label))
+    {
+      mismatch = true;
+      lfd::ReportWarning(boxed
+          ? options.Scene + ": box label " + std::to_string(label) + " has no pixels in " +
+            options.In
+          : options.In + ": label " + std::to_string(label) + " has no box in " + options.Scene);
+    }
+  }
+  if (mismatch)
+  {
+    Fail("the labels of " + options.Scene + " and " + options.In +
+      " do not match (see the warnings); split again or fix the boxes' labels");
   }
   vtkNew<vtkBoxCoverageCheck> check;
   check->SetInputData(0, lightField);
@@ -1394,21 +1821,223 @@ int SplitCheck(const SplitOptions& options)
       std::to_string(check->GetThreshold()) + "); grow the boxes or fix the labels");
   }
   std::printf("every label is inside its boxes\n");
-  return 0;
+}
+
+//------------------------------------------------------------------------------
+// The command line itself
+
+/// Levenshtein distance: how many letters to insert, delete or change.
+std::size_t EditDistance(const std::string& a, const std::string& b)
+{
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+  {
+    row[j] = j;
+  }
+  for (std::size_t i = 1; i <= a.size(); ++i)
+  {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+    {
+      const std::size_t above = row[j];
+      row[j] = std::min({ row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1) });
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+/// " (did you mean 'X'?)" for the candidate nearest to `word` when it is
+/// close (at most a third of its letters differ), else "".
+std::string Suggestion(const std::string& word,
+  const std::vector<std::string>& candidates,
+  const std::string& prefix = "")
+{
+  std::string best;
+  std::size_t bestDistance = std::max<std::size_t>(1, word.size() / 3) + 1;
+  for (const std::string& candidate : candidates)
+  {
+    const std::size_t distance = EditDistance(word, candidate);
+    if (distance < bestDistance)
+    {
+      best = candidate;
+      bestDistance = distance;
+    }
+  }
+  return best.empty() ? "" : " (did you mean '" + prefix + best + "'?)";
+}
+
+/// "lfd eval loo" for the loo subcommand.
+std::string CommandName(const CLI::App* command)
+{
+  std::string name;
+  for (; command; command = command->get_parent())
+  {
+    name = (command->get_parent() ? command->get_name() : std::string("lfd")) +
+      (name.empty() ? "" : " " + name);
+  }
+  return name;
+}
+
+std::vector<std::string> SubcommandNames(const CLI::App* command)
+{
+  std::vector<std::string> names;
+  for (const CLI::App* sub : command->get_subcommands({}))
+  {
+    names.push_back(sub->get_name());
+  }
+  return names;
+}
+
+/// The deepest subcommand the parser selected (the root when none).
+CLI::App* SelectedCommand(CLI::App* app)
+{
+  for (;;)
+  {
+    const std::vector<CLI::App*> selected = app->get_subcommands();
+    if (selected.empty())
+    {
+      return app;
+    }
+    app = selected.front();
+  }
+}
+
+/**
+ * Checks the leading words of the command line name existing commands
+ * ("lfd rendr" would otherwise be "A subcommand is required"). Returns the
+ * usage error, or "".
+ */
+std::string CheckCommandWords(CLI::App* app, int argc, char* argv[])
+{
+  CLI::App* level = app;
+  for (int i = 1; i < argc && !level->get_subcommands({}).empty(); ++i)
+  {
+    const std::string word = argv[i];
+    if (word.empty() || word[0] == '-')
+    {
+      break;
+    }
+    const std::vector<std::string> names = SubcommandNames(level);
+    if (std::find(names.begin(), names.end(), word) == names.end())
+    {
+      std::string list;
+      for (const std::string& name : names)
+      {
+        list += (list.empty() ? "" : ", ") + name;
+      }
+      const std::string prefix = level == app ? "" : CommandName(level).substr(4) + " ";
+      const std::string hint = Suggestion(word, names, prefix);
+      return "unknown command '" + prefix + word + "'" +
+        (hint.empty() ? " (commands: " + list + ")" : hint);
+    }
+    level = level->get_subcommand(word);
+  }
+  return "";
+}
+
+/// One line for a command line CLI11 refused.
+std::string DescribeParseError(CLI::App* app, const CLI::ParseError& error)
+{
+  CLI::App* command = SelectedCommand(app);
+  const std::string name = CommandName(command);
+  if (dynamic_cast<const CLI::RequiredError*>(&error) &&
+    std::string(error.what()).find("subcommand") != std::string::npos)
+  {
+    std::string list;
+    for (const std::string& sub : SubcommandNames(command))
+    {
+      list += (list.empty() ? "" : ", ") + sub;
+    }
+    return name + ": a command is required: " + list;
+  }
+  return name + ": " + error.what() + " (see " + name + " --help)";
+}
+
+/// Arguments the parser could not place: an unknown option or a surplus word.
+std::string DescribeExtras(CLI::App* app)
+{
+  const std::vector<std::string> extras = app->remaining(true);
+  if (extras.empty())
+  {
+    return "";
+  }
+  CLI::App* command = SelectedCommand(app);
+  const std::string name = CommandName(command);
+  const std::string extra = extras.front();
+  if (extra.size() > 1 && extra[0] == '-')
+  {
+    std::vector<std::string> options;
+    for (const CLI::Option* option : command->get_options())
+    {
+      for (const std::string& longName : option->get_lnames())
+      {
+        options.push_back("--" + longName);
+      }
+    }
+    const std::string word = extra.substr(0, extra.find('='));
+    const std::string hint = Suggestion(word, options);
+    return name + ": unknown option '" + word + "'" +
+      (hint.empty() ? " (see " + name + " --help)" : hint);
+  }
+  return name + ": unexpected argument '" + extra + "' (see " + name + " --help)";
+}
+
+/// Commands that capture or render meshes open an OpenGL window, which
+/// aborts the process without an X display: say so first.
+void RequireDisplay(const CLI::App* command)
+{
+  if (lfd::DisplayAvailable())
+  {
+    return;
+  }
+  const char* display = std::getenv("DISPLAY");
+  const std::string name = CommandName(command);
+  Fail(name + " renders with OpenGL and needs an X display (" +
+    (display && *display ? "cannot open DISPLAY=" + std::string(display) : "DISPLAY is not set") +
+    "); run it as: xvfb-run -a " + name + " ...");
+}
+
+/// Footer of every command's --help.
+const char* ExitStatusHelp =
+  "Exit status: 0 done; 1 refused input or failed (one 'lfd: error:' line, no output "
+  "written); 2 malformed command line (unknown command or option, missing argument, value "
+  "not among the choices).";
+
+/// Every command: extras collected (reported by DescribeExtras, with a
+/// suggestion) and the exit statuses in its --help.
+void ConfigureCommands(CLI::App* command)
+{
+  command->allow_extras();
+  command->footer(ExitStatusHelp);
+  for (CLI::App* sub : command->get_subcommands({}))
+  {
+    ConfigureCommands(sub);
+  }
 }
 }
 
-int main(int argc, char* argv[])
+namespace
 {
-  lfd::InstallConsoleOutput();
+/// Frames of `lfd animate` and `lfd demo`: an hour at 24 frames/s is plenty.
+constexpr int MaximumFrames = 100000;
+
+/// The commands, their options and what they run.
+int Main(int argc, char* argv[])
+{
   CLI::App app{ "LightField Deform: capture, render and deform light fields.\n"
                 "Run 'lfd <command> --help' for the options of a command." };
   app.require_subcommand(1);
+  app.set_version_flag("--version", "lfd " LFD_VERSION, "print the version (lfd X.Y.Z) and exit");
+  NumericOptions numbers;
+  vtkNew<vtkLightFieldCapture> captureLimits;
+  const int largestImage = captureLimits->GetWidthMaxValue();
 
   SynthOptions synth;
   auto* synthCommand = app.add_subcommand("synth",
-    "capture a synthetic light field of a mesh or a built-in object (needs an X server: "
-    "run under xvfb-run -a)");
+    "capture a synthetic light field of a mesh or a built-in object into the dataset folder "
+    "OUT (replaced when complete); needs an X display (xvfb-run -a)");
   synthCommand->add_option("--mesh", synth.Mesh, "mesh file (.ply .obj .stl .vtp .vtk)");
   synthCommand->add_option("--texture",
     synth.Texture,
@@ -1416,109 +2045,140 @@ int main(int argc, char* argv[])
     "coordinates");
   synthCommand->add_option("--scene",
     synth.Scene,
-    "scene.json whose rest boxes label the mesh (a triangle takes the box holding its centroid)");
+    "scene.json whose rest boxes label the mesh (a triangle takes the box holding its centroid); "
+    "its boxes are validated as lfd render validates them");
   synthCommand->add_option("--out", synth.Out, "output light-field directory")->required();
-  AddSynthOptions(synthCommand, synth);
+  AddSynthOptions(synthCommand, synth, numbers);
 
   auto* importCommand = app.add_subcommand("import", "import a calibrated image set");
   importCommand->require_subcommand(1);
   std::string par, importOut;
-  auto* middlebury = importCommand->add_subcommand(
-    "middlebury", "Middlebury multi-view stereo set (*_par.txt: name k11..k33 r11..r33 t1 t2 t3)");
+  auto* middlebury = importCommand->add_subcommand("middlebury",
+    "Middlebury multi-view stereo set (*_par.txt: name k11..k33 r11..r33 t1 t2 t3) into the "
+    "dataset folder OUT (replaced when complete)");
   middlebury->add_option("PAR_FILE", par, "the *_par.txt file")->required();
   middlebury->add_option("--out", importOut, "output light-field directory")->required();
 
   std::string infoPath;
-  auto* infoCommand = app.add_subcommand("info", "describe a light field and fit its rig");
+  auto* infoCommand = app.add_subcommand(
+    "info", "describe a light field and fit its rig (prints only, writes nothing)");
   infoCommand->add_option("DIR", infoPath, "light-field directory")->required();
 
   std::string scenePath, renderOut;
   double renderTime = 0.0;
-  auto* renderCommand = app.add_subcommand(
-    "render", "render a scene's camera view of its light field, deformed by its cage");
+  auto* renderCommand = app.add_subcommand("render",
+    "render a scene's camera view of its light field, deformed by its cage, into the image OUT "
+    "(replaced when complete)");
   renderCommand->add_option("SCENE", scenePath, "scene.json")->required();
   renderCommand->add_option("--out", renderOut, "output image (.png, .exr, ...)")->required();
-  auto* timeOption = renderCommand->add_option(
-    "--time", renderTime, "time of the keyframes to render (default: the cage's points)");
+  auto* timeOption = numbers.AddReal(renderCommand,
+    "--time",
+    renderTime,
+    "time of the keyframes to render (default: the cage's points)");
 
   std::string animateScene, animateOut;
   int animateFrames = 48;
   auto* animateCommand = app.add_subcommand("animate",
-    "render the scene's keyframes (Catmull-Rom) as PNG frames, and an MP4 when ffmpeg is "
-    "installed");
+    "render the scene's keyframes (Catmull-Rom) into the folder OUT: frame_NNNN.png, and "
+    "animation.mp4 when ffmpeg is installed; replaces OUT when complete (an existing OUT may "
+    "hold only such files)");
   animateCommand->add_option("SCENE", animateScene, "scene.json with keyframes")->required();
-  animateCommand->add_option("--frames", animateFrames, "number of frames")->capture_default_str();
+  numbers.Add(animateCommand, "--frames", animateFrames, 1, MaximumFrames, "number of frames");
   animateCommand->add_option("--out", animateOut, "output folder")->required();
 
   auto* evalCommand = app.add_subcommand("eval", "measure rendering quality");
   evalCommand->require_subcommand(1);
   std::string gtScene, gtMesh, gtOut;
   auto* groundTruth = evalCommand->add_subcommand("groundtruth",
-    "render the source mesh deformed by the scene's cage and compare it with the deformed "
-    "light field: object PSNR, SSIM, silhouette IoU, label agreement");
+    "render the source mesh, labelled by the scene's rest boxes and deformed by its cage, and "
+    "compare it with the deformed light field: PSNR and SSIM over the object pixels, "
+    "silhouette IoU, label agreement (prints; writes images only with --out); needs an X "
+    "display (xvfb-run -a)");
   groundTruth->add_option("SCENE", gtScene, "scene.json")->required();
   groundTruth
     ->add_option(
       "--mesh", gtMesh, "the light field's source: fish, figure, checkerboard or a mesh file")
     ->required();
-  groundTruth->add_option("--out", gtOut, "also write OUT_lightfield.png and OUT_groundtruth.png");
+  groundTruth->add_option("--out",
+    gtOut,
+    "also write OUT_lightfield.png and OUT_groundtruth.png (both or neither, replaced when "
+    "complete)");
   double gtTime = 0.0;
-  auto* gtTimeOption = groundTruth->add_option(
-    "--time", gtTime, "time of the keyframes to evaluate (default: the cage's points)");
+  auto* gtTimeOption = numbers.AddReal(groundTruth,
+    "--time",
+    gtTime,
+    "time of the keyframes to evaluate (default: the cage's points)");
   std::string looPath;
   int looStride = 1;
   std::vector<int> looViews;
   double looFocal = 0.0;
   int looThreshold = 20;
+  vtkNew<vtkLeaveOneOutEvaluator> looLimits;
   auto* loo = evalCommand->add_subcommand("loo",
-    "leave-one-out: render each chosen view from all the others, print PSNR per view and mean");
+    "leave-one-out: render each chosen view from all the others, print PSNR per view and mean "
+    "(writes nothing)");
   loo->add_option("DIR", looPath, "light-field directory")->required();
-  loo->add_option("--stride", looStride, "evaluate every N-th view")->capture_default_str();
-  loo->add_option("--views", looViews, "evaluate these views (overrides --stride)")->delimiter(',');
-  loo->add_option("--focal-distance", looFocal, "focal distance d")->capture_default_str();
-  loo
-    ->add_option(
-      "--threshold", looThreshold, "object pixel threshold (0-255) for light fields without labels")
-    ->capture_default_str();
+  numbers.Add(loo,
+    "--stride",
+    looStride,
+    looLimits->GetStrideMinValue(),
+    looLimits->GetStrideMaxValue(),
+    "evaluate every N-th view");
+  numbers
+    .Add(loo, "--views", looViews, 0, VTK_INT_MAX, "evaluate these views (overrides --stride)")
+    ->delimiter(',');
+  numbers.AddReal(loo, "--focal-distance", looFocal, "focal distance d");
+  numbers.Add(loo,
+    "--threshold",
+    looThreshold,
+    looLimits->GetObjectThresholdMinValue(),
+    looLimits->GetObjectThresholdMaxValue(),
+    "object pixel threshold for light fields without labels");
 
   LatticeOptions lattice;
+  vtkNew<vtkLatticeCageFilter> latticeLimits;
   auto* latticeCommand = app.add_subcommand("lattice",
     "bend a scene's boxes with a smooth lattice (Sederberg-Parry free-form deformation) sampled "
-    "into boxes; writes a scene with the deformed cage");
+    "into boxes; writes the scene file OUT with the deformed cage (replaced when complete)");
   latticeCommand->add_option("SCENE", lattice.Scene, "scene.json with a cage")->required();
   latticeCommand->add_option("--out", lattice.Out, "output scene.json")->required();
-  latticeCommand
-    ->add_option("--dimensions", lattice.Dimensions, "control points per axis x y z (2..16)")
-    ->expected(3)
-    ->check(CLI::Range(2, 16))
-    ->capture_default_str();
-  latticeCommand
-    ->add_option("--move",
+  numbers
+    .Add(latticeCommand, "--dimensions", lattice.Dimensions, 2, 16, "control points per axis x y z")
+    ->expected(3);
+  numbers
+    .AddReal(latticeCommand,
+      "--move",
       lattice.Moves,
       "I J K DX DY DZ: move control point (I, J, K) by (DX, DY, DZ); repeat for more")
     ->expected(6)
     ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  latticeCommand
-    ->add_option("--region",
+  numbers
+    .AddReal(latticeCommand,
+      "--region",
       lattice.Region,
       "XMIN XMAX YMIN YMAX ZMIN ZMAX of the lattice (default: the cage's rest bounds)")
     ->expected(6);
-  latticeCommand
-    ->add_option("--subdivision", lattice.Subdivision, "split each box into K^3 sub-boxes")
-    ->check(CLI::Range(1, 32))
-    ->capture_default_str();
+  numbers.Add(latticeCommand,
+    "--subdivision",
+    lattice.Subdivision,
+    latticeLimits->GetSubdivisionMinValue(),
+    latticeLimits->GetSubdivisionMaxValue(),
+    "split each box into K^3 sub-boxes");
 
   int benchRepeat = 15, benchSize = 512;
   auto* benchCommand = app.add_subcommand("bench",
-    "print rays/s and ms/frame of the renderer on fixed scenes (median of repeated renders)");
-  benchCommand->add_option("--repeat", benchRepeat, "renders per scene")->capture_default_str();
-  benchCommand->add_option("--size", benchSize, "image width and height")->capture_default_str();
+    "print rays/s and ms/frame of the renderer on fixed scenes (median of repeated renders; "
+    "writes nothing); needs an X display (xvfb-run -a)");
+  numbers.Add(benchCommand, "--repeat", benchRepeat, 1, 1000, "renders per scene");
+  numbers.Add(benchCommand, "--size", benchSize, 1, largestImage, "image width and height");
 
   std::string demoOut;
   int demoFrames = 36, demoSize = 512;
   auto* demoCommand = app.add_subcommand("demo",
     "synthesise a built-in scene (default: the fish, in a cage of 3 boxes, swimming) and render "
-    "its animation (light field, scene file, frames, contact sheet, MP4 with ffmpeg)");
+    "its animation into the folder OUT: light field(s) *.lf, scene file(s) *.json, frames*/, "
+    "contact_sheet*.png (MP4s with ffmpeg); replaces OUT when complete (an existing OUT may hold "
+    "only such files); needs an X display (xvfb-run -a)");
   std::string demoScene = "fish";
   demoCommand
     ->add_option("--scene",
@@ -1530,19 +2190,37 @@ int main(int argc, char* argv[])
     ->capture_default_str();
   demoCommand->add_option(
     "--out", demoOut, "output folder (default: lfd-demo, or lfd-demo-SCENE for the others)");
-  demoCommand->add_option("--frames", demoFrames, "number of frames")->capture_default_str();
-  demoCommand->add_option("--size", demoSize, "frame width and height")->capture_default_str();
+  numbers.Add(demoCommand, "--frames", demoFrames, 1, MaximumFrames, "number of frames");
+  numbers.Add(demoCommand, "--size", demoSize, 1, largestImage, "frame width and height");
   SynthOptions demoCapture;
-  demoCommand->add_option("--views", demoCapture.Views, "captured views per ring")
-    ->capture_default_str();
-  demoCommand->add_option("--rows", demoCapture.Rows, "captured rings")->capture_default_str();
-  demoCommand->add_option("--capture-size", demoCapture.Width, "captured views' width and height")
-    ->capture_default_str();
+  numbers.Add(demoCommand,
+    "--views",
+    demoCapture.Views,
+    captureLimits->GetViewsPerRingMinValue(),
+    captureLimits->GetViewsPerRingMaxValue(),
+    "captured views per ring");
+  numbers.Add(demoCommand,
+    "--rows",
+    demoCapture.Rows,
+    captureLimits->GetNumberOfRowsMinValue(),
+    captureLimits->GetNumberOfRowsMaxValue(),
+    "captured rings");
+  numbers.Add(demoCommand,
+    "--capture-size",
+    demoCapture.Width,
+    captureLimits->GetWidthMinValue(),
+    largestImage,
+    "captured views' width and height");
 
   SplitOptions split;
+  vtkNew<vtkProjectorSegmentation> projectorLimits;
+  vtkNew<vtkScanlineSplit> scanlineLimits;
+  vtkNew<vtkLabelPropagation> propagationLimits;
+  vtkNew<vtkBoxCoverageCheck> checkLimits;
   auto* splitCommand = app.add_subcommand("split",
     "split a light field into parts: label its rays (projector masks, image rows, or labels "
-    "painted in a few views), or check the boxes against the labels");
+    "painted in a few views) into the dataset folder OUT (IN + Label, replaced when complete), "
+    "or check the boxes against the labels");
   splitCommand->require_subcommand(1);
   auto addSplitIO = [&split](CLI::App* command)
   {
@@ -1557,25 +2235,43 @@ int main(int argc, char* argv[])
     "label by the projector colour masks: Eq. 1 normalisation of Coded by Flood, nearest "
     "palette colour (CIELAB), morphological clean-up");
   addSplitIO(splitProjector);
-  splitProjector->add_option("--dark",
-    split.Threshold,
-    "Flood level below which a channel is dark (default: from the noise)");
-  splitProjector
-    ->add_option("--morphology", split.Morphology, "clean-up radius in pixels (0 = none)")
-    ->capture_default_str();
+  numbers
+    .Add(splitProjector,
+      "--dark",
+      split.Threshold,
+      0.0,
+      255.0,
+      "Flood level below which a channel is dark (default: from the noise)")
+    ->default_str("");
+  numbers.Add(splitProjector,
+    "--morphology",
+    split.Morphology,
+    projectorLimits->GetMorphologyRadiusMinValue(),
+    projectorLimits->GetMorphologyRadiusMaxValue(),
+    "clean-up radius in pixels (0 = none)");
   auto* splitScanline = splitCommand->add_subcommand("scanline",
     "label by image rows within the object (aligned rings): band 1 above the first row, ...");
   addSplitIO(splitScanline);
-  splitScanline->add_option("--rows", split.Rows, "boundary rows, from the top")
+  numbers.Add(splitScanline, "--rows", split.Rows, 0, VTK_INT_MAX, "boundary rows, from the top")
     ->delimiter(',')
     ->required();
-  splitScanline->add_option("--labels", split.Labels, "label of each band (default 1, 2, ...)")
+  numbers
+    .Add(splitScanline, "--labels", split.Labels, 1, 255, "label of each band (default 1, 2, ...)")
     ->delimiter(',');
-  splitScanline->add_option("--threshold",
-    split.Threshold,
-    "object brightness threshold when IN has no Label pass (default 10)");
-  splitScanline->add_option("--morphology", split.Morphology, "clean-up radius of the object mask")
-    ->capture_default_str();
+  numbers
+    .Add(splitScanline,
+      "--threshold",
+      split.Threshold,
+      scanlineLimits->GetThresholdMinValue(),
+      scanlineLimits->GetThresholdMaxValue(),
+      "object brightness threshold when IN has no Label pass (default 10)")
+    ->default_str("");
+  numbers.Add(splitScanline,
+    "--morphology",
+    split.Morphology,
+    scanlineLimits->GetMorphologyRadiusMinValue(),
+    scanlineLimits->GetMorphologyRadiusMaxValue(),
+    "clean-up radius of the object mask");
   auto* splitPropagate = splitCommand->add_subcommand("propagate",
     "carry labels painted in a few views to every view through the Depth pass or a visual hull");
   addSplitIO(splitPropagate);
@@ -1585,86 +2281,133 @@ int main(int argc, char* argv[])
   splitPropagate->add_option("--proxy", split.Proxy, "auto (depth when present), depth or hull")
     ->check(CLI::IsMember({ "auto", "depth", "hull" }))
     ->capture_default_str();
-  splitPropagate
-    ->add_option("--resolution", split.Resolution, "proxy voxels along its longest side")
-    ->check(CLI::Range(8, 1024))
-    ->capture_default_str();
-  splitPropagate
-    ->add_option("--tolerance",
-      split.Tolerance,
-      "pixels of silhouette or calibration error the visual hull tolerates")
-    ->check(CLI::Range(0.0, 100.0))
-    ->capture_default_str();
-  splitPropagate->add_option(
-    "--threshold", split.Threshold, "silhouette brightness threshold (default 20)");
+  numbers.Add(splitPropagate,
+    "--resolution",
+    split.Resolution,
+    propagationLimits->GetResolutionMinValue(),
+    propagationLimits->GetResolutionMaxValue(),
+    "proxy voxels along its longest side");
+  numbers.Add(splitPropagate,
+    "--tolerance",
+    split.Tolerance,
+    propagationLimits->GetSilhouetteToleranceMinValue(),
+    propagationLimits->GetSilhouetteToleranceMaxValue(),
+    "pixels of silhouette or calibration error the visual hull tolerates");
+  numbers
+    .Add(splitPropagate,
+      "--threshold",
+      split.Threshold,
+      propagationLimits->GetThresholdMinValue(),
+      propagationLimits->GetThresholdMaxValue(),
+      "silhouette brightness threshold (default 20)")
+    ->default_str("");
   auto* splitCheck = splitCommand->add_subcommand("check",
     "project each rest box into every view and report the fraction of its label's pixels "
-    "inside; exits 1 under the threshold");
+    "inside (writes nothing); exits 1 under the threshold, or when a box label has no pixels "
+    "or a label no box");
   splitCheck->add_option("IN", split.In, "light-field directory (with a Label pass)")->required();
   splitCheck->add_option("--scene", split.Scene, "scene.json whose cage holds the boxes")
     ->required();
-  splitCheck->add_option(
-    "--threshold", split.Threshold, "smallest acceptable fraction (default 0.95)");
+  numbers
+    .Add(splitCheck,
+      "--threshold",
+      split.Threshold,
+      checkLimits->GetThresholdMinValue(),
+      checkLimits->GetThresholdMaxValue(),
+      "smallest acceptable fraction (default 0.95)")
+    ->default_str("");
 
-  CLI11_PARSE(app, argc, argv);
+  ConfigureCommands(&app);
+  const std::string unknown = CheckCommandWords(&app, argc, argv);
+  if (!unknown.empty())
+  {
+    lfd::ReportError(unknown);
+    return 2;
+  }
   try
   {
+    app.parse(argc, argv);
+  }
+  catch (const CLI::Success& success) // --help, --version
+  {
+    return app.exit(success);
+  }
+  catch (const CLI::ParseError& error)
+  {
+    const std::string extras = DescribeExtras(&app);
+    lfd::ReportError(extras.empty() ? DescribeParseError(&app, error) : extras);
+    return 2;
+  }
+  const std::string extras = DescribeExtras(&app);
+  if (!extras.empty())
+  {
+    lfd::ReportError(extras);
+    return 2;
+  }
+
+  try
+  {
+    numbers.Convert();
+    if (*synthCommand || *groundTruth || *benchCommand || *demoCommand)
+    {
+      RequireDisplay(SelectedCommand(&app));
+    }
     if (*synthCommand)
     {
-      return Synth(synth);
+      Synth(synth);
     }
-    if (*middlebury)
+    else if (*middlebury)
     {
-      return ImportMiddlebury(par, importOut);
+      ImportMiddlebury(par, importOut);
     }
-    if (*infoCommand)
+    else if (*infoCommand)
     {
-      return Info(infoPath);
+      Info(infoPath);
     }
-    if (*renderCommand)
+    else if (*renderCommand)
     {
-      return Render(scenePath, renderOut, *timeOption ? &renderTime : nullptr);
+      Render(scenePath, renderOut, *timeOption ? &renderTime : nullptr);
     }
-    if (*animateCommand)
+    else if (*animateCommand)
     {
-      return Animate(animateScene, animateFrames, animateOut);
+      Animate(animateScene, animateFrames, animateOut);
     }
-    if (*groundTruth)
+    else if (*groundTruth)
     {
-      return EvalGroundTruth(gtScene, gtMesh, gtOut, *gtTimeOption ? &gtTime : nullptr);
+      EvalGroundTruth(gtScene, gtMesh, gtOut, *gtTimeOption ? &gtTime : nullptr);
     }
-    if (*loo)
+    else if (*loo)
     {
-      return EvalLeaveOneOut(looPath, looStride, looViews, looFocal, looThreshold);
+      EvalLeaveOneOut(looPath, looStride, looViews, looFocal, looThreshold);
     }
-    if (*splitProjector)
+    else if (*splitProjector)
     {
-      return SplitProjector(split);
+      SplitProjector(split);
     }
-    if (*splitScanline)
+    else if (*splitScanline)
     {
-      return SplitScanline(split);
+      SplitScanline(split);
     }
-    if (*splitPropagate)
+    else if (*splitPropagate)
     {
-      return SplitPropagate(split);
+      SplitPropagate(split);
     }
-    if (*splitCheck)
+    else if (*splitCheck)
     {
-      return SplitCheck(split);
+      SplitCheck(split);
     }
-    if (*latticeCommand)
+    else if (*latticeCommand)
     {
-      return Lattice(lattice);
+      Lattice(lattice);
     }
-    if (*benchCommand)
+    else if (*benchCommand)
     {
-      return Bench(benchRepeat, benchSize);
+      Bench(benchRepeat, benchSize);
     }
-    if (*demoCommand)
+    else if (*demoCommand)
     {
       demoCapture.Height = demoCapture.Width;
-      return Demo(demoScene,
+      Demo(demoScene,
         demoOut.empty() ? (demoScene == "fish" ? "lfd-demo" : "lfd-demo-" + demoScene) : demoOut,
         demoFrames,
         demoSize,
@@ -1677,7 +2420,32 @@ int main(int argc, char* argv[])
     {
       lfd::ReportError(failure.Message);
     }
-    return 1;
+  }
+  // Whatever reported an error, a refusal of ours or any VTK object's
+  // message, decides the exit status.
+  return lfd::ErrorReported() ? 1 : 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  lfd::InstallConsoleOutput();
+  // No exception leaves lfd: whatever escapes a command is one error line.
+  try
+  {
+    return Main(argc, argv);
+  }
+  catch (const std::bad_alloc&)
+  {
+    lfd::ReportError("out of memory");
+  }
+  catch (const std::exception& exception)
+  {
+    lfd::ReportError(exception.what());
+  }
+  catch (...)
+  {
+    lfd::ReportError("unexpected internal error");
   }
   return 1;
 }

@@ -9,14 +9,34 @@
 #include "vtkOutputWindow.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <set>
 #include <unistd.h>
+#include <utility>
+#include <vector>
+
+// Last: Xlib's macros (Status, Bool, None) would rename identifiers in the headers above.
+#include <X11/Xlib.h>
 
 namespace
 {
 bool errorReported = false;
 std::set<std::string> reported;
+std::vector<std::pair<std::string, std::string>> aliases; // temporary, target
+
+std::string ApplyAliases(std::string message)
+{
+  for (const auto& alias : aliases)
+  {
+    for (std::size_t at = message.find(alias.first); at != std::string::npos;
+         at = message.find(alias.first, at + alias.second.size()))
+    {
+      message.replace(at, alias.first.size(), alias.second);
+    }
+  }
+  return message;
+}
 
 /// VTK formats errors as "ERROR: In <file>, line <n>\n<class> (<address>): <message>\n\n":
 /// keep the message only.
@@ -61,10 +81,7 @@ public:
     }
     lfd::ReportError(message);
   }
-  void DisplayWarningText(const char* text) override
-  {
-    std::cerr << "lfd: warning: " << StripLocation(text) << std::endl;
-  }
+  void DisplayWarningText(const char* text) override { lfd::ReportWarning(StripLocation(text)); }
   void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
   void DisplayText(const char* text) override { std::cout << text; }
   void DisplayDebugText(const char*) override {}
@@ -130,10 +147,37 @@ bool ErrorReported()
 void ReportError(const std::string& message)
 {
   errorReported = true;
-  if (reported.insert(message).second) // an error a class logged and returned is said once
+  const std::string text = ApplyAliases(message);
+  if (reported.insert(text).second) // an error a class logged and returned is said once
   {
-    std::cerr << "lfd: error: " << message << std::endl;
+    std::cerr << "lfd: error: " << text << std::endl;
   }
+}
+
+void ReportWarning(const std::string& message)
+{
+  std::cerr << "lfd: warning: " << ApplyAliases(message) << std::endl;
+}
+
+void AliasPath(const std::string& temporary, const std::string& target)
+{
+  aliases.emplace_back(temporary, target);
+}
+
+bool DisplayAvailable()
+{
+  const char* name = std::getenv("DISPLAY");
+  if (!name || !*name)
+  {
+    return false;
+  }
+  Display* display = XOpenDisplay(name);
+  if (!display)
+  {
+    return false;
+  }
+  XCloseDisplay(display);
+  return true;
 }
 
 void ShowProgress(vtkAlgorithm* algorithm, const std::string& what)

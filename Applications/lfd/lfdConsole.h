@@ -25,6 +25,22 @@ bool ErrorReported();
 /// Prints "lfd: error: <message>" on stderr, once per distinct message.
 void ReportError(const std::string& message);
 
+/// Prints "lfd: warning: <message>" on stderr.
+void ReportWarning(const std::string& message);
+
+/**
+ * From now on, messages name `target` where they would name `temporary`: an
+ * output staged under a temporary name is reported under the name the user
+ * gave.
+ */
+void AliasPath(const std::string& temporary, const std::string& target);
+
+/**
+ * True when an X display can be opened (DISPLAY set and the server answers):
+ * VTK's OpenGL windows abort the process without one.
+ */
+bool DisplayAvailable();
+
 /**
  * Shows the algorithm's progress events on stderr, labelled `what`: a bar
  * redrawn in place on a terminal, one line per 10% otherwise (logs).
