@@ -502,8 +502,10 @@ public:
   explicit ErrorCatcher(vtkObject* object)
   {
     this->Callback->SetCallback(
-      [](vtkObject*, unsigned long, void* clientData, void* callData) {
-        *static_cast<std::string*>(clientData) = callData ? static_cast<const char*>(callData) : "";
+      [](vtkObject*, unsigned long, void* clientData, void* callData)
+      {
+        *static_cast<std::string*>(clientData) =
+          lfd::StripLocation(static_cast<const char*>(callData));
       });
     this->Callback->SetClientData(&this->Message);
     object->AddObserver(vtkCommand::ErrorEvent, this->Callback);

@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-// Last: Xlib's macros (Status, Bool, None) would rename identifiers in the headers above.
+// Last: Xlib's macros (Status, Bool, None) must not reach the VTK headers.
 #include <X11/Xlib.h>
 
 namespace
@@ -38,8 +38,10 @@ std::string ApplyAliases(std::string message)
   return message;
 }
 
-/// VTK formats errors as "ERROR: In <file>, line <n>\n<class> (<address>): <message>\n\n":
-/// keep the message only.
+}
+
+namespace lfd
+{
 std::string StripLocation(const char* text)
 {
   std::string message(text ? text : "");
@@ -57,6 +59,11 @@ std::string StripLocation(const char* text)
   }
   return message;
 }
+}
+
+namespace
+{
+using lfd::StripLocation;
 
 class ConsoleOutputWindow : public vtkOutputWindow
 {

@@ -19,6 +19,13 @@ namespace lfd
  */
 void InstallConsoleOutput();
 
+/**
+ * The message of a VTK error or warning text without VTK's prefix
+ * ("ERROR: In <file>, line <n>\n<class> (<address>): ") and trailing blank
+ * lines: what an ErrorEvent observer receives, said in one line.
+ */
+std::string StripLocation(const char* text);
+
 /// True once any VTK error has been reported.
 bool ErrorReported();
 

@@ -135,7 +135,8 @@ writer.SetFileName(ply)
 writer.SetInputData(mesh)
 writer.SetArrayName("RGB")
 writer.Write()
-layers = [[[x, y, z] for x, z in ((-1, -1), (1, -1), (1, 1), (-1, 1))] for y in (-1, 0, 1)]
+# Each layer counter-clockwise seen from +y: VTK hexahedron order (synth refuses inverted boxes).
+layers = [[[x, y, z] for x, z in ((-1, 1), (1, 1), (1, -1), (-1, -1))] for y in (-1, 0, 1)]
 boxes = os.path.join(WORK, "boxes.json")
 with open(boxes, "w") as f:
     json.dump({"format": "lfd-scene", "version": 1, "lightfield": "sphere.lf",
@@ -173,7 +174,8 @@ with open(one_box, "w") as f:
     json.dump({"format": "lfd-scene", "version": 1, "lightfield": "sphere.lf",
                "cage": {"rest_points": [p for layer in layers for p in layer],
                         "boxes": [{"corners": list(range(0, 8)), "label": 1}]}}, f)
-expect_error(["split", "check", split_lf, "--scene", one_box], "outside their boxes")
+expect_error(["split", "check", split_lf, "--scene", one_box], "one_box.json", "sphere_split.lf",
+             "do not match")
 unlabelled = os.path.join(WORK, "unlabelled.lf")
 shutil.copytree(projected, unlabelled)
 with open(os.path.join(unlabelled, "lightfield.json")) as f:
