@@ -90,7 +90,9 @@ public:
    * The figures, after Update(): PSNR (dB, 100 when equal) and SSIM (mean
    * over 7x7 windows centred on object pixels, luminance) over the object
    * pixels, silhouette IoU, label agreement over the object pixels, and the
-   * number of object pixels.
+   * number of object pixels. SSIM is measured on the object region only,
+   * never the whole image (the background would inflate it): `lfd eval
+   * groundtruth` prints it as "SSIM (object)", next to "PSNR (object)".
    */
   vtkGetMacro(PSNR, double);
   vtkGetMacro(SSIM, double);

@@ -176,6 +176,21 @@ with open(one_box, "w") as f:
                         "boxes": [{"corners": list(range(0, 8)), "label": 1}]}}, f)
 expect_error(["split", "check", split_lf, "--scene", one_box], "one_box.json", "sphere_split.lf",
              "do not match")
+code, _, err = lfd("split", "check", split_lf, "--scene", one_box)
+t.check(f"lfd: warning: {split_lf}: label 2 has no box in {one_box}" in err.splitlines(),
+        "split check warns of a label without a box", err.strip())
+three_boxes = os.path.join(WORK, "three_boxes.json")
+with open(three_boxes, "w") as f:
+    json.dump({"format": "lfd-scene", "version": 1, "lightfield": "sphere.lf",
+               "cage": {"rest_points": [p for layer in layers for p in layer],
+                        "boxes": [{"corners": list(range(0, 8)), "label": 1},
+                                  {"corners": list(range(4, 12)), "label": 2},
+                                  {"corners": list(range(4, 12)), "label": 3}]}}, f)
+code, _, err = lfd("split", "check", split_lf, "--scene", three_boxes)
+errors = [line for line in err.splitlines() if line.startswith("lfd: error:")]
+t.check(code == 1 and f"lfd: warning: {three_boxes}: box label 3 has no pixels in {split_lf}"
+        in err.splitlines() and len(errors) == 1 and "do not match" in errors[0],
+        "split check: a box label without pixels warns and exits 1", err.strip())
 unlabelled = os.path.join(WORK, "unlabelled.lf")
 shutil.copytree(projected, unlabelled)
 with open(os.path.join(unlabelled, "lightfield.json")) as f:
@@ -298,6 +313,14 @@ t.check(listing == ["contact_sheet.png", "figure.lf", "frames", "twist.json"],
         listing or err.strip())
 if listing:
     check_demo_scene(twist_demo, "twist.json", "figure.lf", "frames", 1)
+# The ground truth takes its parts from the scene's one box, as the light
+# field did: the figure's own three parts agreed on 0.126 of the pixels
+# (measured 0.978 now).
+code, out, err = lfd("eval", "groundtruth", os.path.join(twist_demo, "twist.json"), "--mesh", "figure")
+figures = dict(line.rsplit(None, 1) for line in out.splitlines() if line[:1].isalpha()) if code == 0 else {}
+t.check(float(figures.get("label agreement", 0)) > 0.95 and "SSIM (object)" in figures
+        and "PSNR (object)" in out, "eval groundtruth --mesh figure: parts from the scene's box",
+        figures or err.strip())
 
 board_demo = os.path.join(WORK, "demo-board")
 code, out, err = lfd("demo", "--scene", "checkerboard", "--out", board_demo, *SMALL)
