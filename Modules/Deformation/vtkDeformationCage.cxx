@@ -403,10 +403,6 @@ bool vtkDeformationCage::Validate(vtkLightField* lightField)
       "cage: the cell array \"Label\" is missing or does not hold one value per box");
   }
 
-  // A box moves the rays of its label only (paper Sec. 4), so a label the
-  // light field's Label pass never holds is an error.
-  const bool checkLabels = lightField && lightField->GetPass(vtkLightField::LABEL);
-
   std::vector<lfd::Hexahedron> restBoxes(numberOfBoxes);
   for (vtkIdType b = 0; b < numberOfBoxes; ++b)
   {
@@ -439,11 +435,6 @@ bool vtkDeformationCage::Validate(vtkLightField* lightField)
     {
       return this->Fail(name.str() + ": label out of range [1, 255]");
     }
-    if (checkLabels && !lightField->HasLabel(label))
-    {
-      return this->Fail(name.str() + ": the light field's Label pass has no sub-light field " +
-        std::to_string(label));
-    }
 
     double corners[24];
     this->GetRestCorners(b, corners);
@@ -459,6 +450,11 @@ bool vtkDeformationCage::Validate(vtkLightField* lightField)
     {
       return this->Fail(name.str() + ": the deformed box " + fold);
     }
+  }
+
+  if (lightField && !this->ValidateLabels(lightField))
+  {
+    return false;
   }
 
   // Rest boxes must not overlap: a rest-space point belongs to one part.
@@ -495,6 +491,41 @@ bool vtkDeformationCage::Validate(vtkLightField* lightField)
           }
         }
       }
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeformationCage::ValidateLabels(vtkLightField* lightField)
+{
+  this->ErrorMessage.clear();
+  const vtkIdType numberOfBoxes = this->GetNumberOfBoxes();
+  if (lightField->GetPass(vtkLightField::LABEL))
+  {
+    // A box moves the rays of its label only (paper Sec. 4), so a label the
+    // light field's Label pass never holds is an error.
+    for (vtkIdType b = 0; b < numberOfBoxes; ++b)
+    {
+      const int label = this->GetBoxLabel(b);
+      if (!lightField->HasLabel(label))
+      {
+        return this->Fail("cage: box " + std::to_string(b) + " (label " + std::to_string(label) +
+          "): the light field's Label pass has no sub-light field " + std::to_string(label));
+      }
+    }
+    return true;
+  }
+  // Unsplit: one part, so one label (boxes of a lattice or a tessellation
+  // share it). Which rays two labels would move needs a split.
+  for (vtkIdType b = 1; b < numberOfBoxes; ++b)
+  {
+    if (this->GetBoxLabel(b) != this->GetBoxLabel(0))
+    {
+      return this->Fail("cage: box 0 (label " + std::to_string(this->GetBoxLabel(0)) +
+        ") and box " + std::to_string(b) + " (label " + std::to_string(this->GetBoxLabel(b)) +
+        ") move different parts, but the light field has no Label pass (it is one part): split "
+        "it first (lfd split projector|scanline|propagate ...) or give every box the same label");
     }
   }
   return true;

@@ -120,8 +120,8 @@ public:
    * - the "RestPosition" or "Label" array is missing or of the wrong size;
    * - a cell is not a VTK_HEXAHEDRON or names a point that does not exist;
    * - a label is not in 1..255;
-   * - `lightField` is given and holds a Label pass in which the box's label
-   *   never occurs (the box would move no sub-light field);
+   * - `lightField` is given and its labels do not fit the boxes' (see
+   *   ValidateLabels());
    * - the trilinear map of the rest or the deformed box (Eq. 2) folds,
    *   collapses or is inverted: its Jacobian determinant is not positive
    *   (above 1e-12 x BoxSize^3) at every point of a
@@ -133,6 +133,16 @@ public:
    * corners pass; an overlap thinner than 1e-3 of a box may go unnoticed.
    */
   bool Validate(vtkLightField* lightField = nullptr);
+
+  /**
+   * The label part of Validate(), which the renderer also runs: with a Label
+   * pass, every box's label must occur in it (else the box would move no
+   * sub-light field); without one, the light field is a single part whose
+   * object pixels all belong to the boxes' one label, so boxes of two
+   * different labels are refused with a message that says to split the
+   * light field first. Same error channel as Validate().
+   */
+  bool ValidateLabels(vtkLightField* lightField);
 
   /**
    * The reason of the last failed Validate(), or "".

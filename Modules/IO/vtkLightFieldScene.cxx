@@ -116,6 +116,7 @@ void vtkLightFieldScene::Initialize()
   this->FocalDistance = 0.0;
   this->Subdivision = 1;
   this->WidenedSearch = 2;
+  this->ObjectThreshold = 10.0;
   this->Background[0] = this->Background[1] = this->Background[2] = 0.0;
   this->Modified();
 }
@@ -238,7 +239,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
   std::vector<Keyframe> keyframes;
   auto camera = vtkSmartPointer<vtkCamera>::New();
   int width = 512, height = 512, subdivision = 1, widenedSearch = 2;
-  double focalDistance = 0.0;
+  double focalDistance = 0.0, objectThreshold = 10.0;
   double background[3] = { 0.0, 0.0, 0.0 };
   try
   {
@@ -421,6 +422,15 @@ bool vtkLightFieldScene::Read(const char* fileName)
       {
         widenedSearch = static_cast<int>(lfd::io::GetInteger(*v, "render.widened_search", 0, 64));
       }
+      if (const Json* v = lfd::io::FindMember(*render, "render", "object_threshold"))
+      {
+        objectThreshold = lfd::io::GetNumber(*v, "render.object_threshold");
+        if (!(objectThreshold >= 0.0 && objectThreshold <= 255.0))
+        {
+          throw FieldError("render.object_threshold",
+            "expected a brightness in [0, 255], found " + lfd::io::Describe(*v));
+        }
+      }
       if (const Json* v = lfd::io::FindMember(*render, "render", "background"))
       {
         const std::vector<double> rgb = lfd::io::GetNumbers(*v, "render.background", 3);
@@ -451,6 +461,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
   this->FocalDistance = focalDistance;
   this->Subdivision = subdivision;
   this->WidenedSearch = widenedSearch;
+  this->ObjectThreshold = objectThreshold;
   std::copy(background, background + 3, this->Background);
   this->Modified();
   return true;
@@ -571,6 +582,7 @@ bool vtkLightFieldScene::Write(const char* fileName)
     render["subdivision"] = this->Subdivision;
   }
   render["widened_search"] = this->WidenedSearch;
+  render["object_threshold"] = this->ObjectThreshold;
   render["background"] = VectorToJson(this->Background);
   document["render"] = render;
   if (!std::isfinite(this->FocalDistance))
@@ -626,6 +638,7 @@ void vtkLightFieldScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Subdivision: " << this->Subdivision << (this->Subdivision == 0 ? " (auto)" : "")
      << "\n";
   os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";
+  os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
   os << indent << "Background: (" << this->Background[0] << ", " << this->Background[1] << ", "
      << this->Background[2] << ")\n";
   os << indent << "ErrorMessage: "

@@ -21,7 +21,9 @@
  * - Render settings: FocalDistance (default 0), Subdivision (k x k x k
  *   sub-boxes per box, >= 1, default 1; the string "auto" is stored as 0,
  *   see GetSubdivisionAuto()), WidenedSearch (views searched on each side
- *   for regions a deformation uncovers, >= 0, default 2, 0 = off) and
+ *   for regions a deformation uncovers, >= 0, default 2, 0 = off),
+ *   ObjectThreshold (brightness in [0, 255] above which a pixel of a light
+ *   field without a Label pass is the object, default 10) and
  *   Background (RGB, each in [0, 1], default black).
  *
  * Read() validates the whole file before changing anything and returns false
@@ -171,6 +173,16 @@ public:
 
   ///@{
   /**
+   * Brightness (mean of RGB, 0..255) above which a pixel of a light field
+   * without a Label pass is the object, which a cage then moves as one part
+   * (see vtkLightFieldRenderer::SetObjectThreshold). Default 10.
+   */
+  vtkSetClampMacro(ObjectThreshold, double, 0.0, 255.0);
+  vtkGetMacro(ObjectThreshold, double);
+  ///@}
+
+  ///@{
+  /**
    * Background colour, RGB in [0, 1] (default black).
    */
   vtkSetVector3Macro(Background, double);
@@ -188,6 +200,7 @@ protected:
   double FocalDistance = 0.0;
   int Subdivision = 1;
   int WidenedSearch = 2;
+  double ObjectThreshold = 10.0;
   double Background[3] = { 0.0, 0.0, 0.0 };
 
 private:

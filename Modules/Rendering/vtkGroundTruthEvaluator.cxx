@@ -182,6 +182,7 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
   renderer->SetFocalDistance(this->FocalDistance);
   renderer->SetSubdivision(this->Subdivision);
   renderer->SetWidenedSearch(this->WidenedSearch);
+  renderer->SetObjectThreshold(this->ObjectThreshold);
 
   // The mesh through the same map, captured with the same light from the
   // same camera.
@@ -280,6 +281,7 @@ void vtkGroundTruthEvaluator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
   os << indent << "Subdivision: " << this->Subdivision << "\n";
   os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";
+  os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "PSNR: " << this->PSNR << "\n";
   os << indent << "SSIM: " << this->SSIM << "\n";

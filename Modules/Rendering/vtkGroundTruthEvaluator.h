@@ -62,16 +62,19 @@ public:
 
   ///@{
   /**
-   * Focal distance, box subdivision and widened camera search of the
-   * light-field render (see vtkLightFieldRenderer; subdivision 0 =
-   * automatic, widened search 0 = off).
+   * Focal distance, box subdivision, widened camera search and object
+   * threshold of the light-field render (see vtkLightFieldRenderer, which
+   * refuses a subdivision over its budget; subdivision 0 = automatic,
+   * widened search 0 = off).
    */
   vtkSetMacro(FocalDistance, double);
   vtkGetMacro(FocalDistance, double);
-  vtkSetClampMacro(Subdivision, int, 0, 64);
+  vtkSetMacro(Subdivision, int);
   vtkGetMacro(Subdivision, int);
   vtkSetClampMacro(WidenedSearch, int, 0, 64);
   vtkGetMacro(WidenedSearch, int);
+  vtkSetClampMacro(ObjectThreshold, double, 0.0, 255.0);
+  vtkGetMacro(ObjectThreshold, double);
   ///@}
 
   ///@{
@@ -124,6 +127,7 @@ protected:
   double FocalDistance = 0.0;
   int Subdivision = 1;
   int WidenedSearch = 2;
+  double ObjectThreshold = 10.0;
   double MaximumEdgeLength = 0.0;
   double PSNR = 0.0;
   double SSIM = 0.0;

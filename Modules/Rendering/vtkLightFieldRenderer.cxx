@@ -1,10 +1,12 @@
 #include "vtkLightFieldRenderer.h"
 
 #include "lfdCylinderSampling.h"
+#include "lfdLimits.h"
 #include "lfdPinholeCamera.h"
 #include "lfdRayWarp.h"
 #include "lfdTrilinear.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkCellData.h"
@@ -19,6 +21,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
+#include "vtkScanlineSplit.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -138,11 +141,33 @@ void Subdivide(const CageBox& box, int k, std::vector<CageBox>& boxes)
   }
 }
 
+/// The tessellation k of a box chosen by Subdivision 0 (auto): the smallest
+/// that brings the map's nonlinearity under `tolerance` x the box size (it
+/// falls as 1 / k^2), up to 8.
+int AutomaticSubdivision(const CageBox& box, double tolerance)
+{
+  const double error = std::max(Nonlinearity(box.Rest), Nonlinearity(box.Deformed)) /
+    std::max(lfd::BoxSize(box.Deformed), 1e-300);
+  return std::clamp(static_cast<int>(std::ceil(std::sqrt(error / tolerance))), 1, 8);
+}
+
+/// Sub-boxes of a cage whose box b is split into ks[b]^3.
+long long CountSubBoxes(const std::vector<int>& ks)
+{
+  long long count = 0;
+  for (int k : ks)
+  {
+    count += static_cast<long long>(k) * k * k;
+  }
+  return count;
+}
+
 /**
  * The boxes of a cage grid, each tessellated into subdivision^3 sub-boxes
- * (subdivision 0: the smallest k, up to 8, that brings the map's
- * nonlinearity under `tolerance` x the box size; it falls as 1 / k^2).
- * False (with an error on `self`) when the grid is malformed.
+ * (subdivision 0: AutomaticSubdivision() per box, its largest k lowered until
+ * the cage fits lfd::MaximumSubBoxes). False (with an error on `self`) when
+ * the grid is malformed or the tessellation is over the budget of
+ * lfdLimits.h.
  */
 bool CollectBoxes(vtkObject* self,
   vtkDeformationCage* cage,
@@ -150,7 +175,20 @@ bool CollectBoxes(vtkObject* self,
   double tolerance,
   std::vector<CageBox>& boxes)
 {
-  for (vtkIdType b = 0; b < cage->GetNumberOfBoxes(); ++b)
+  const vtkIdType count = cage->GetNumberOfBoxes();
+  if (subdivision < 0 || subdivision > lfd::MaximumSubdivision)
+  {
+    vtkErrorWithObjectMacro(self,
+      "Subdivision " << subdivision << " (render.subdivision) is outside [1, "
+                     << lfd::MaximumSubdivision
+                     << "] (0 = auto): a ray keeps at most 64 segments, and one box at k "
+                     << lfd::MaximumSubdivision << " already makes " << lfd::MaximumSubBoxes
+                     << " sub-boxes.");
+    return false;
+  }
+  std::vector<CageBox> whole(count);
+  std::vector<int> ks(count, subdivision);
+  for (vtkIdType b = 0; b < count; ++b)
   {
     double rest[24], deformed[24];
     if (!cage->GetRestCorners(b, rest) || !cage->GetDeformedCorners(b, deformed))
@@ -159,7 +197,7 @@ bool CollectBoxes(vtkObject* self,
         self, "Cage cell " << b << " is not a hexahedron of 8 existing points.");
       return false;
     }
-    CageBox box;
+    CageBox& box = whole[b];
     box.Label = cage->GetBoxLabel(b);
     if (box.Label < 1 || box.Label > 255)
     {
@@ -175,14 +213,35 @@ bool CollectBoxes(vtkObject* self,
       box.Moved =
         box.Moved || glm::distance(box.Rest.Corners[c], box.Deformed.Corners[c]) > 1e-9 * size;
     }
-    int k = subdivision;
-    if (k == 0)
+    if (subdivision == 0)
     {
-      const double error = std::max(Nonlinearity(box.Rest), Nonlinearity(box.Deformed)) /
-        std::max(lfd::BoxSize(box.Deformed), 1e-300);
-      k = std::clamp(static_cast<int>(std::ceil(std::sqrt(error / tolerance))), 1, 8);
+      ks[b] = AutomaticSubdivision(box, tolerance);
     }
-    Subdivide(box, k, boxes);
+  }
+  // Auto spends the budget where the map bends most: the largest k goes
+  // down first, and every box keeps at least k = 1.
+  for (int cap = 8; subdivision == 0 && cap > 1 && CountSubBoxes(ks) > lfd::MaximumSubBoxes; --cap)
+  {
+    for (int& k : ks)
+    {
+      k = std::min(k, cap - 1);
+    }
+  }
+  const long long subBoxes = CountSubBoxes(ks);
+  if (subBoxes > lfd::MaximumSubBoxes)
+  {
+    vtkErrorWithObjectMacro(self,
+      "Subdivision " << (subdivision ? std::to_string(subdivision) : std::string("auto"))
+                     << " (render.subdivision) splits the cage's " << count << " boxes into "
+                     << subBoxes << " sub-boxes, above the budget of " << lfd::MaximumSubBoxes
+                     << " (every ray tests every sub-box): "
+                     << (subdivision > 1 ? "lower it" : "use fewer boxes") << ".");
+    return false;
+  }
+  boxes.reserve(static_cast<std::size_t>(subBoxes));
+  for (vtkIdType b = 0; b < count; ++b)
+  {
+    Subdivide(whole[b], ks[b], boxes);
   }
   return true;
 }
@@ -448,6 +507,14 @@ int vtkLightFieldRenderer::RequestInformation(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputVector)
 {
+  if (this->Width < 1 || this->Width > lfd::MaximumRenderSize || this->Height < 1 ||
+    this->Height > lfd::MaximumRenderSize)
+  {
+    vtkErrorMacro("Output size " << this->Width << " x " << this->Height
+                                 << " is outside the render size limits: width and height in [1, "
+                                 << lfd::MaximumRenderSize << "] (lfd::MaximumRenderSize).");
+    return 0;
+  }
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   const int extent[6] = { 0, this->Width - 1, 0, this->Height - 1, 0, 0 };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
@@ -506,6 +573,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   }
   std::vector<CageBox> boxes;
   std::array<bool, 256> owned{};
+  vtkLightField* lightField = input; // the input, or its one-part split
   if (vtkUnstructuredGrid* grid = vtkUnstructuredGrid::GetData(inputVector[1]))
   {
     if (!grid->GetCellData()->GetArray("Label"))
@@ -528,6 +596,25 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     {
       owned[box.Label] = true;
     }
+    if (this->UseLabels && !boxes.empty() && !input->GetPass(vtkLightField::LABEL))
+    {
+      // The cage's own error event would repeat the message: it is said
+      // once, by the renderer.
+      vtkNew<vtkCallbackCommand> quiet;
+      const unsigned long tag = cage->AddObserver(vtkCommand::ErrorEvent, quiet);
+      const bool onePart = cage->ValidateLabels(input);
+      cage->RemoveObserver(tag);
+      if (!onePart)
+      {
+        vtkErrorMacro(<< cage->GetErrorMessage());
+        return 0;
+      }
+      lightField = this->OnePart(input, boxes.front().Label);
+      if (!lightField)
+      {
+        return 0;
+      }
+    }
   }
   std::vector<lfd::PinholeCamera> cameras(views);
   for (int v = 0; v < views; ++v)
@@ -539,7 +626,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   sampler.Layout = &layout;
   sampler.Cameras = cameras.data();
   sampler.Radiance = { radiance->GetPointer(0), input->GetWidth(), input->GetHeight(), 3 };
-  auto* labels = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::LABEL));
+  auto* labels = vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::LABEL));
   const bool useLabels = this->UseLabels && labels;
   if (useLabels)
   {
@@ -590,7 +677,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     allOwned = true;
     for (int label = 1; label < 256; ++label)
     {
-      allOwned = allOwned && (owned[label] || !input->HasLabel(label));
+      allOwned = allOwned && (owned[label] || !lightField->HasLabel(label));
     }
   }
   RenderRows functor{ sampler,
@@ -619,6 +706,38 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   output->GetPointData()->AddArray(imageLabels);
   output->GetPointData()->AddArray(imageDepths);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkLightField* vtkLightFieldRenderer::OnePart(vtkLightField* input, int label)
+{
+  if (this->Parts && this->PartsInput == input && input->GetMTime() <= this->PartsTime &&
+    this->PartsLabel == label && this->PartsThreshold == this->ObjectThreshold)
+  {
+    return this->Parts;
+  }
+  // A scan-line split without boundaries is one band: every object pixel
+  // gets band 0's label. It runs on a shallow copy, so the input's pipeline
+  // and arrays stay as they are.
+  vtkNew<vtkLightField> copy;
+  copy->ShallowCopy(input);
+  vtkNew<vtkScanlineSplit> split;
+  split->SetInputData(copy);
+  split->SetBandLabel(0, label);
+  split->SetThreshold(this->ObjectThreshold);
+  split->Update();
+  if (split->GetErrorCode() != 0)
+  {
+    vtkErrorMacro(<< split->GetErrorMessage());
+    this->Parts = nullptr;
+    return nullptr;
+  }
+  this->Parts = split->GetOutput();
+  this->PartsInput = input;
+  this->PartsLabel = label;
+  this->PartsThreshold = this->ObjectThreshold;
+  this->PartsTime.Modified();
+  return this->Parts;
 }
 
 //------------------------------------------------------------------------------
@@ -651,6 +770,8 @@ void vtkLightFieldRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Subdivision: " << this->Subdivision << (this->Subdivision ? "" : " (auto)")
      << "\n";
   os << indent << "SubdivisionTolerance: " << this->SubdivisionTolerance << "\n";
+  os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";
+  os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
   os << indent << "ExcludedViews:";
   for (int v : this->ExcludedViews)
   {

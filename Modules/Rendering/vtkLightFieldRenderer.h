@@ -14,6 +14,15 @@
  * the samples that carry the winning label only (labels are never averaged),
  * and rays whose winning label is 0 (background) get the Background colour.
  *
+ * A light field without a `Label` pass is one part (the paper's Fig. 1: one
+ * box over a whole statue, no split). Under a cage, its object pixels (found
+ * as the split commands find them: vtkScanlineSplit without boundaries,
+ * brightness above ObjectThreshold and its clean-up) carry the one label of
+ * the cage's boxes, background pixels label 0. That Label pass is derived
+ * once and reused while the input is unmodified; the input itself is not
+ * changed. Boxes of several labels on such a light field are refused
+ * (vtkDeformationCage::ValidateLabels): split it first.
+ *
  * The camera is either a vtkCamera rendered into a Width x Height image (as
  * a vtkRenderer of that size would show it) or an explicit OpenCV pinhole
  * (SetPinhole), which is how a captured view is re-rendered for leave-one-out
@@ -34,10 +43,13 @@
 
 #include "lfdRenderingModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkTimeStamp.h"    // For vtkTimeStamp
 
 #include <vector> // For std::vector
 
 class vtkCamera;
+class vtkLightField;
 class vtkUnstructuredGrid;
 
 class LFDRENDERING_EXPORT vtkLightFieldRenderer : public vtkImageAlgorithm
@@ -65,11 +77,13 @@ public:
 
   ///@{
   /**
-   * Output image size in pixels. Default 512 x 512.
+   * Output image size in pixels, each in [1, lfd::MaximumRenderSize] (16384,
+   * lfdLimits.h); a size outside is refused when the pipeline updates.
+   * Default 512 x 512.
    */
-  vtkSetClampMacro(Width, int, 1, VTK_INT_MAX);
+  vtkSetMacro(Width, int);
   vtkGetMacro(Width, int);
-  vtkSetClampMacro(Height, int, 1, VTK_INT_MAX);
+  vtkSetMacro(Height, int);
   vtkGetMacro(Height, int);
   ///@}
 
@@ -110,8 +124,14 @@ public:
    * warped ray per box); 0 = automatic: per box, the smallest k (up to 8)
    * that brings the map's nonlinearity under SubdivisionTolerance x the box
    * size (default 0.001).
+   *
+   * Every ray tests every sub-box, so the cost is bounded (lfdLimits.h): k
+   * above lfd::MaximumSubdivision (16), or boxes x k^3 above
+   * lfd::MaximumSubBoxes (4096), is refused with an error naming the
+   * subdivision, the number of boxes and the sub-boxes it would make. The
+   * automatic choice lowers the largest k until the cage fits the budget.
    */
-  vtkSetClampMacro(Subdivision, int, 0, 64);
+  vtkSetMacro(Subdivision, int);
   vtkGetMacro(Subdivision, int);
   vtkSetClampMacro(SubdivisionTolerance, double, 1e-9, 1.0);
   vtkGetMacro(SubdivisionTolerance, double);
@@ -134,6 +154,18 @@ public:
    */
   vtkSetClampMacro(WidenedSearch, int, 0, 64);
   vtkGetMacro(WidenedSearch, int);
+  ///@}
+
+  ///@{
+  /**
+   * Brightness (mean of RGB, 0..255) above which a pixel of a light field
+   * without a Label pass is the object when a cage deforms it (see above;
+   * vtkScanlineSplit::SetThreshold, whose default it shares). Raise it when
+   * the background is not black (templeRing: 60, for the cloth behind it).
+   * Default 10.
+   */
+  vtkSetClampMacro(ObjectThreshold, double, 0.0, 255.0);
+  vtkGetMacro(ObjectThreshold, double);
   ///@}
 
   ///@{
@@ -188,12 +220,26 @@ protected:
   int Subdivision = 1;
   int WidenedSearch = 2;
   double SubdivisionTolerance = 1e-3;
+  double ObjectThreshold = 10.0;
   std::vector<int> ExcludedViews;
 
 private:
   vtkLightFieldRenderer(const vtkLightFieldRenderer&) = delete;
 
   void operator=(const vtkLightFieldRenderer&) = delete;
+
+  /**
+   * `input` with a Label pass that makes its object pixels part `label`
+   * (cached while the input, the label and ObjectThreshold are unchanged),
+   * or nullptr after an error.
+   */
+  vtkLightField* OnePart(vtkLightField* input, int label);
+
+  vtkSmartPointer<vtkLightField> Parts; // the derived light field of OnePart()
+  vtkLightField* PartsInput = nullptr;  // compared, never dereferenced
+  vtkTimeStamp PartsTime;
+  int PartsLabel = 0;
+  double PartsThreshold = -1.0;
 };
 
 #endif

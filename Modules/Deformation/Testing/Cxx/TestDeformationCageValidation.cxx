@@ -185,11 +185,21 @@ int TestDeformationCageValidation(int, char*[])
     ok &= ExpectRefusal("nested boxes", cage, nullptr, { "box 1 (label 3) overlaps box 0" });
   }
 
-  // A label that no ray of the light field carries.
+  // Labels against the light field's: one that no ray carries, two on an
+  // unsplit light field.
   {
     vtkNew<vtkLightField> lightField;
     lightField->SetLayout(4, 2, 1);
-    ok &= ExpectValid("a light field without a Label pass", TwoBoxes(1.0), lightField);
+    // Unsplit, the light field is one part: boxes of two labels are refused,
+    // boxes sharing one label (a lattice, a tessellation) are not.
+    ok &= ExpectRefusal("two labels, light field without a Label pass",
+      TwoBoxes(1.0),
+      lightField,
+      { "box 0 (label 1) and box 1 (label 2)", "no Label pass", "split it first (lfd split" });
+    auto sameLabel = TwoBoxes(1.0);
+    sameLabel->GetCellData()->GetArray("Label")->SetComponent(1, 0, 1);
+    ok &= ExpectValid(
+      "one label in two boxes, light field without a Label pass", sameLabel, lightField);
     vtkDataArray* labels = lightField->AllocatePass(vtkLightField::LABEL);
     labels->SetComponent(3, 0, 1);
     labels->SetComponent(5, 0, 7);
