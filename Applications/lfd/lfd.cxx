@@ -494,6 +494,17 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
   return lightField;
 }
 
+/// The light field a scene names (an error naming the scene and its field
+/// "lightfield" when it names none or a missing one).
+vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldScene* scene)
+{
+  if (!scene->ConfigureReader(nullptr))
+  {
+    Fail(scene->GetErrorMessage());
+  }
+  return ReadLightField(scene->GetResolvedLightFieldPath());
+}
+
 /// Records the last error an object reports instead of printing it, so that
 /// the caller says it once, with the file it came from.
 class ErrorCatcher
@@ -1023,7 +1034,7 @@ void Render(const std::string& scenePath, const std::string& out, const double* 
 {
   const double start = vtkTimerLog::GetUniversalTime();
   auto scene = ReadScene(scenePath);
-  auto lightField = ReadLightField(scene->GetResolvedLightFieldPath());
+  auto lightField = ReadSceneLightField(scene);
   auto cage = SceneCage(scene, lightField, time);
   vtkNew<vtkLightFieldRenderer> renderer;
   ConfigureRenderer(renderer, scene, lightField, cage);
@@ -1115,7 +1126,7 @@ void Animate(const std::string& scenePath, int frames, const std::string& out)
   {
     Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
   }
-  auto lightField = ReadLightField(scene->GetResolvedLightFieldPath());
+  auto lightField = ReadSceneLightField(scene);
   StagedFolder folder(out, "lfd animate", AnimationFiles);
   const double start = vtkTimerLog::GetUniversalTime();
   RenderAnimation(scene, lightField, frames, folder.GetPath());
@@ -1129,7 +1140,7 @@ void EvalGroundTruth(const std::string& scenePath,
   const double* time)
 {
   auto scene = ReadScene(scenePath);
-  auto lightField = ReadLightField(scene->GetResolvedLightFieldPath());
+  auto lightField = ReadSceneLightField(scene);
   auto cage = SceneCage(scene, lightField, time);
   vtkSmartPointer<vtkImageData> texture;
   auto mesh = SourceMesh(meshName, texture);

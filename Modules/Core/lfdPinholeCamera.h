@@ -12,7 +12,12 @@
 #ifndef lfdPinholeCamera_h
 #define lfdPinholeCamera_h
 
+#include "lfdLimits.h"
+
 #include <glm/glm.hpp>
+
+#include <cmath>
+#include <string>
 
 namespace lfd
 {
@@ -95,6 +100,115 @@ struct PinholeCamera
   }
 };
 
+/**
+ * The one validation of a calibrated camera, shared by every reader,
+ * importer and writer: R a rotation (R R^T = I to 1e-3, det R = +1), K upper
+ * triangular with K[8] = 1, finite positive focal lengths fx, fy, finite
+ * skew and principal point, t finite with |t| < MaximumTranslation. Returns
+ * false with the offending matrix ("K", "R" or "t") in `field` and the
+ * problem in words.
+ */
+inline bool CheckPinhole(const double K[9],
+  const double R[9],
+  const double t[3],
+  std::string& field,
+  std::string& problem)
+{
+  for (int i = 0; i < 9; ++i)
+  {
+    if (!std::isfinite(K[i]) || !std::isfinite(R[i]))
+    {
+      field = std::isfinite(K[i]) ? "R" : "K";
+      problem = "has a non-finite entry";
+      return false;
+    }
+  }
+  if (K[3] != 0.0 || K[6] != 0.0 || K[7] != 0.0 || K[8] != 1.0)
+  {
+    field = "K";
+    problem = "not an intrinsic matrix (expected [fx s cx, 0 fy cy, 0 0 1])";
+    return false;
+  }
+  if (!(K[0] > 0.0) || !(K[4] > 0.0))
+  {
+    field = "K";
+    problem = "focal lengths fx = K[0] and fy = K[4] must be positive";
+    return false;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    for (int b = 0; b < 3; ++b)
+    {
+      const double dot =
+        R[3 * a] * R[3 * b] + R[3 * a + 1] * R[3 * b + 1] + R[3 * a + 2] * R[3 * b + 2];
+      if (std::abs(dot - (a == b ? 1.0 : 0.0)) > 1e-3)
+      {
+        field = "R";
+        problem = "not a rotation matrix (R R^T != I)";
+        return false;
+      }
+    }
+  }
+  const double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
+    R[2] * (R[3] * R[7] - R[4] * R[6]);
+  if (!(det > 0.0))
+  {
+    field = "R";
+    problem = "not a rotation matrix (det R = -1: a reflection)";
+    return false;
+  }
+  const double length = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+  if (!(length < MaximumTranslation))
+  {
+    field = "t";
+    problem = "|t| must be finite and below 1e6 world units";
+    return false;
+  }
+  return true;
+}
+
+/**
+ * The one validation of a look-at camera (a scene's view camera): the
+ * position differs from the focal point, view_up is not parallel to the
+ * viewing direction, and the vertical view angle is within
+ * [MinimumViewAngle, MaximumViewAngle] degrees. Returns false with the
+ * offending field ("focal_point", "view_up" or "view_angle") and the problem.
+ */
+inline bool CheckLookAt(const double position[3],
+  const double focalPoint[3],
+  const double viewUp[3],
+  double viewAngle,
+  std::string& field,
+  std::string& problem)
+{
+  const glm::dvec3 forward(
+    focalPoint[0] - position[0], focalPoint[1] - position[1], focalPoint[2] - position[2]);
+  const glm::dvec3 up(viewUp[0], viewUp[1], viewUp[2]);
+  const double distance = glm::length(forward);
+  if (!(distance > 0.0) || !std::isfinite(distance))
+  {
+    field = "focal_point";
+    problem = "must differ from the camera position (no viewing direction)";
+    return false;
+  }
+  const double upLength = glm::length(up);
+  // sin of the angle between view_up and the viewing direction: below 1e-6
+  // the image "up" is undefined.
+  if (!(upLength > 0.0) || !std::isfinite(upLength) ||
+    glm::length(glm::cross(forward / distance, up / upLength)) < 1e-6)
+  {
+    field = "view_up";
+    problem = "must not be zero or parallel to the viewing direction";
+    return false;
+  }
+  if (!(viewAngle >= MinimumViewAngle && viewAngle <= MaximumViewAngle))
+  {
+    field = "view_angle";
+    problem = "expected degrees in [0.5, 179]";
+    return false;
+  }
+  return true;
+}
 } // namespace lfd
 
 #endif

@@ -9,7 +9,9 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <string>
 
@@ -154,6 +156,34 @@ void vtkCameraRig::GetRotation(int i, double R[9]) const
 void vtkCameraRig::GetTranslation(int i, double t[3]) const
 {
   FromVec(this->GetCamera(i).t, t);
+}
+
+//------------------------------------------------------------------------------
+int vtkCameraRig::FindInvalidView(std::string& field, std::string& problem) const
+{
+  // Views keyed by their 21 numbers: a repeated view (a copy-paste error in a
+  // calibration) would otherwise surface as a failed cylinder fit.
+  std::map<std::array<double, 21>, int> seen;
+  for (int i = 0; i < this->GetNumberOfViews(); ++i)
+  {
+    std::array<double, 21> values;
+    this->GetIntrinsics(i, values.data());
+    this->GetRotation(i, values.data() + 9);
+    this->GetTranslation(i, values.data() + 18);
+    if (!lfd::CheckPinhole(values.data(), values.data() + 9, values.data() + 18, field, problem))
+    {
+      return i;
+    }
+    const auto inserted = seen.emplace(values, i);
+    if (!inserted.second)
+    {
+      field.clear();
+      problem = "the same camera (K, R and t) as view " + std::to_string(inserted.first->second) +
+        "; every view must be a distinct camera";
+      return i;
+    }
+  }
+  return -1;
 }
 
 //------------------------------------------------------------------------------
@@ -400,7 +430,8 @@ bool vtkCameraRig::FitCylinder()
     normal += glm::outerProduct(row, row);
     rhs -= (p.x * p.x + p.y * p.y) * row;
   }
-  if (std::abs(glm::determinant(normal)) < 1e-12 * std::pow(values[0] * n, 2.0) * n)
+  // "<=": coinciding centres give a zero scatter, and a zero bound.
+  if (std::abs(glm::determinant(normal)) <= 1e-12 * std::pow(values[0] * n, 2.0) * n)
   {
     vtkErrorMacro("FitCylinder: the camera centres are collinear or coincide; no ring can be "
                   "fitted to them.");

@@ -33,6 +33,7 @@
 #include "vtkObject.h"
 
 #include <memory> // For std::unique_ptr
+#include <string> // For std::string
 #include <vector> // For std::vector
 
 class vtkCamera;
@@ -248,6 +249,14 @@ public:
    * `excluded` (used by leave-one-out). Fits the cylinder first when needed.
    */
   lfd::RingLayout GetRingLayout(const std::vector<int>& excluded = {});
+
+  /**
+   * The rig's validation, shared by every reader, importer and writer: each
+   * view passes lfd::CheckPinhole() and no two views have the same K, R and
+   * t. Returns -1 when the rig is valid; otherwise the first invalid view,
+   * with `field` ("K", "R", "t", or "" for a repeated view) and `problem`.
+   */
+  int FindInvalidView(std::string& field, std::string& problem) const;
 #endif
 
 protected:

@@ -1,5 +1,6 @@
 #include "vtkLightFieldAlgorithm.h"
 
+#include "lfdExceptions.h"
 #include "vtkCameraRig.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkErrorCode.h"
@@ -36,6 +37,34 @@ vtkLightField* vtkLightFieldAlgorithm::GetOutput(int port)
 
 //------------------------------------------------------------------------------
 vtkTypeBool vtkLightFieldAlgorithm::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  try
+  {
+    return this->DispatchRequest(request, inputVector, outputVector);
+  }
+  catch (...)
+  {
+    // An exception must not cross the pipeline into Python or a front end:
+    // it becomes this algorithm's error like any other failure.
+    vtkInformation* outInfo =
+      this->GetNumberOfOutputPorts() > 0 ? outputVector->GetInformationObject(0) : nullptr;
+    this->Fail(outInfo ? vtkLightField::GetData(outInfo) : nullptr,
+      vtkErrorCode::UnknownError,
+      this->DescribeFailure(lfd::CurrentExceptionMessage()));
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkLightFieldAlgorithm::DescribeFailure(const std::string& problem)
+{
+  return std::string(this->GetClassName()) + ": " + problem;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkLightFieldAlgorithm::DispatchRequest(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {

@@ -44,7 +44,10 @@ public:
   const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
   /**
-   * Dispatches the pipeline requests to the Request* methods below.
+   * Dispatches the pipeline requests to the Request* methods below. A C++
+   * exception thrown by any of them (std::bad_alloc, a parser's or the file
+   * system's) is caught here and reported like any other failure: error
+   * code UnknownError, GetErrorMessage() = DescribeFailure(what).
    */
   vtkTypeBool ProcessRequest(vtkInformation* request,
     vtkInformationVector** inputVector,
@@ -76,6 +79,12 @@ protected:
     vtkInformationVector* outputVector);
   ///@}
 
+  /**
+   * The one-line message of a failure that escaped as an exception; the
+   * default prefixes the class name, readers override it to name their file.
+   */
+  virtual std::string DescribeFailure(const std::string& problem);
+
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
@@ -101,6 +110,10 @@ protected:
   std::string ErrorMessage;
 
 private:
+  vtkTypeBool DispatchRequest(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector);
+
   vtkLightFieldAlgorithm(const vtkLightFieldAlgorithm&) = delete;
   void operator=(const vtkLightFieldAlgorithm&) = delete;
 };

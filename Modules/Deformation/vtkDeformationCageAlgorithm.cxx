@@ -1,7 +1,9 @@
 #include "vtkDeformationCageAlgorithm.h"
 
+#include "lfdExceptions.h"
 #include "vtkDeformationCage.h"
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkErrorCode.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -33,15 +35,26 @@ vtkTypeBool vtkDeformationCageAlgorithm::ProcessRequest(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  // An exception must not cross the pipeline into Python or a front end: it
+  // becomes this algorithm's error like any other failure.
+  try
   {
-    return this->RequestDataObject(request, inputVector, outputVector);
+    if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+    {
+      return this->RequestDataObject(request, inputVector, outputVector);
+    }
+    if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+    {
+      return this->RequestData(request, inputVector, outputVector);
+    }
+    return this->Superclass::ProcessRequest(request, inputVector, outputVector);
   }
-  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+  catch (...)
   {
-    return this->RequestData(request, inputVector, outputVector);
+    this->SetErrorCode(vtkErrorCode::UnknownError);
+    vtkErrorMacro(<< this->GetClassName() << ": " << lfd::CurrentExceptionMessage());
+    return 0;
   }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
 //------------------------------------------------------------------------------

@@ -35,7 +35,8 @@ public:
   vtkDeformationCage* GetOutput();
 
   /**
-   * Dispatches REQUEST_DATA_OBJECT and REQUEST_DATA.
+   * Dispatches REQUEST_DATA_OBJECT and REQUEST_DATA; a C++ exception thrown
+   * by them is caught and reported as an error (error code UnknownError).
    */
   vtkTypeBool ProcessRequest(vtkInformation* request,
     vtkInformationVector** inputVector,

@@ -1,9 +1,14 @@
 #include "lfdFileUtilities.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <system_error>
 
-#include <unistd.h> // getpid
+#include <fcntl.h>    // open
+#include <signal.h>   // kill
+#include <sys/stat.h> // stat
+#include <unistd.h>   // getpid, write, fsync, close
 
 namespace fs = std::filesystem;
 
@@ -11,6 +16,97 @@ namespace lfd
 {
 namespace io
 {
+namespace
+{
+std::string SystemError(int error)
+{
+  return std::strerror(error);
+}
+
+// True when `text` is a process id of a process that still runs (or that we
+// may not signal: it exists).
+bool IsRunningProcess(const std::string& text)
+{
+  if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+  {
+    return false;
+  }
+  const pid_t pid = static_cast<pid_t>(std::stol(text));
+  if (pid == ::getpid())
+  {
+    return false; // our own earlier temporary: stale as well
+  }
+  return pid > 0 && (::kill(pid, 0) == 0 || errno == EPERM);
+}
+
+// Removes the siblings `<prefix><pid><suffix>` of a target whose process no
+// longer runs: what a killed writer left behind.
+void RemoveStaleTemporaries(const fs::path& folder,
+  const std::string& prefix,
+  const std::string& suffix)
+{
+  std::error_code ec;
+  fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec);
+  for (; !ec && it != fs::directory_iterator(); it.increment(ec))
+  {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() + suffix.size() ||
+      name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    {
+      continue;
+    }
+    const std::string pid = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    if (!pid.empty() && pid.find_first_not_of("0123456789") == std::string::npos &&
+      !IsRunningProcess(pid))
+    {
+      RemoveQuietly(it->path().string());
+    }
+  }
+}
+
+// fsync of a file or directory; 0 or the errno.
+int SyncPath(const std::string& path, bool directory)
+{
+  const int fd = ::open(path.c_str(), (directory ? O_DIRECTORY : 0) | O_RDONLY | O_CLOEXEC);
+  if (fd < 0)
+  {
+    return errno;
+  }
+  int result = ::fsync(fd) == 0 ? 0 : errno;
+  if (::close(fd) != 0 && result == 0)
+  {
+    result = errno;
+  }
+  // Some file systems cannot fsync a directory: that is not a failed write.
+  return (directory && result == EINVAL) ? 0 : result;
+}
+
+// fsync of every file and folder under `root` (and `root`); 0 or the errno.
+int SyncTree(const std::string& root)
+{
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
+  {
+    const bool directory = it->is_directory(ec);
+    if (const int result = SyncPath(it->path().string(), directory))
+    {
+      return result;
+    }
+  }
+  if (ec)
+  {
+    return ec.value();
+  }
+  return SyncPath(root, true);
+}
+
+std::string FolderOf(const std::string& path)
+{
+  const std::string folder = fs::path(path).parent_path().string();
+  return folder.empty() ? std::string(".") : folder;
+}
+}
 
 //------------------------------------------------------------------------------
 std::string TrimSeparators(const std::string& path)
@@ -24,19 +120,45 @@ std::string TrimSeparators(const std::string& path)
 }
 
 //------------------------------------------------------------------------------
+bool CheckRegularFile(const std::string& path, std::string& problem)
+{
+  struct stat status;
+  if (::stat(path.c_str(), &status) != 0)
+  {
+    problem = errno == ENOENT ? std::string("file not found") : SystemError(errno);
+    return false;
+  }
+  if (S_ISDIR(status.st_mode))
+  {
+    problem = "is a directory, not a file";
+    return false;
+  }
+  if (!S_ISREG(status.st_mode))
+  {
+    problem = "is not a regular file (a FIFO, device or socket)";
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 std::string TemporaryFileName(const std::string& path)
 {
   const fs::path target(path);
+  const std::string stem = target.stem().string() + ".tmp-";
+  const std::string extension = target.extension().string();
+  RemoveStaleTemporaries(target.parent_path(), stem, extension);
   fs::path temporary = target;
-  temporary.replace_filename(
-    target.stem().string() + ".tmp-" + std::to_string(::getpid()) + target.extension().string());
+  temporary.replace_filename(stem + std::to_string(::getpid()) + extension);
   return temporary.string();
 }
 
 //------------------------------------------------------------------------------
 std::string TemporaryDirectoryName(const std::string& path)
 {
-  return TrimSeparators(path) + ".tmp-" + std::to_string(::getpid());
+  const fs::path target(TrimSeparators(path));
+  RemoveStaleTemporaries(target.parent_path(), target.filename().string() + ".tmp-", "");
+  return target.string() + ".tmp-" + std::to_string(::getpid());
 }
 
 //------------------------------------------------------------------------------
@@ -47,14 +169,74 @@ void RemoveQuietly(const std::string& path)
 }
 
 //------------------------------------------------------------------------------
+bool WriteFileContents(const std::string& path, const void* data, size_t size, std::string& error)
+{
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0)
+  {
+    error = "cannot create the file: " + SystemError(errno);
+    return false;
+  }
+  const char* bytes = static_cast<const char*>(data);
+  int failure = 0;
+  while (size > 0 && failure == 0)
+  {
+    const ssize_t written = ::write(fd, bytes, size);
+    if (written < 0)
+    {
+      failure = errno == EINTR ? 0 : errno;
+      continue;
+    }
+    bytes += written;
+    size -= static_cast<size_t>(written);
+  }
+  // A full disk may only show at fsync or close (delayed allocation, NFS).
+  if (failure == 0 && ::fsync(fd) != 0)
+  {
+    failure = errno;
+  }
+  if (::close(fd) != 0 && failure == 0)
+  {
+    failure = errno;
+  }
+  if (failure != 0)
+  {
+    error = "cannot write the file: " + SystemError(failure);
+    RemoveQuietly(path);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool WriteFileAtomically(const std::string& path, const std::string& contents, std::string& error)
+{
+  const std::string temporary = TemporaryFileName(path);
+  return WriteFileContents(temporary, contents.data(), contents.size(), error) &&
+    CommitFile(temporary, path, error);
+}
+
+//------------------------------------------------------------------------------
 bool CommitFile(const std::string& temporary, const std::string& path, std::string& error)
 {
+  if (const int result = SyncPath(temporary, false))
+  {
+    error = "cannot write the file: " + SystemError(result);
+    RemoveQuietly(temporary);
+    return false;
+  }
   std::error_code ec;
   fs::rename(temporary, path, ec);
   if (ec)
   {
-    error = "cannot rename " + temporary + " to " + path + ": " + ec.message();
+    error = "cannot replace the file: " + ec.message();
     RemoveQuietly(temporary);
+    return false;
+  }
+  // The rename itself is durable only once the folder is flushed.
+  if (const int result = SyncPath(FolderOf(path), true))
+  {
+    error = "cannot flush the folder: " + SystemError(result);
     return false;
   }
   return true;
@@ -64,6 +246,12 @@ bool CommitFile(const std::string& temporary, const std::string& path, std::stri
 bool CommitDirectory(const std::string& temporary, const std::string& path, std::string& error)
 {
   const std::string target = TrimSeparators(path);
+  if (const int result = SyncTree(temporary))
+  {
+    error = "cannot write the directory: " + SystemError(result);
+    RemoveQuietly(temporary);
+    return false;
+  }
   std::error_code ec;
   std::string aside;
   if (fs::exists(target, ec))
@@ -73,7 +261,7 @@ bool CommitDirectory(const std::string& temporary, const std::string& path, std:
     fs::rename(target, aside, ec);
     if (ec)
     {
-      error = "cannot move the existing " + target + " aside: " + ec.message();
+      error = "cannot move the existing directory aside: " + ec.message();
       RemoveQuietly(temporary);
       return false;
     }
@@ -81,7 +269,7 @@ bool CommitDirectory(const std::string& temporary, const std::string& path, std:
   fs::rename(temporary, target, ec);
   if (ec)
   {
-    error = "cannot rename " + temporary + " to " + target + ": " + ec.message();
+    error = "cannot replace the directory: " + ec.message();
     RemoveQuietly(temporary);
     if (!aside.empty())
     {
@@ -93,6 +281,11 @@ bool CommitDirectory(const std::string& temporary, const std::string& path, std:
   if (!aside.empty())
   {
     RemoveQuietly(aside);
+  }
+  if (const int result = SyncPath(FolderOf(target), true))
+  {
+    error = "cannot flush the folder: " + SystemError(result);
+    return false;
   }
   return true;
 }

@@ -1,15 +1,22 @@
 #include "lfdImageFiles.h"
 
+#include "lfdFileUtilities.h"
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkType.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cstddef>
-#include <filesystem>
 #include <memory>
+#include <mutex>
+#include <sstream>
+#include <vector>
+
+#include <fcntl.h>  // open
+#include <unistd.h> // dup, dup2, close
 
 namespace lfd
 {
@@ -32,11 +39,85 @@ OIIO::TypeDesc ToTypeDesc(int scalarType)
   }
 }
 
+// OpenImageIO reports one failure on several lines (its own and the
+// codec's, e.g. "Read error: hit end of file" then "PNG read error: ...:
+// Read error: hit end of file"): keep the lines no other line contains,
+// joined on one line.
+std::string OneLine(const std::string& message, const std::string& fallback)
+{
+  std::vector<std::string> lines;
+  std::istringstream stream(message);
+  std::string line;
+  while (std::getline(stream, line))
+  {
+    if (!line.empty())
+    {
+      lines.push_back(line);
+    }
+  }
+  std::string joined;
+  for (size_t i = 0; i < lines.size(); ++i)
+  {
+    bool contained = false;
+    for (size_t j = 0; j < lines.size() && !contained; ++j)
+    {
+      contained =
+        j != i && lines[j].find(lines[i]) != std::string::npos && (lines[j] != lines[i] || j < i);
+    }
+    if (!contained)
+    {
+      joined += (joined.empty() ? "" : "; ") + lines[i];
+    }
+  }
+  return joined.empty() ? fallback : joined;
+}
+
 std::string LastOIIOError(const std::string& fallback)
 {
-  std::string message = OIIO::geterror();
-  return message.empty() ? fallback : message;
+  return OneLine(OIIO::geterror(), fallback);
 }
+
+// libpng prints its errors and warnings on stderr ("libpng error: ...")
+// before OpenImageIO reports them: while an image is decoded, stderr goes to
+// /dev/null, so that a corrupt image costs one error line, ours. The mutex
+// keeps concurrent decodes from restoring each other's descriptor.
+class SilencedStderr
+{
+public:
+  SilencedStderr()
+    : Lock(Mutex())
+  {
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    this->Saved = null >= 0 ? ::dup(STDERR_FILENO) : -1;
+    if (this->Saved >= 0)
+    {
+      ::dup2(null, STDERR_FILENO);
+    }
+    if (null >= 0)
+    {
+      ::close(null);
+    }
+  }
+  ~SilencedStderr()
+  {
+    if (this->Saved >= 0)
+    {
+      ::dup2(this->Saved, STDERR_FILENO);
+      ::close(this->Saved);
+    }
+  }
+  SilencedStderr(const SilencedStderr&) = delete;
+  SilencedStderr& operator=(const SilencedStderr&) = delete;
+
+private:
+  static std::mutex& Mutex()
+  {
+    static std::mutex mutex;
+    return mutex;
+  }
+  std::lock_guard<std::mutex> Lock;
+  int Saved = -1;
+};
 
 // Opens `path` for reading; alpha stays as stored (no premultiplication on
 // read or write), so that 8-bit RGBA values round-trip exactly.
@@ -56,6 +137,12 @@ OIIO::ImageInput::unique_ptr OpenImage(const std::string& path, std::string& err
 //------------------------------------------------------------------------------
 bool ReadImageHeader(const std::string& path, ImageHeader& header, std::string& error)
 {
+  // A FIFO or a device would block or never end: refuse it unopened.
+  if (!CheckRegularFile(path, error))
+  {
+    return false;
+  }
+  SilencedStderr silenced;
   auto input = OpenImage(path, error);
   if (!input)
   {
@@ -98,16 +185,10 @@ bool ReadImageHeader(const std::string& path,
   {
     return true;
   }
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec))
-  {
-    errorCode = vtkErrorCode::FileFormatError;
-  }
-  else
-  {
-    errorCode = vtkErrorCode::FileNotFoundError;
-    error = "file not found";
-  }
+  std::string problem;
+  errorCode = CheckRegularFile(path, problem) || problem != "file not found"
+    ? vtkErrorCode::FileFormatError
+    : vtkErrorCode::FileNotFoundError;
   return false;
 }
 
@@ -120,6 +201,11 @@ bool ReadImagePixels(const std::string& path,
   std::string& error)
 {
   const OIIO::TypeDesc type = ToTypeDesc(scalarType);
+  if (!CheckRegularFile(path, error))
+  {
+    return false;
+  }
+  SilencedStderr silenced;
   auto input = OpenImage(path, error);
   if (!input)
   {
@@ -146,11 +232,7 @@ bool ReadImagePixels(const std::string& path,
   char* last = static_cast<char*>(data) + rowBytes * (spec.height - 1);
   if (!input->read_image(0, 0, 0, readChannels, type, last, pixelBytes, -rowBytes))
   {
-    error = input->geterror();
-    if (error.empty())
-    {
-      error = "cannot read the pixels";
-    }
+    error = OneLine(input->geterror(), "cannot read the pixels");
     return false;
   }
   if (expand)
@@ -210,9 +292,14 @@ bool WriteImagePixels(const std::string& path,
   {
     spec.attribute("compression", "zip");
   }
+  // Encoded in memory, then written by WriteFileContents(), which checks
+  // every write, the fsync and the close: image codecs do not all report a
+  // full disk (libpng's writes are unchecked).
+  OIIO::Filesystem::IOVecOutput encoded;
+  const bool inMemory = output->supports("ioproxy") && output->set_ioproxy(&encoded);
   if (!output->open(path, spec))
   {
-    error = output->geterror();
+    error = OneLine(output->geterror(), "cannot write the image");
     return false;
   }
   const OIIO::stride_t pixelBytes = static_cast<OIIO::stride_t>(type.size()) * channels;
@@ -220,12 +307,13 @@ bool WriteImagePixels(const std::string& path,
   const char* last = static_cast<const char*>(data) + rowBytes * (height - 1);
   if (!output->write_image(type, last, pixelBytes, -rowBytes) || !output->close())
   {
-    error = output->geterror();
-    if (error.empty())
-    {
-      error = "cannot write the pixels";
-    }
+    error = OneLine(output->geterror(), "cannot write the pixels");
     return false;
+  }
+  if (inMemory)
+  {
+    const std::vector<unsigned char>& bytes = encoded.buffer();
+    return WriteFileContents(path, bytes.data(), bytes.size(), error);
   }
   return true;
 }

@@ -1,8 +1,12 @@
 #include "lfdJsonFields.h"
 
+#include "lfdFileUtilities.h"
+#include "lfdLimits.h"
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 namespace lfd
 {
@@ -15,18 +19,41 @@ FieldError::FieldError(const std::string& field, const std::string& problem)
 {
 }
 
-//------------------------------------------------------------------------------
-bool ParseJsonFile(const std::string& path, Json& document, std::string& error)
+namespace
 {
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream)
+// Thrown from the parser callback when the nesting gets too deep.
+struct TooDeep : std::runtime_error
+{
+  TooDeep()
+    : std::runtime_error("nested deeper than " + std::to_string(lfd::MaximumJsonDepth) +
+        " levels of arrays and objects")
   {
-    error = path + ": cannot open the file for reading";
-    return false;
   }
+};
+
+// Parses `input` (a stream or a string) with the nesting bounded: the
+// callback sees each array or object start with the number of enclosing
+// containers, before the parser descends into it.
+template<typename Input>
+bool ParseBounded(Input&& input, Json& document, std::string& error)
+{
+  const Json::parser_callback_t bound = [](int depth, Json::parse_event_t event, Json&)
+  {
+    if ((event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start) &&
+      depth >= lfd::MaximumJsonDepth)
+    {
+      throw TooDeep();
+    }
+    return true;
+  };
   try
   {
-    document = Json::parse(stream);
+    document = Json::parse(std::forward<Input>(input), bound);
+  }
+  catch (const TooDeep& e)
+  {
+    error = e.what();
+    return false;
   }
   catch (const Json::exception& e)
   {
@@ -34,11 +61,40 @@ bool ParseJsonFile(const std::string& path, Json& document, std::string& error)
     // column C: ..."), out-of-range numbers ("1e999") and invalid UTF-8.
     std::string what = e.what();
     const std::string::size_type start = what.find("] ");
-    error =
-      path + ": not valid JSON: " + (start == std::string::npos ? what : what.substr(start + 2));
+    error = "not valid JSON: " + (start == std::string::npos ? what : what.substr(start + 2));
     return false;
   }
   return true;
+}
+}
+
+//------------------------------------------------------------------------------
+bool ParseJsonFile(const std::string& path, Json& document, std::string& error)
+{
+  std::string problem;
+  if (!CheckRegularFile(path, problem))
+  {
+    error = path + ": " + problem;
+    return false;
+  }
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream)
+  {
+    error = path + ": cannot open the file for reading";
+    return false;
+  }
+  if (!ParseBounded(stream, document, problem))
+  {
+    error = path + ": " + problem;
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool ParseJsonText(const std::string& text, Json& document, std::string& error)
+{
+  return ParseBounded(text, document, error);
 }
 
 //------------------------------------------------------------------------------
@@ -145,6 +201,21 @@ std::string GetString(const Json& value, const std::string& path)
     throw FieldError(path, "expected a string, found " + Describe(value));
   }
   return value.get<std::string>();
+}
+
+//------------------------------------------------------------------------------
+std::string GetPath(const Json& value, const std::string& path)
+{
+  const std::string text = GetString(value, path);
+  if (text.empty())
+  {
+    throw FieldError(path, "expected a file name, found an empty string");
+  }
+  if (text.find('\0') != std::string::npos)
+  {
+    throw FieldError(path, "a file name must not contain a NUL character");
+  }
+  return text;
 }
 
 //------------------------------------------------------------------------------

@@ -39,9 +39,18 @@ public:
 
 /**
  * Parses `path` as JSON. On failure returns false and sets `error` to
- * "<path>: <reason>" (the parser's line and column when the text is not JSON).
+ * "<path>: <reason>": not a regular file (a directory, FIFO or device is
+ * refused without being opened), not JSON (the parser's line and column),
+ * or nested deeper than lfd::MaximumJsonDepth (checked while parsing, so a
+ * hostile file can overflow neither the parser nor later recursive code).
  */
 bool ParseJsonFile(const std::string& path, Json& document, std::string& error);
+
+/**
+ * ParseJsonText() parses text held in memory with the same depth bound; on
+ * failure returns false and sets `error` to the reason.
+ */
+bool ParseJsonText(const std::string& text, Json& document, std::string& error);
 
 /**
  * Path of a member / an element, for messages ("cage" + "points" ->
@@ -73,6 +82,12 @@ long long GetInteger(const Json& value,
   long long maximum);
 std::string GetString(const Json& value, const std::string& path);
 ///@}
+
+/**
+ * A string that names a file: non-empty and without NUL characters (which
+ * would silently cut the name short in every system call).
+ */
+std::string GetPath(const Json& value, const std::string& path);
 
 /**
  * An array of exactly `length` finite numbers (any length when `length` is 0).

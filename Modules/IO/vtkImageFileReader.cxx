@@ -1,5 +1,6 @@
 #include "vtkImageFileReader.h"
 
+#include "lfdExceptions.h"
 #include "lfdImageFiles.h"
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
@@ -22,6 +23,30 @@ vtkImageFileReader::vtkImageFileReader()
 vtkImageFileReader::~vtkImageFileReader()
 {
   this->SetFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkImageFileReader::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  // An exception (memory for a huge image, the file system) must not cross
+  // the pipeline into Python.
+  try
+  {
+    return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  }
+  catch (...)
+  {
+    vtkImageData* output = vtkImageData::GetData(outputVector);
+    if (output)
+    {
+      output->Initialize();
+    }
+    return this->Fail(vtkErrorCode::UnknownError,
+      (this->FileName ? std::string(this->FileName) : std::string("vtkImageFileReader")) + ": " +
+        lfd::CurrentExceptionMessage());
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -73,9 +98,10 @@ int vtkImageFileReader::RequestData(vtkInformation*,
   }
   lfd::io::ImageHeader header;
   std::string error;
-  if (!lfd::io::ReadImageHeader(this->FileName, header, error))
+  unsigned long errorCode = vtkErrorCode::NoError;
+  if (!lfd::io::ReadImageHeader(this->FileName, header, error, errorCode))
   {
-    return this->Fail(vtkErrorCode::FileNotFoundError, std::string(this->FileName) + ": " + error);
+    return this->Fail(errorCode, std::string(this->FileName) + ": " + error);
   }
   output->SetExtent(0, header.Width - 1, 0, header.Height - 1, 0, 0);
   output->AllocateScalars(header.ScalarType, header.Channels);

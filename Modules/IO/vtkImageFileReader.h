@@ -39,6 +39,15 @@ public:
    */
   const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
+  /**
+   * Runs the pipeline request; a C++ exception thrown by it is caught and
+   * reported as an error (error code UnknownError, GetErrorMessage() naming
+   * the file), never passed on to the caller.
+   */
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
 protected:
   vtkImageFileReader();
   ~vtkImageFileReader() override;

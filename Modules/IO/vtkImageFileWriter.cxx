@@ -1,5 +1,6 @@
 #include "vtkImageFileWriter.h"
 
+#include "lfdExceptions.h"
 #include "lfdFileUtilities.h"
 #include "lfdImageFiles.h"
 #include "vtkDataArray.h"
@@ -33,6 +34,26 @@ int vtkImageFileWriter::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
   return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkImageFileWriter::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  // An exception (memory, the file system) must not cross the pipeline into
+  // Python.
+  try
+  {
+    return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  }
+  catch (...)
+  {
+    this->Fail(vtkErrorCode::UnknownError,
+      (this->FileName ? std::string(this->FileName) : std::string("vtkImageFileWriter")) + ": " +
+        lfd::CurrentExceptionMessage());
+    return 0;
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -48,6 +48,15 @@ public:
    */
   vtkImageData* GetInput();
 
+  /**
+   * Runs the pipeline request; a C++ exception thrown by it is caught and
+   * reported as an error (error code UnknownError, GetErrorMessage() naming
+   * the file), never passed on to the caller.
+   */
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
 protected:
   vtkImageFileWriter();
   ~vtkImageFileWriter() override;

@@ -3,6 +3,7 @@
 #include "lfdFileUtilities.h"
 #include "lfdImageFiles.h"
 #include "lfdJsonFields.h"
+#include "lfdLimits.h"
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
@@ -60,6 +61,16 @@ struct Manifest
   std::string Provenance;
 };
 
+std::string LowerCase(const char* text)
+{
+  std::string lower(text);
+  for (char& c : lower)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return lower;
+}
+
 std::string ManifestPath(const std::string& fileName)
 {
   std::error_code ec;
@@ -68,30 +79,6 @@ std::string ManifestPath(const std::string& fileName)
     return (std::filesystem::path(lfd::io::TrimSeparators(fileName)) / "lightfield.json").string();
   }
   return fileName;
-}
-
-// R must be a rotation: R R^T = I and det R = +1, to a tolerance that
-// accepts calibrations printed with 6 decimals.
-bool IsRotation(const std::array<double, 9>& R)
-{
-  for (int a = 0; a < 3; ++a)
-  {
-    for (int b = 0; b < 3; ++b)
-    {
-      double dot = 0.0;
-      for (int c = 0; c < 3; ++c)
-      {
-        dot += R[3 * a + c] * R[3 * b + c];
-      }
-      if (std::abs(dot - (a == b ? 1.0 : 0.0)) > 1e-3)
-      {
-        return false;
-      }
-    }
-  }
-  const double det = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
-    R[2] * (R[3] * R[7] - R[4] * R[6]);
-  return det > 0.0;
 }
 
 template<size_t N>
@@ -125,18 +112,40 @@ std::vector<ManifestView> ParseViews(const Json& views, const std::string& key)
     view.K = GetArray<9>(views[i], path, "K");
     view.R = GetArray<9>(views[i], path, "R");
     view.T = GetArray<3>(views[i], path, "t");
-    if (view.K[8] == 0.0 || view.K[0] == 0.0 || view.K[4] == 0.0)
-    {
-      throw FieldError(
-        MemberPath(path, "K"), "not an intrinsic matrix (zero focal length or K[8])");
-    }
-    if (!IsRotation(view.R))
-    {
-      throw FieldError(MemberPath(path, "R"), "not a rotation matrix (R R^T != I or det R != 1)");
-    }
     parsed.push_back(view);
   }
   return parsed;
+}
+
+void FillRig(const std::vector<ManifestView>& views, int width, int height, vtkCameraRig* rig)
+{
+  rig->SetNumberOfViews(static_cast<int>(views.size()));
+  rig->SetImageSize(width, height);
+  for (size_t i = 0; i < views.size(); ++i)
+  {
+    const ManifestView& view = views[i];
+    const int index = static_cast<int>(i);
+    rig->SetView(index, view.K.data(), view.R.data(), view.T.data());
+    if (!view.Name.empty())
+    {
+      rig->SetViewName(index, view.Name.c_str());
+    }
+  }
+}
+
+// The rig's one validation (vtkCameraRig::FindInvalidView), reported on the
+// field of the view that fails it.
+void ValidateViews(const std::vector<ManifestView>& views, const std::string& key)
+{
+  vtkNew<vtkCameraRig> rig;
+  FillRig(views, 1, 1, rig);
+  std::string field, problem;
+  const int invalid = rig->FindInvalidView(field, problem);
+  if (invalid >= 0)
+  {
+    const std::string view = ElementPath(key, static_cast<size_t>(invalid));
+    throw FieldError(field.empty() ? view : MemberPath(view, field.c_str()), problem);
+  }
 }
 
 // The optional "projectors": {width, height, views, masks}.
@@ -158,6 +167,7 @@ void ParseProjectors(const Json& document, Manifest& manifest)
     lfd::io::RequireMember(*projectors, "projectors", "height"), "projectors.height", 1, 1 << 20));
   manifest.Projectors =
     ParseViews(lfd::io::RequireMember(*projectors, "projectors", "views"), "projectors.views");
+  ValidateViews(manifest.Projectors, "projectors.views");
   if (const Json* masks = lfd::io::FindMember(*projectors, "projectors", "masks"))
   {
     if (!masks->is_array() || masks->size() != manifest.Projectors.size())
@@ -168,7 +178,7 @@ void ParseProjectors(const Json& document, Manifest& manifest)
     }
     for (size_t i = 0; i < masks->size(); ++i)
     {
-      const std::string image = lfd::io::GetString((*masks)[i], ElementPath("projectors.masks", i));
+      const std::string image = lfd::io::GetPath((*masks)[i], ElementPath("projectors.masks", i));
       manifest.Masks.push_back(lfd::io::ResolvePath(manifest.Folder, image));
     }
   }
@@ -199,6 +209,7 @@ void ParseManifest(const Json& document, Manifest& manifest)
     lfd::io::GetInteger(lfd::io::RequireMember(document, "", "height"), "height", 1, 1 << 20));
 
   manifest.Views = ParseViews(lfd::io::RequireMember(document, "", "views"), "views");
+  ValidateViews(manifest.Views, "views");
 
   const Json& passes = lfd::io::RequireMember(document, "", "passes");
   if (!passes.is_object())
@@ -210,10 +221,12 @@ void ParseManifest(const Json& document, Manifest& manifest)
   {
     const std::string path = MemberPath("passes", it.key().c_str());
     const int pass = vtkLightField::GetPassFromName(it.key().c_str());
-    if (pass < 0)
+    if (pass < 0 || it.key() != LowerCase(vtkLightField::GetPassName(pass)))
     {
-      throw FieldError(
-        path, "unknown pass (expected coaxial, coded, flood, label, depth or confidence)");
+      // Exact lower-case names: "Coaxial" next to "coaxial" would otherwise
+      // be two lists for one pass, one of them silently ignored.
+      throw FieldError(path,
+        "unknown pass (expected coaxial, coded, flood, label, depth or confidence, in lower case)");
     }
     if (!it->is_array() || it->size() != manifest.Views.size())
     {
@@ -224,7 +237,7 @@ void ParseManifest(const Json& document, Manifest& manifest)
     manifest.HasPass[pass] = true;
     for (size_t i = 0; i < it->size(); ++i)
     {
-      const std::string image = lfd::io::GetString((*it)[i], ElementPath(path, i));
+      const std::string image = lfd::io::GetPath((*it)[i], ElementPath(path, i));
       manifest.Images[pass].push_back(lfd::io::ResolvePath(manifest.Folder, image));
     }
   }
@@ -261,22 +274,6 @@ void ParseManifest(const Json& document, Manifest& manifest)
     manifest.HasProvenance = true;
     manifest.Provenance =
       provenance->is_string() ? provenance->get<std::string>() : provenance->dump();
-  }
-}
-
-void FillRig(const std::vector<ManifestView>& views, int width, int height, vtkCameraRig* rig)
-{
-  rig->SetNumberOfViews(static_cast<int>(views.size()));
-  rig->SetImageSize(width, height);
-  for (size_t i = 0; i < views.size(); ++i)
-  {
-    const ManifestView& view = views[i];
-    const int index = static_cast<int>(i);
-    rig->SetView(index, view.K.data(), view.R.data(), view.T.data());
-    if (!view.Name.empty())
-    {
-      rig->SetViewName(index, view.Name.c_str());
-    }
   }
 }
 
@@ -393,6 +390,35 @@ int vtkLightFieldReader::RequestInformation(vtkInformation*,
     this->Fail(output, errorCode, error);
     return 0;
   }
+  // The memory the passes to read will take, checked before anything is
+  // allocated (a manifest may announce any size).
+  int bytesPerPixel = 0;
+  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+  {
+    if (manifest.HasPass[pass] && this->ReadPass[pass])
+    {
+      bytesPerPixel += vtkLightField::GetPassComponents(pass) *
+        (vtkLightField::GetPassScalarType(pass) == VTK_FLOAT ? 4 : 1);
+    }
+  }
+  std::string tooLarge = lfd::CheckLightFieldSize(manifest.Width,
+    manifest.Height,
+    static_cast<std::int64_t>(manifest.Views.size()),
+    bytesPerPixel);
+  if (tooLarge.empty())
+  {
+    tooLarge = lfd::CheckLightFieldSize(manifest.ProjectorWidth,
+      manifest.ProjectorHeight,
+      static_cast<std::int64_t>(manifest.Masks.size()),
+      3);
+  }
+  if (!tooLarge.empty())
+  {
+    this->Fail(output,
+      vtkErrorCode::FileFormatError,
+      manifest.Path + ": the light field is too large to read: " + tooLarge);
+    return 0;
+  }
   SetOutputLayout(
     outputs, manifest.Width, manifest.Height, static_cast<int>(manifest.Views.size()));
   return 1;
@@ -409,41 +435,81 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
 
   const int views = static_cast<int>(manifest.Views.size());
   output->Initialize();
-  output->SetLayout(manifest.Width, manifest.Height, views);
 
-  vtkNew<vtkCameraRig> rig;
-  FillRig(manifest.Views, manifest.Width, manifest.Height, rig);
-
-  std::vector<int> passes;
+  // Every image's header is checked against the manifest before any pass is
+  // allocated: a wrong size, bit depth or channel count fails at once.
+  struct Image
+  {
+    const std::string* Path;
+    std::string Field;
+    int Pass; // -1 for a projector mask
+    int Slice;
+    lfd::io::ImageHeader Header;
+  };
+  std::vector<Image> images;
   for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
   {
-    if (manifest.HasPass[pass] && this->ReadPass[pass])
+    if (!manifest.HasPass[pass] || !this->ReadPass[pass])
     {
-      passes.push_back(pass);
+      continue;
     }
-  }
-  const double total = static_cast<double>(passes.size()) * views;
-  int done = 0;
-  this->UpdateProgress(0.0);
-  for (int pass : passes)
-  {
-    const std::string passKey = MemberPath("passes", vtkLightField::GetPassName(pass));
-    const int channels = vtkLightField::GetPassComponents(pass);
-    vtkDataArray* array = output->AllocatePass(pass);
+    const std::string passKey =
+      MemberPath("passes", LowerCase(vtkLightField::GetPassName(pass)).c_str());
     for (int i = 0; i < views; ++i)
     {
-      std::string field = ElementPath(passKey, i);
-      for (char& c : field)
-      {
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      }
-      if (!this->ReadImageInto(
-            manifest.Images[pass][i], field, manifest.Width, manifest.Height, array, i, output))
-      {
-        return 0;
-      }
-      this->UpdateProgress(++done / total);
+      images.push_back({ &manifest.Images[pass][i], ElementPath(passKey, i), pass, i, {} });
     }
+  }
+  for (size_t i = 0; i < manifest.Masks.size(); ++i)
+  {
+    images.push_back(
+      { &manifest.Masks[i], ElementPath("projectors.masks", i), -1, static_cast<int>(i), {} });
+  }
+  for (Image& image : images)
+  {
+    const bool mask = image.Pass < 0;
+    if (!this->CheckImage(*image.Path,
+          image.Field,
+          mask ? manifest.ProjectorWidth : manifest.Width,
+          mask ? manifest.ProjectorHeight : manifest.Height,
+          mask ? VTK_UNSIGNED_CHAR : vtkLightField::GetPassScalarType(image.Pass),
+          mask ? 3 : vtkLightField::GetPassComponents(image.Pass),
+          image.Header,
+          output))
+    {
+      return 0;
+    }
+  }
+
+  output->SetLayout(manifest.Width, manifest.Height, views);
+  vtkNew<vtkCameraRig> rig;
+  FillRig(manifest.Views, manifest.Width, manifest.Height, rig);
+  vtkNew<vtkImageData> masks;
+  vtkNew<vtkUnsignedCharArray> mask;
+  if (!manifest.Masks.empty())
+  {
+    masks->SetDimensions(
+      manifest.ProjectorWidth, manifest.ProjectorHeight, static_cast<int>(manifest.Masks.size()));
+    mask->SetName("Mask");
+    mask->SetNumberOfComponents(3);
+    mask->SetNumberOfTuples(masks->GetNumberOfPoints());
+    masks->GetPointData()->SetScalars(mask);
+  }
+  this->UpdateProgress(0.0);
+  for (size_t done = 0; done < images.size(); ++done)
+  {
+    const Image& image = images[done];
+    vtkDataArray* array =
+      image.Pass < 0 ? static_cast<vtkDataArray*>(mask) : output->GetPass(image.Pass);
+    if (!array)
+    {
+      array = output->AllocatePass(image.Pass);
+    }
+    if (!this->ReadImageInto(*image.Path, image.Field, image.Header, array, image.Slice, output))
+    {
+      return 0;
+    }
+    this->UpdateProgress((done + 1.0) / images.size());
   }
 
   if (!manifest.Projectors.empty())
@@ -454,27 +520,6 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
   }
   if (!manifest.Masks.empty())
   {
-    vtkNew<vtkImageData> masks;
-    masks->SetDimensions(
-      manifest.ProjectorWidth, manifest.ProjectorHeight, static_cast<int>(manifest.Masks.size()));
-    vtkNew<vtkUnsignedCharArray> mask;
-    mask->SetName("Mask");
-    mask->SetNumberOfComponents(3);
-    mask->SetNumberOfTuples(masks->GetNumberOfPoints());
-    masks->GetPointData()->SetScalars(mask);
-    for (size_t i = 0; i < manifest.Masks.size(); ++i)
-    {
-      if (!this->ReadImageInto(manifest.Masks[i],
-            ElementPath("projectors.masks", i),
-            manifest.ProjectorWidth,
-            manifest.ProjectorHeight,
-            mask,
-            static_cast<int>(i),
-            output))
-      {
-        return 0;
-      }
-    }
     output->SetProjectorMasks(masks);
   }
   if (!manifest.Palette.empty())
@@ -498,47 +543,74 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightFieldReader::ReadImageInto(const std::string& image,
+bool vtkLightFieldReader::CheckImage(const std::string& image,
   const std::string& field,
   int width,
   int height,
-  vtkDataArray* array,
-  int slice,
+  int scalarType,
+  int channels,
+  lfd::io::ImageHeader& header,
   vtkLightField* output)
 {
-  const std::string& path = this->Internal->Parsed.Path;
-  const std::string where = path + ": field \"" + field + "\": image " + image;
-  const int channels = array->GetNumberOfComponents();
+  const std::string where =
+    this->Internal->Parsed.Path + ": field \"" + field + "\": image " + image + ": ";
   unsigned long errorCode = vtkErrorCode::NoError;
   std::string error;
-  lfd::io::ImageHeader header;
   if (!lfd::io::ReadImageHeader(image, header, error, errorCode))
   {
-    this->Fail(output, errorCode, where + ": " + error);
+    this->Fail(output, errorCode, where + error);
     return false;
   }
   if (header.Width != width || header.Height != height)
   {
     this->Fail(output,
       vtkErrorCode::FileFormatError,
-      where + ": image is " + std::to_string(header.Width) + "x" + std::to_string(header.Height) +
+      where + "image is " + std::to_string(header.Width) + "x" + std::to_string(header.Height) +
         ", the manifest says " + std::to_string(width) + "x" + std::to_string(height));
     return false;
   }
-  if (header.Channels != channels)
+  if (header.Channels != channels || header.ScalarType != scalarType)
   {
+    const auto describe = [](int count, int type)
+    {
+      return std::to_string(count) + (count == 1 ? " channel" : " channels") + " of " +
+        (type == VTK_FLOAT               ? "32-bit float"
+            : type == VTK_UNSIGNED_SHORT ? "16-bit"
+                                         : "8-bit");
+    };
     this->Fail(output,
       vtkErrorCode::FileFormatError,
-      where + ": image has " + std::to_string(header.Channels) + " channels, expected " +
-        std::to_string(channels));
-    return false;
-  }
-  if (!lfd::io::ReadViewPixels(image, header, array, slice, error))
-  {
-    this->Fail(output, vtkErrorCode::FileFormatError, where + ": " + error);
+      where + "image has " + describe(header.Channels, header.ScalarType) + ", expected " +
+        describe(channels, scalarType));
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldReader::ReadImageInto(const std::string& image,
+  const std::string& field,
+  const lfd::io::ImageHeader& header,
+  vtkDataArray* array,
+  int slice,
+  vtkLightField* output)
+{
+  std::string error;
+  if (!lfd::io::ReadViewPixels(image, header, array, slice, error))
+  {
+    this->Fail(output,
+      vtkErrorCode::FileFormatError,
+      this->Internal->Parsed.Path + ": field \"" + field + "\": image " + image + ": " + error);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkLightFieldReader::DescribeFailure(const std::string& problem)
+{
+  return (this->FileName ? std::string(this->FileName) : std::string("vtkLightFieldReader")) +
+    ": " + problem;
 }
 
 //------------------------------------------------------------------------------

@@ -16,11 +16,17 @@
  *
  * The manifest is validated completely: malformed JSON (with the parser's
  * line and column), a wrong "format" or unsupported "version", a missing
- * field, an array of the wrong length, a non-finite or non-rotation matrix,
- * an unknown pass, a missing image file and an image whose size or channel
- * count differs from the manifest are each reported by one error that names
- * the file and the field. The output is then empty, GetErrorCode() is not
- * vtkErrorCode::NoError and GetErrorMessage() holds that one line. As for any
+ * field, an array of the wrong length, a camera that fails
+ * vtkCameraRig::FindInvalidView() (not a rotation, a singular K, |t| too
+ * large, a repeated view), an unknown or not lower-case pass, a file name
+ * with a NUL, JSON nested deeper than lfd::MaximumJsonDepth, a light field
+ * larger than lfd::MaximumLightFieldBytes, a missing image file, a path that
+ * is not a regular file (directory, FIFO, device) and an image whose size,
+ * bit depth or channel count differs from what the manifest and the pass
+ * expect (checked for every image before any pass is allocated) are each
+ * reported by one error that names the file and the field. A C++ exception
+ * is reported the same way (vtkLightFieldAlgorithm::ProcessRequest). The output is then empty,
+ * GetErrorCode() is not vtkErrorCode::NoError and GetErrorMessage() holds that one line. As for any
  * VTK algorithm, the pipeline's executive reports the failed request too;
  * observe vtkCommand::ErrorEvent on the reader and its executive to handle
  * errors quietly.
@@ -39,6 +45,14 @@
 #include <string> // For std::string
 
 class vtkDataArray;
+
+namespace lfd
+{
+namespace io
+{
+struct ImageHeader;
+}
+}
 
 class LFDIO_EXPORT vtkLightFieldReader : public vtkLightFieldAlgorithm
 {
@@ -79,16 +93,28 @@ protected:
     vtkInformationVector** inputs,
     vtkInformationVector* outputs) override;
 
-  // Reads one image file into slice `slice` of `array` after checking its
-  // size and channels; on failure reports the error naming the manifest,
-  // the field and the image, and returns false.
-  bool ReadImageInto(const std::string& image,
+  // Checks the header of an image against the size, scalar type and
+  // channels the manifest and pass expect; on failure reports the error
+  // naming the manifest, the field and the image, and returns false.
+  bool CheckImage(const std::string& image,
     const std::string& field,
     int width,
     int height,
+    int scalarType,
+    int channels,
+    lfd::io::ImageHeader& header,
+    vtkLightField* output);
+
+  // Reads a checked image into slice `slice` of `array`; on failure reports
+  // the error like CheckImage().
+  bool ReadImageInto(const std::string& image,
+    const std::string& field,
+    const lfd::io::ImageHeader& header,
     vtkDataArray* array,
     int slice,
     vtkLightField* output);
+
+  std::string DescribeFailure(const std::string& problem) override;
 
   char* FileName = nullptr;
   bool ReadPass[vtkLightField::NUMBER_OF_PASSES];

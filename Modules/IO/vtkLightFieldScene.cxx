@@ -1,13 +1,17 @@
 #include "vtkLightFieldScene.h"
 
+#include "lfdExceptions.h"
 #include "lfdFileUtilities.h"
 #include "lfdJsonFields.h"
+#include "lfdLimits.h"
+#include "lfdPinholeCamera.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
+#include "vtkLightFieldReader.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -19,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -66,6 +71,57 @@ Json PointsToJson(vtkDataArray* array)
 Json VectorToJson(const double* v)
 {
   return Json::array({ v[0], v[1], v[2] });
+}
+
+// The checks Read() and Write() share on the settings that are not plain
+// JSON types: the view camera, the image size, the subdivision and the
+// keyframe times. Throws FieldError.
+void ValidateSettings(vtkCamera* camera,
+  int width,
+  int height,
+  int subdivision,
+  const std::vector<Keyframe>& keyframes)
+{
+  std::string field, problem;
+  if (!lfd::CheckLookAt(camera->GetPosition(),
+        camera->GetFocalPoint(),
+        camera->GetViewUp(),
+        camera->GetViewAngle(),
+        field,
+        problem))
+  {
+    throw FieldError(MemberPath("camera", field.c_str()), problem);
+  }
+  const std::string sizeRange = "expected an integer in [1, " +
+    std::to_string(lfd::MaximumRenderSize) + "] (the maximum render size)";
+  if (width < 1 || width > lfd::MaximumRenderSize)
+  {
+    throw FieldError("camera.width", sizeRange + ", found " + std::to_string(width));
+  }
+  if (height < 1 || height > lfd::MaximumRenderSize)
+  {
+    throw FieldError("camera.height", sizeRange + ", found " + std::to_string(height));
+  }
+  if (subdivision != 0 &&
+    (subdivision < lfd::MinimumSubdivision || subdivision > lfd::MaximumSubdivision))
+  {
+    throw FieldError("render.subdivision",
+      "expected an integer in [" + std::to_string(lfd::MinimumSubdivision) + ", " +
+        std::to_string(lfd::MaximumSubdivision) + "] or \"auto\", found " +
+        std::to_string(subdivision));
+  }
+  // Two keyframes at one time would be one pose too many: the interpolator
+  // (vtkKeyframeInterpolator::AddKeyframe) refuses the second as well.
+  std::set<double> times;
+  for (size_t k = 0; k < keyframes.size(); ++k)
+  {
+    if (!times.insert(keyframes[k].Time).second)
+    {
+      throw FieldError(MemberPath(ElementPath("keyframes", k), "time"),
+        "another keyframe has the same time " + std::to_string(keyframes[k].Time) +
+          "; keyframe times must differ");
+    }
+  }
 }
 
 bool AllFinite(vtkDataArray* array)
@@ -148,6 +204,29 @@ const char* vtkLightFieldScene::GetResolvedLightFieldPath()
       this->FileName ? lfd::io::ParentFolder(this->FileName) : std::string(), this->LightFieldPath);
   }
   return this->Internal->ResolvedPath.c_str();
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldScene::ConfigureReader(vtkLightFieldReader* reader)
+{
+  this->Internal->ErrorMessage.clear();
+  const std::string scene = this->FileName ? this->FileName : "(scene)";
+  if (!this->LightFieldPath || !*this->LightFieldPath)
+  {
+    return this->Fail(
+      scene + ": field \"lightfield\": missing (the scene names no light-field dataset)");
+  }
+  const std::string path = this->GetResolvedLightFieldPath();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+  {
+    return this->Fail(scene + ": field \"lightfield\": " + path + ": file not found");
+  }
+  if (reader)
+  {
+    reader->SetFileName(path.c_str());
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -259,7 +338,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
     }
     if (const Json* value = lfd::io::FindMember(document, "", "lightfield"))
     {
-      lightField = lfd::io::GetString(*value, "lightfield");
+      lightField = lfd::io::GetPath(*value, "lightfield");
       hasLightField = true;
     }
 
@@ -369,30 +448,28 @@ bool vtkLightFieldScene::Read(const char* fileName)
       }
       if (const Json* v = lfd::io::FindMember(*cam, "camera", "view_up"))
       {
-        const std::vector<double> up = lfd::io::GetNumbers(*v, "camera.view_up", 3);
-        if (up[0] == 0.0 && up[1] == 0.0 && up[2] == 0.0)
-        {
-          throw FieldError("camera.view_up", "must not be the zero vector");
-        }
-        camera->SetViewUp(up.data());
+        camera->SetViewUp(lfd::io::GetNumbers(*v, "camera.view_up", 3).data());
       }
       if (const Json* v = lfd::io::FindMember(*cam, "camera", "view_angle"))
       {
+        // vtkCamera clamps the angle it is given: checked here, unclamped.
         const double angle = lfd::io::GetNumber(*v, "camera.view_angle");
-        if (angle <= 0.0 || angle >= 180.0)
+        if (!(angle >= lfd::MinimumViewAngle && angle <= lfd::MaximumViewAngle))
         {
           throw FieldError(
-            "camera.view_angle", "expected degrees in (0, 180), found " + lfd::io::Describe(*v));
+            "camera.view_angle", "expected degrees in [0.5, 179], found " + lfd::io::Describe(*v));
         }
         camera->SetViewAngle(angle);
       }
       if (const Json* v = lfd::io::FindMember(*cam, "camera", "width"))
       {
-        width = static_cast<int>(lfd::io::GetInteger(*v, "camera.width", 1, 1 << 16));
+        width =
+          static_cast<int>(lfd::io::GetInteger(*v, "camera.width", 1, lfd::MaximumRenderSize));
       }
       if (const Json* v = lfd::io::FindMember(*cam, "camera", "height"))
       {
-        height = static_cast<int>(lfd::io::GetInteger(*v, "camera.height", 1, 1 << 16));
+        height =
+          static_cast<int>(lfd::io::GetInteger(*v, "camera.height", 1, lfd::MaximumRenderSize));
       }
     }
 
@@ -410,12 +487,15 @@ bool vtkLightFieldScene::Read(const char* fileName)
         }
         else if (v->is_number())
         {
-          subdivision = static_cast<int>(lfd::io::GetInteger(*v, "render.subdivision", 1, 1024));
+          subdivision = static_cast<int>(lfd::io::GetInteger(
+            *v, "render.subdivision", lfd::MinimumSubdivision, lfd::MaximumSubdivision));
         }
         else
         {
           throw FieldError("render.subdivision",
-            "expected an integer in [1, 1024] or \"auto\", found " + lfd::io::Describe(*v));
+            "expected an integer in [" + std::to_string(lfd::MinimumSubdivision) + ", " +
+              std::to_string(lfd::MaximumSubdivision) + "] or \"auto\", found " +
+              lfd::io::Describe(*v));
         }
       }
       if (const Json* v = lfd::io::FindMember(*render, "render", "widened_search"))
@@ -445,10 +525,11 @@ bool vtkLightFieldScene::Read(const char* fileName)
         }
       }
     }
+    ValidateSettings(camera, width, height, subdivision, keyframes);
   }
-  catch (const std::exception& e)
+  catch (...)
   {
-    return this->Fail(std::string(fileName) + ": " + e.what());
+    return this->Fail(std::string(fileName) + ": " + lfd::CurrentExceptionMessage());
   }
 
   this->SetFileName(fileName);
@@ -475,7 +556,34 @@ bool vtkLightFieldScene::Write(const char* fileName)
   {
     return this->Fail("vtkLightFieldScene::Write: no file name given");
   }
+  // std::filesystem and the JSON library throw (e.g. on a path or a name
+  // that is not UTF-8): no exception may leave Write().
+  try
+  {
+    return this->WriteFile(fileName);
+  }
+  catch (...)
+  {
+    return this->Fail(std::string(fileName) + ": " + lfd::CurrentExceptionMessage());
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldScene::WriteFile(const char* fileName)
+{
   const std::string file = fileName;
+  try
+  {
+    ValidateSettings(this->Internal->Camera,
+      this->Width,
+      this->Height,
+      this->Subdivision,
+      this->Internal->Keyframes);
+  }
+  catch (const FieldError& e)
+  {
+    return this->Fail(file + ": " + e.what());
+  }
   Json document;
   document["format"] = "lfd-scene";
   document["version"] = SceneVersion;
@@ -590,23 +698,8 @@ bool vtkLightFieldScene::Write(const char* fileName)
     return this->Fail(file + ": render.focal_distance is not finite");
   }
 
-  const std::string temporary = lfd::io::TemporaryFileName(file);
-  {
-    std::ofstream stream(temporary, std::ios::binary);
-    if (!stream)
-    {
-      return this->Fail(temporary + ": cannot open the file for writing");
-    }
-    stream << document.dump(2) << "\n";
-    stream.close();
-    if (!stream)
-    {
-      lfd::io::RemoveQuietly(temporary);
-      return this->Fail(temporary + ": cannot write the scene");
-    }
-  }
   std::string error;
-  if (!lfd::io::CommitFile(temporary, file, error))
+  if (!lfd::io::WriteFileAtomically(file, document.dump(2) + "\n", error))
   {
     return this->Fail(file + ": " + error);
   }

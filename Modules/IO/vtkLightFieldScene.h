@@ -31,9 +31,16 @@
  * JSON (line and column), wrong format, unknown version, missing fields, a
  * corner index out of range, a box without exactly 8 corners, `points` and
  * `rest_points` of different lengths, a keyframe whose point count differs
- * from the cage's, a non-finite number, a value out of range. Write() writes
- * atomically (a temporary file in the same folder renamed onto the target)
- * with doubles printed so that they read back bit for bit.
+ * from the cage's, a non-finite number, a value out of range, JSON nested
+ * deeper than lfd::MaximumJsonDepth, a path that is not a regular file, a
+ * degenerate camera (lfd::CheckLookAt(): position = focal point, view_up
+ * parallel to the view direction, view_angle outside [0.5, 179] degrees), an
+ * image size above lfd::MaximumRenderSize, a subdivision outside
+ * [1, lfd::MaximumSubdivision], two keyframes at the same time, a file name
+ * with a NUL. Write() refuses the same settings, and writes atomically and
+ * durably (lfdFileUtilities.h: checked writes, fsync, a temporary file in the
+ * same folder renamed onto the target) with doubles printed so that they
+ * read back bit for bit.
  */
 #ifndef vtkLightFieldScene_h
 #define vtkLightFieldScene_h
@@ -45,6 +52,7 @@
 #include <string> // For std::string
 
 class vtkCamera;
+class vtkLightFieldReader;
 class vtkPoints;
 class vtkUnstructuredGrid;
 
@@ -103,6 +111,14 @@ public:
    * absolute or when FileName is not set); "" when LightFieldPath is unset.
    */
   const char* GetResolvedLightFieldPath();
+
+  /**
+   * Points `reader` (may be null, to check only) at the scene's light field.
+   * Returns false, with GetErrorMessage() naming the scene file and its
+   * field "lightfield", when the scene names no light field or the resolved
+   * path does not exist.
+   */
+  bool ConfigureReader(vtkLightFieldReader* reader);
 
   ///@{
   /**
@@ -208,6 +224,7 @@ private:
   void operator=(const vtkLightFieldScene&) = delete;
 
   bool Fail(const std::string& message);
+  bool WriteFile(const char* fileName);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -1,5 +1,6 @@
 #include "vtkLightFieldWriter.h"
 
+#include "lfdExceptions.h"
 #include "lfdFileUtilities.h"
 #include "lfdImageFiles.h"
 #include "lfdJsonFields.h"
@@ -16,7 +17,6 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkLightFieldWriter);
@@ -149,6 +149,22 @@ void vtkLightFieldWriter::WriteData()
         " views, the light field " + std::to_string(views));
     return;
   }
+  // The reader's validation of the cameras: never write a dataset that
+  // vtkLightFieldReader would refuse.
+  vtkCameraRig* projectors = input->GetProjectors();
+  for (vtkCameraRig* checked : { rig, projectors })
+  {
+    std::string field, problem;
+    const int invalid = checked->FindInvalidView(field, problem);
+    if (invalid >= 0)
+    {
+      const std::string view = std::string(checked == rig ? "views" : "projectors.views") + "[" +
+        std::to_string(invalid) + "]";
+      this->Fail(vtkErrorCode::UnknownError,
+        directory + ": " + view + (field.empty() ? "" : "." + field) + ": " + problem);
+      return;
+    }
+  }
   std::vector<int> passes;
   for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
   {
@@ -171,7 +187,6 @@ void vtkLightFieldWriter::WriteData()
     }
     passes.push_back(pass);
   }
-  vtkCameraRig* projectors = input->GetProjectors();
   vtkDataArray* maskArray = nullptr;
   if (vtkImageData* masks = input->GetProjectorMasks())
   {
@@ -265,8 +280,12 @@ void vtkLightFieldWriter::WriteData()
   }
   if (const char* provenance = input->GetProvenance())
   {
-    Json parsed = Json::parse(provenance, nullptr, false);
-    manifest["provenance"] = parsed.is_discarded() ? Json(provenance) : parsed;
+    // Provenance that is JSON is kept as JSON (depth-bounded like every
+    // JSON we read), anything else as a string.
+    Json parsed;
+    std::string notJson;
+    manifest["provenance"] =
+      lfd::io::ParseJsonText(provenance, parsed, notJson) ? parsed : Json(provenance);
   }
 
   // Everything goes to the temporary sibling first.
@@ -276,7 +295,7 @@ void vtkLightFieldWriter::WriteData()
   if (ec)
   {
     this->Fail(vtkErrorCode::CannotOpenFileError,
-      temporary + ": cannot create the directory: " + ec.message());
+      directory + ": cannot create the directory: " + ec.message());
     return;
   }
   for (const ImageFile& file : files)
@@ -286,7 +305,7 @@ void vtkLightFieldWriter::WriteData()
     {
       lfd::io::RemoveQuietly(temporary);
       this->Fail(vtkErrorCode::CannotOpenFileError,
-        temporary + ": cannot create a pass directory: " + ec.message());
+        directory + ": cannot create a pass directory: " + ec.message());
       return;
     }
   }
@@ -307,22 +326,18 @@ void vtkLightFieldWriter::WriteData()
           error))
     {
       lfd::io::RemoveQuietly(temporary);
-      this->Fail(vtkErrorCode::OutOfDiskSpaceError, image + ": " + error);
+      this->Fail(vtkErrorCode::OutOfDiskSpaceError, directory + ": " + file.Name + ": " + error);
       return;
     }
     this->UpdateProgress((done + 1.0) / (files.size() + 1.0));
   }
   const std::string manifestPath = (fs::path(temporary) / "lightfield.json").string();
+  const std::string manifestText = manifest.dump(2) + "\n";
+  if (!lfd::io::WriteFileContents(manifestPath, manifestText.data(), manifestText.size(), error))
   {
-    std::ofstream stream(manifestPath, std::ios::binary);
-    stream << manifest.dump(2) << "\n";
-    stream.close();
-    if (!stream)
-    {
-      lfd::io::RemoveQuietly(temporary);
-      this->Fail(vtkErrorCode::OutOfDiskSpaceError, manifestPath + ": cannot write the manifest");
-      return;
-    }
+    lfd::io::RemoveQuietly(temporary);
+    this->Fail(vtkErrorCode::OutOfDiskSpaceError, directory + ": lightfield.json: " + error);
+    return;
   }
   if (!lfd::io::CommitDirectory(temporary, directory, error))
   {
@@ -330,6 +345,31 @@ void vtkLightFieldWriter::WriteData()
     return;
   }
   this->UpdateProgress(1.0);
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkLightFieldWriter::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  // An exception (a view name that is not UTF-8 for the JSON library, the
+  // file system, memory) must not cross the pipeline into Python.
+  try
+  {
+    return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  }
+  catch (...)
+  {
+    const std::string message = lfd::CurrentExceptionMessage();
+    if (this->Directory)
+    {
+      lfd::io::RemoveQuietly(lfd::io::TemporaryDirectoryName(this->Directory));
+    }
+    this->Fail(vtkErrorCode::UnknownError,
+      (this->Directory ? std::string(this->Directory) : std::string("vtkLightFieldWriter")) + ": " +
+        message);
+    return 0;
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -3,6 +3,7 @@
 #include "lfdFileUtilities.h"
 #include "lfdImageFiles.h"
 #include "lfdJsonFields.h"
+#include "lfdLimits.h"
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
@@ -80,6 +81,11 @@ std::vector<std::string> Tokens(const std::string& line)
 // cannot be opened).
 std::vector<ParEntry> ParseParFile(const std::string& path)
 {
+  std::string problem;
+  if (!lfd::io::CheckRegularFile(path, problem))
+  {
+    throw std::runtime_error(path + ": " + problem);
+  }
   std::ifstream stream(path);
   if (!stream)
   {
@@ -155,6 +161,22 @@ std::vector<ParEntry> ParseParFile(const std::string& path)
       "announces " + std::to_string(announced) + " images but " + std::to_string(entries.size()) +
         " calibration lines follow");
   }
+  // The rig's one validation, as the dataset reader applies it: the
+  // importer never produces a light field its own reader would refuse.
+  vtkNew<vtkCameraRig> rig;
+  rig->SetNumberOfViews(static_cast<int>(entries.size()));
+  for (size_t i = 0; i < entries.size(); ++i)
+  {
+    const double* v = entries[i].Values;
+    rig->SetView(static_cast<int>(i), v, v + 9, v + 18);
+  }
+  std::string field;
+  const int invalid = rig->FindInvalidView(field, problem);
+  if (invalid >= 0)
+  {
+    const std::string fields = field == "K" ? "k11..k33" : field == "R" ? "r11..r33" : "t1 t2 t3";
+    throw ParError(path, entries[invalid].Line, field.empty() ? problem : fields + ": " + problem);
+  }
   return entries;
 }
 
@@ -226,12 +248,24 @@ int vtkMiddleburyImporter::RequestInformation(vtkInformation*,
     return 0;
   }
   lfd::io::ImageHeader header;
-  if (!lfd::io::ReadImageHeader(entries[0].Image, header, error))
+  if (!lfd::io::ReadImageHeader(entries[0].Image, header, error, errorCode))
   {
     this->Fail(output,
-      vtkErrorCode::FileNotFoundError,
+      errorCode,
       std::string(this->FileName) + ":" + std::to_string(entries[0].Line) + ": image " +
         entries[0].Image + ": " + error);
+    return 0;
+  }
+  // An image header may announce any size: the coaxial pass it implies is
+  // checked before it is allocated.
+  const std::string tooLarge = lfd::CheckLightFieldSize(
+    header.Width, header.Height, static_cast<std::int64_t>(entries.size()), 3);
+  if (!tooLarge.empty())
+  {
+    this->Fail(output,
+      vtkErrorCode::FileFormatError,
+      std::string(this->FileName) + ":" + std::to_string(entries[0].Line) + ": image " +
+        entries[0].Image + ": the light field is too large to import: " + tooLarge);
     return 0;
   }
   SetOutputLayout(outputs, header.Width, header.Height, static_cast<int>(entries.size()));
@@ -251,49 +285,56 @@ int vtkMiddleburyImporter::RequestData(vtkInformation*,
   const std::string parFile = this->FileName;
 
   const int views = static_cast<int>(entries.size());
-  int width = 0;
-  int height = 0;
-  vtkDataArray* coaxial = nullptr;
-  this->UpdateProgress(0.0);
+  // Every header is checked (size, channels, bit depth) before the coaxial
+  // pass is allocated.
+  std::vector<lfd::io::ImageHeader> headers(entries.size());
   for (int i = 0; i < views; ++i)
   {
     const ParEntry& entry = entries[i];
     const std::string where =
       parFile + ":" + std::to_string(entry.Line) + ": image " + entry.Image + ": ";
-    lfd::io::ImageHeader header;
+    lfd::io::ImageHeader& header = headers[i];
     if (!lfd::io::ReadImageHeader(entry.Image, header, error, errorCode))
     {
       this->Fail(output, errorCode, where + error);
       return 0;
     }
-    if (i == 0)
-    {
-      width = header.Width;
-      height = header.Height;
-      output->Initialize();
-      output->SetLayout(width, height, views);
-      coaxial = output->AllocatePass(vtkLightField::COAXIAL);
-    }
-    else if (header.Width != width || header.Height != height)
+    if (header.Width != headers[0].Width || header.Height != headers[0].Height)
     {
       this->Fail(output,
         vtkErrorCode::FileFormatError,
         where + "image is " + std::to_string(header.Width) + "x" + std::to_string(header.Height) +
-          ", the first image (" + entries[0].Name + ") is " + std::to_string(width) + "x" +
-          std::to_string(height));
+          ", the first image (" + entries[0].Name + ") is " + std::to_string(headers[0].Width) +
+          "x" + std::to_string(headers[0].Height));
       return 0;
     }
-    if (header.Channels != 1 && header.Channels < 3)
+    if ((header.Channels != 1 && header.Channels < 3) || header.ScalarType != VTK_UNSIGNED_CHAR)
     {
       this->Fail(output,
         vtkErrorCode::FileFormatError,
-        where + "image has " + std::to_string(header.Channels) +
-          " channels, expected grey (1) or colour (3 or 4)");
+        where + "image has " + std::to_string(header.Channels) + " channels of " +
+          (header.ScalarType == VTK_UNSIGNED_CHAR       ? "8"
+              : header.ScalarType == VTK_UNSIGNED_SHORT ? "16"
+                                                        : "32-bit float") +
+          (header.ScalarType == VTK_FLOAT ? "" : "-bit") +
+          ", expected 8-bit grey (1 channel) or colour (3 or 4)");
       return 0;
     }
-    if (!lfd::io::ReadViewPixels(entry.Image, header, coaxial, i, error))
+  }
+  const int width = headers[0].Width;
+  const int height = headers[0].Height;
+  output->Initialize();
+  output->SetLayout(width, height, views);
+  vtkDataArray* coaxial = output->AllocatePass(vtkLightField::COAXIAL);
+  this->UpdateProgress(0.0);
+  for (int i = 0; i < views; ++i)
+  {
+    if (!lfd::io::ReadViewPixels(entries[i].Image, headers[i], coaxial, i, error))
     {
-      this->Fail(output, vtkErrorCode::FileFormatError, where + error);
+      this->Fail(output,
+        vtkErrorCode::FileFormatError,
+        parFile + ":" + std::to_string(entries[i].Line) + ": image " + entries[i].Image + ": " +
+          error);
       return 0;
     }
     this->UpdateProgress(0.95 * (i + 1) / views);
@@ -320,6 +361,13 @@ int vtkMiddleburyImporter::RequestData(vtkInformation*,
   output->SetProvenance(provenance.dump().c_str());
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkMiddleburyImporter::DescribeFailure(const std::string& problem)
+{
+  return (this->FileName ? std::string(this->FileName) : std::string("vtkMiddleburyImporter")) +
+    ": " + problem;
 }
 
 //------------------------------------------------------------------------------

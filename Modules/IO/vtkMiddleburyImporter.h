@@ -24,8 +24,13 @@
  *
  * Errors name the file and line ("templeR_par.txt:5: ..."): a wrong number
  * of fields, a non-numeric token, a non-finite number, a count on line 1 that
- * disagrees with the number of lines, a missing or unreadable image, an
- * image whose size differs from the first one. The output is then empty,
+ * disagrees with the number of lines, a camera that fails
+ * vtkCameraRig::FindInvalidView() (the dataset reader's validation: R not a
+ * rotation, a singular K, |t| too large, a repeated camera), a par file or
+ * image that is not a regular file, a missing or unreadable image, an image
+ * whose size differs from the first one or that is not 8-bit grey or colour,
+ * a light field above lfd::MaximumLightFieldBytes (all checked before the
+ * pass is allocated). The output is then empty,
  * GetErrorCode() is set and GetErrorMessage() holds the one-line message.
  *
  * @sa vtkLightFieldReader vtkCameraRig
@@ -76,6 +81,7 @@ protected:
   int RequestData(vtkInformation* request,
     vtkInformationVector** inputs,
     vtkInformationVector* outputs) override;
+  std::string DescribeFailure(const std::string& problem) override;
 
   char* FileName = nullptr;
   bool FitRigCylinder = true;

@@ -61,7 +61,7 @@ CASES = [
     (["animate", "scene.json", "--frame", "3", "--out", "o"], 2,
      "lfd animate: unknown option '--frame' (did you mean '--frames'?)"),
     (["demo", "--scene", "fosh"], 2,
-     "lfd demo: --scene: fosh not in {fish,twist,checkerboard} (see lfd demo --help)"),
+     "lfd demo: --scene: fosh not in {fish,twist,checkerboard,temple} (see lfd demo --help)"),
     (["render"], 2, "lfd render: SCENE is required (see lfd render --help)"),
     # Numeric options out of range or not a number: refused input, exit 1.
     (["bench", "--repeat", "0"], 1, "--repeat 0: expected an integer from 1 to 1000"),

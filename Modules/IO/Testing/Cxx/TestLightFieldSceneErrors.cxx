@@ -94,7 +94,7 @@ int TestLightFieldSceneErrors(int, char*[])
     { "\"render.widened_search\"", "[0, 64]" });
   expectFailure("subdivision 0",
     Scene(Cage("", Box), ", \"render\": {\"subdivision\": 0}"),
-    { "\"render.subdivision\"", "[1, 1024]" });
+    { "\"render.subdivision\"", "[1, 16]" });
   expectFailure("subdivision string",
     Scene(Cage("", Box), ", \"render\": {\"subdivision\": \"x\"}"),
     { "\"render.subdivision\"", "auto" });
@@ -103,7 +103,7 @@ int TestLightFieldSceneErrors(int, char*[])
     { "\"render.background[1]\"", "[0, 1]" });
   expectFailure("view angle 0",
     Scene(Cage("", Box), ", \"camera\": {\"view_angle\": 0}"),
-    { "\"camera.view_angle\"", "(0, 180)" });
+    { "\"camera.view_angle\"", "[0.5, 179]" });
   expectFailure("camera position of 2",
     Scene(Cage("", Box), ", \"camera\": {\"position\": [0, 1]}"),
     { "\"camera.position\"", "3 numbers" });
@@ -132,7 +132,7 @@ int TestLightFieldSceneErrors(int, char*[])
   lfdtest::CheckFailure("write into a missing folder",
     !blocked,
     scene->GetErrorMessage(),
-    { folder + "/missing/dir/scene.tmp-", "cannot open" });
+    { folder + "/missing/dir/scene.json: cannot create the file" });
   lfdtest::CheckEqual(lfdtest::CountEntries(folder, "valid.tmp-"), 0, "temporary files left");
   return lfdtest::Result();
 }

@@ -26,6 +26,8 @@ void WritePng(const std::string& path, int width, int height, int components, in
 }
 
 const std::string Calibration = " 100 0 4 0 100 3 0 0 1  1 0 0 0 1 0 0 0 1  0 0 1\n";
+// A second camera: every view of a rig must be a distinct camera.
+const std::string Calibration2 = " 100 0 4 0 100 3 0 0 1  1 0 0 0 1 0 0 0 1  0 0 2\n";
 }
 
 int TestMiddleburyImporterErrors(int, char*[])
@@ -66,7 +68,7 @@ int TestMiddleburyImporterErrors(int, char*[])
   {
     std::string parFile;
     vtkSmartPointer<vtkLightField> lightField =
-      import("2\na.png" + Calibration + "\nb.png" + Calibration + "\n\n", parFile);
+      import("2\na.png" + Calibration + "\nb.png" + Calibration2 + "\n\n", parFile);
     lfdtest::Check(lightField != nullptr, "a valid two-view file imports: " + message);
     if (lightField)
     {
@@ -110,11 +112,11 @@ int TestMiddleburyImporterErrors(int, char*[])
     1,
     { "announces 1 images" });
   expectFailure("missing image",
-    "2\na.png" + Calibration + "gone.png" + Calibration,
+    "2\na.png" + Calibration + "gone.png" + Calibration2,
     3,
     { "gone.png", "not found" });
   expectFailure("image of another size",
-    "2\na.png" + Calibration + "small.png" + Calibration,
+    "2\na.png" + Calibration + "small.png" + Calibration2,
     3,
     { "small.png", "4x4", "a.png", "8x6" });
   {
@@ -126,7 +128,25 @@ int TestMiddleburyImporterErrors(int, char*[])
     lfdtest::CheckFailure("missing par file",
       importer->GetErrorCode() != 0,
       importer->GetErrorMessage(),
-      { folder + "/none_par.txt", "cannot open" });
+      { folder + "/none_par.txt", "file not found" });
   }
+  // The dataset reader's camera validation (vtkCameraRig::FindInvalidView):
+  // what the importer accepts, its reader accepts.
+  expectFailure("R not a rotation",
+    "1\na.png 100 0 4 0 100 3 0 0 1 2 0 0 0 1 0 0 0 1 0 0 1\n",
+    2,
+    { "r11..r33", "not a rotation" });
+  expectFailure("zero K",
+    "1\na.png 0 0 0 0 0 0 0 0 0 1 0 0 0 1 0 0 0 1 0 0 1\n",
+    2,
+    { "k11..k33", "not an intrinsic matrix" });
+  expectFailure("t = 1e308",
+    "1\na.png 100 0 4 0 100 3 0 0 1 1 0 0 0 1 0 0 0 1 0 0 1e308\n",
+    2,
+    { "t1 t2 t3", "below 1e6" });
+  expectFailure("identical cameras",
+    "2\na.png" + Calibration + "b.png" + Calibration,
+    3,
+    { "the same camera (K, R and t) as view 0" });
   return lfdtest::Result();
 }
