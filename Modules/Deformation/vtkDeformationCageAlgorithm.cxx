@@ -1,6 +1,6 @@
 #include "vtkDeformationCageAlgorithm.h"
 
-#include "lfdExceptions.h"
+#include "lfdRequestGuard.h"
 #include "vtkDeformationCage.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkErrorCode.h"
@@ -35,26 +35,21 @@ vtkTypeBool vtkDeformationCageAlgorithm::ProcessRequest(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  // An exception must not cross the pipeline into Python or a front end: it
-  // becomes this algorithm's error like any other failure.
-  try
-  {
-    if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  return lfd::GuardRequest(
+    this,
+    [&]
     {
-      return this->RequestDataObject(request, inputVector, outputVector);
-    }
-    if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
-    {
-      return this->RequestData(request, inputVector, outputVector);
-    }
-    return this->Superclass::ProcessRequest(request, inputVector, outputVector);
-  }
-  catch (...)
-  {
-    this->SetErrorCode(vtkErrorCode::UnknownError);
-    vtkErrorMacro(<< this->GetClassName() << ": " << lfd::CurrentExceptionMessage());
-    return 0;
-  }
+      if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+      {
+        return this->RequestDataObject(request, inputVector, outputVector);
+      }
+      if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+      {
+        return this->RequestData(request, inputVector, outputVector);
+      }
+      return static_cast<int>(this->Superclass::ProcessRequest(request, inputVector, outputVector));
+    },
+    [this](unsigned long code) { this->SetErrorCode(code); });
 }
 
 //------------------------------------------------------------------------------

@@ -1,5 +1,7 @@
 #include "vtkGroundTruthEvaluator.h"
 
+#include "lfdRequestGuard.h"
+
 #include "vtkAdaptiveSubdivisionFilter.h"
 #include "vtkCageTransform.h"
 #include "vtkCamera.h"
@@ -288,4 +290,15 @@ void vtkGroundTruthEvaluator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IoU: " << this->IoU << "\n";
   os << indent << "LabelAgreement: " << this->LabelAgreement << "\n";
   os << indent << "ObjectPixels: " << this->ObjectPixels << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkGroundTruthEvaluator::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  return lfd::GuardRequest(
+    this,
+    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
+    [this](unsigned long code) { this->SetErrorCode(code); });
 }

@@ -1,5 +1,7 @@
 #include "vtkLeaveOneOutEvaluator.h"
 
+#include "lfdRequestGuard.h"
+
 #include "vtkCameraRig.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
@@ -202,4 +204,15 @@ void vtkLeaveOneOutEvaluator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
   os << indent << "MeanPSNR: " << this->MeanPSNR << "\n";
   os << indent << "MeanObjectPSNR: " << this->MeanObjectPSNR << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkLeaveOneOutEvaluator::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  return lfd::GuardRequest(
+    this,
+    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
+    [this](unsigned long code) { this->SetErrorCode(code); });
 }

@@ -32,6 +32,14 @@ public:
   vtkTypeMacro(vtkLeaveOneOutEvaluator, vtkTableAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The superclass's request; a C++ exception thrown by it becomes this
+   * algorithm's error (error code UnknownError), see lfdRequestGuard.h.
+   */
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
   ///@{
   /**
    * Views to evaluate. When none is added, every Stride-th view is

@@ -1,5 +1,7 @@
 #include "vtkLightFieldRenderer.h"
 
+#include "lfdRequestGuard.h"
+
 #include "lfdCylinderSampling.h"
 #include "lfdLimits.h"
 #include "lfdPinholeCamera.h"
@@ -778,4 +780,15 @@ void vtkLightFieldRenderer::PrintSelf(ostream& os, vtkIndent indent)
     os << " " << v;
   }
   os << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkLightFieldRenderer::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  return lfd::GuardRequest(
+    this,
+    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
+    [this](unsigned long code) { this->SetErrorCode(code); });
 }

@@ -59,6 +59,14 @@ public:
   vtkTypeMacro(vtkLightFieldRenderer, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The superclass's request; a C++ exception thrown by it becomes this
+   * algorithm's error (error code UnknownError), see lfdRequestGuard.h.
+   */
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
   ///@{
   /**
    * The camera to render from (a vtkRenderer's camera, for instance).

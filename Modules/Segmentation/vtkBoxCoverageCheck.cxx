@@ -1,5 +1,7 @@
 #include "vtkBoxCoverageCheck.h"
 
+#include "lfdRequestGuard.h"
+
 #include "lfdPinholeCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkCellData.h"
@@ -284,4 +286,15 @@ void vtkBoxCoverageCheck::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Threshold: " << this->Threshold << "\n";
   os << indent << "Labels: " << this->Labels.size() << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkBoxCoverageCheck::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  return lfd::GuardRequest(
+    this,
+    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
+    [this](unsigned long code) { this->SetErrorCode(code); });
 }

@@ -38,6 +38,14 @@ public:
   vtkTypeMacro(vtkBoxCoverageCheck, vtkTableAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The superclass's request; a C++ exception thrown by it becomes this
+   * algorithm's error (error code UnknownError), see lfdRequestGuard.h.
+   */
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
   ///@{
   /**
    * The light field (port 0) and the cage (port 1).

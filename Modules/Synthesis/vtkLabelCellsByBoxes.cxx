@@ -1,5 +1,7 @@
 #include "vtkLabelCellsByBoxes.h"
 
+#include "lfdRequestGuard.h"
+
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
@@ -228,4 +230,15 @@ int vtkLabelCellsByBoxes::RequestData(vtkInformation*,
 void vtkLabelCellsByBoxes::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkLabelCellsByBoxes::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  return lfd::GuardRequest(
+    this,
+    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
+    [this](unsigned long code) { this->SetErrorCode(code); });
 }

@@ -34,6 +34,14 @@ public:
   vtkTypeMacro(vtkLabelCellsByBoxes, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The superclass's request; a C++ exception thrown by it becomes this
+   * algorithm's error (error code UnknownError), see lfdRequestGuard.h.
+   */
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
   ///@{
   /**
    * The boxes (input port 1).

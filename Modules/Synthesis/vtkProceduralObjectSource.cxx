@@ -1,5 +1,7 @@
 #include "vtkProceduralObjectSource.h"
 
+#include "lfdRequestGuard.h"
+
 #include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
 #include "vtkCylinderSource.h"
@@ -472,4 +474,15 @@ void vtkProceduralObjectSource::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Object: " << this->GetObjectAsString() << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkProceduralObjectSource::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  return lfd::GuardRequest(
+    this,
+    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
+    [this](unsigned long code) { this->SetErrorCode(code); });
 }

@@ -47,6 +47,14 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
+   * The superclass's request; a C++ exception thrown by it becomes this
+   * algorithm's error (error code UnknownError), see lfdRequestGuard.h.
+   */
+  vtkTypeBool ProcessRequest(vtkInformation* request,
+    vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  /**
    * The objects this source builds.
    */
   enum Object

@@ -152,7 +152,7 @@ expect(["info", weird], 1, re.compile(r"lfd: error: .+"))
 
 # Refusals of the scene: exit 1, nothing written.
 expect(["animate", duplicate, "--frames", "3", "--out", os.path.join(WORK, "dup")], 1,
-       f"lfd: error: {duplicate}: keyframes: Two keyframes at time 1.")
+       f"lfd: error: {duplicate}: field \"keyframes[2].time\": another keyframe has the same time 1.000000; keyframe times must differ")
 expect(["synth", "--object", "checkerboard", "--scene", inverted, "--views", "4", "--rows", "1",
         "--width", "16", "--height", "16", "--out", os.path.join(WORK, "inverted.lf")], 1,
        re.compile(re.escape(f"lfd: error: {inverted}: cage: box 0 (label 1): the rest box is "
