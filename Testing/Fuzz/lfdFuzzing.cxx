@@ -71,18 +71,49 @@ void Collect(nlohmann::json& value, std::vector<nlohmann::json*>& values)
 // One change to `value`, chosen by `rng`.
 void Mutate(nlohmann::json& value, nlohmann::json& root, std::mt19937& rng)
 {
-  static const double numbers[] = { 0.0, -1.0, 1.0, 0.5, 1e308, -1e308, 1e-308, 255.0, 256.0,
-    65536.0, 1048576.0, 2147483648.0, 4294967296.0, 9.3e18 };
-  static const char* strings[] = { "NaN", "Infinity", "-inf", "", ".", "..", "/", "/dev/zero",
-    "/proc/self/fd/0", "coaxial", "coaxial/view_0001.png", "label/view_0000.png",
-    "lightfield.json", "auto", "a\0b" };
+  static const double numbers[] = {
+    0.0, -1.0, 1.0, 0.5, 1e308, -1e308, 1e-308, 255.5, 65536.0, 1048576.0, 4294967296.0
+  };
+  static const int64_t integers[] = { 0,
+    -1,
+    1,
+    255,
+    256,
+    65535,
+    65536,
+    1048576,
+    2147483647,
+    2147483648LL,
+    4294967296LL,
+    INT64_MAX,
+    INT64_MIN };
+  static const char* strings[] = { "NaN",
+    "Infinity",
+    "-inf",
+    "",
+    ".",
+    "..",
+    "/",
+    "/dev/zero",
+    "/proc/self/fd/0",
+    "coaxial",
+    "coaxial/view_0001.png",
+    "label/view_0000.png",
+    "lightfield.json",
+    "auto",
+    "a\0b" };
   const auto pick = [&rng](size_t n) { return static_cast<size_t>(rng() % n); };
   switch (pick(7))
   {
     case 0: // a number at an edge
-      value = value.is_number_integer() && pick(2) ? nlohmann::json(static_cast<int64_t>(
-                                                       numbers[pick(std::size(numbers))]))
-                                                   : nlohmann::json(numbers[pick(std::size(numbers))]);
+      if (value.is_number_integer() && pick(2))
+      {
+        value = integers[pick(std::size(integers))];
+      }
+      else
+      {
+        value = numbers[pick(std::size(numbers))];
+      }
       break;
     case 1: // a string where a value was (NaN as a string, a path, a device)
     {
@@ -92,8 +123,9 @@ void Mutate(nlohmann::json& value, nlohmann::json& root, std::mt19937& rng)
     }
     case 2: // another type
     {
-      const nlohmann::json others[] = { nullptr, true, 1, -7, "x", nlohmann::json::array(),
-        nlohmann::json::object() };
+      const nlohmann::json others[] = {
+        nullptr, true, 1, -7, "x", nlohmann::json::array(), nlohmann::json::object()
+      };
       value = others[pick(std::size(others))];
       break;
     }
@@ -161,8 +193,10 @@ std::string lfdfuzz::WriteInput(const uint8_t* data, size_t size, const std::str
   return path.string();
 }
 
-extern "C" size_t LLVMFuzzerCustomMutator(
-  uint8_t* data, size_t size, size_t maxSize, unsigned int seed)
+extern "C" size_t LLVMFuzzerCustomMutator(uint8_t* data,
+  size_t size,
+  size_t maxSize,
+  unsigned int seed)
 {
   std::mt19937 rng(seed);
   nlohmann::json document = nlohmann::json::parse(data, data + size, nullptr, false);
