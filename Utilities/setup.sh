@@ -16,6 +16,7 @@ packages=(
   libopenimageio-dev openimageio-tools
   libglm-dev nlohmann-json3-dev libcli11-dev libopencv-dev
   xvfb xauth
+  clang-14 libclang-rt-14-dev   # the sanitizer and fuzz suite (lfd-SanitizerSuite)
 )
 
 missing=()

@@ -177,88 +177,87 @@ for proxy, threshold in ((lfd.vtkLabelPropagation.DEPTH, DEPTH_PROPAGATION),
 sys.path.insert(0, os.path.join(os.path.dirname(t.BASELINE_DIR), "templeRing"))
 import paint_labels  # noqa: E402
 
-temple_dir = t.temp_path("segmentation", "temple.lf")
-importer = lfd.vtkMiddleburyImporter()
-importer.SetFileName(os.path.join(t.SHARED_DATA_DIR, "templeRing", "templeR_par.txt"))
-importer.Update()
-temple = lfd.vtkLightField()
-temple.ShallowCopy(importer.GetOutput())
-writer = lfd.vtkLightFieldWriter()
-writer.SetInputData(temple)
-writer.SetDirectory(temple_dir)
-writer.Write()
-propagation = quiet(lfd.vtkLabelPropagation())
-for view in (0, 16, 32):
-    reader = vtkPNGReader()
-    reader.SetFileName(os.path.join(os.path.dirname(t.BASELINE_DIR), "templeRing",
-                                    f"painted_view_{view:04d}.png"))
-    reader.Update()
-    painted = vtkImageData()
-    painted.DeepCopy(reader.GetOutput())
-    propagation.SetPaintedView(view, painted)
-propagation.SetThreshold(60)
-propagation.SetInputData(temple)
-propagation.Update()
-propagated = labels_of(propagation.GetOutput())
-signs = paint_labels.axis_signs(temple_dir)
-w, h, v = temple.GetDimensions()
-coaxial = vtk_to_numpy(temple.GetPass(lfd.vtkLightField.COAXIAL)).reshape(v, h, w, 3)
-agreement = []
-for view in range(v):
-    rule = paint_labels.paint(coaxial[view].astype(float), signs[view])
-    agreement.append(float((propagated[view][rule > 0] == rule[rule > 0]).mean()))
-t.check(np.mean(agreement) >= TEMPLE_MEAN and min(agreement) >= TEMPLE_WORST,
-        "templeRing: 3 painted views -> 47, agreement with the painting rule (mean, worst)",
-        (round(float(np.mean(agreement)), 3), round(min(agreement), 3)))
+importer = t.templering("templeRing label propagation")
+if importer:
+    temple_dir = t.temp_path("segmentation", "temple.lf")
+    temple = lfd.vtkLightField()
+    temple.ShallowCopy(importer.GetOutput())
+    writer = lfd.vtkLightFieldWriter()
+    writer.SetInputData(temple)
+    writer.SetDirectory(temple_dir)
+    writer.Write()
+    propagation = quiet(lfd.vtkLabelPropagation())
+    for view in (0, 16, 32):
+        reader = vtkPNGReader()
+        reader.SetFileName(os.path.join(os.path.dirname(t.BASELINE_DIR), "templeRing",
+                                        f"painted_view_{view:04d}.png"))
+        reader.Update()
+        painted = vtkImageData()
+        painted.DeepCopy(reader.GetOutput())
+        propagation.SetPaintedView(view, painted)
+    propagation.SetThreshold(60)
+    propagation.SetInputData(temple)
+    propagation.Update()
+    propagated = labels_of(propagation.GetOutput())
+    signs = paint_labels.axis_signs(temple_dir)
+    w, h, v = temple.GetDimensions()
+    coaxial = vtk_to_numpy(temple.GetPass(lfd.vtkLightField.COAXIAL)).reshape(v, h, w, 3)
+    agreement = []
+    for view in range(v):
+        rule = paint_labels.paint(coaxial[view].astype(float), signs[view])
+        agreement.append(float((propagated[view][rule > 0] == rule[rule > 0]).mean()))
+    t.check(np.mean(agreement) >= TEMPLE_MEAN and min(agreement) >= TEMPLE_WORST,
+            "templeRing: 3 painted views -> 47, agreement with the painting rule (mean, worst)",
+            (round(float(np.mean(agreement)), 3), round(min(agreement), 3)))
 
-# ... and by the box check: one slab per label along the ring axis, between
-# the heights where view 0's painted band starts and ends (projected along
-# the axis through the ring's centre), as wide as the temple.
-rig = temple.GetRig()
-centre, axis, radius = np.array(rig.GetCenter()), np.array(rig.GetAxis()), rig.GetRadius()
-K, R, tr = [0.0] * 9, [0.0] * 9, [0.0] * 3
-rig.GetIntrinsics(0, K)
-rig.GetRotation(0, R)
-rig.GetTranslation(0, tr)
-K, R, tr = np.array(K).reshape(3, 3), np.array(R).reshape(3, 3), np.array(tr)
-heights = np.linspace(-radius, radius, 2001)
-columns = [(K @ (R @ (centre + h * axis) + tr)) for h in heights]
-columns = np.array([c[0] / c[2] for c in columns])
-order = np.argsort(columns)
-painted0 = propagated[0][::-1]
-side = np.cross(axis, [1.0, 0.0, 0.0] if abs(axis[0]) < 0.9 else [0.0, 0.0, 1.0])
-side /= np.linalg.norm(side)
-other = np.cross(axis, side)
-# Half the box's side: the temple's largest width across the axis in the
-# painted views (image rows there, as the cameras are rolled), plus 10 %.
-distance = np.linalg.norm(R @ centre + tr)
-half = 0.55 * max(np.ptp(np.nonzero(propagated[v].any(axis=1))[0]) for v in (0, 16, 32)) \
-    * distance / K[1, 1]
-cage = lfd.vtkDeformationCage()
-for label in (1, 2, 3):
-    band = np.nonzero((painted0 == label).any(axis=0))[0]
-    low, high = sorted(np.interp([band.min() - 0.5, band.max() + 0.5], columns[order], heights[order]))
-    ids = [cage.AddPoint(list(centre + h * axis + half * (a * side + b * other)))
-           for h in (low, high) for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-    cage.AddBox(ids, label)
-check = lfd.vtkBoxCoverageCheck()
-check.SetInputData(0, propagation.GetOutput())
-check.SetCageData(cage)
-check.Update()
-table = vtk_to_numpy(check.GetOutput().GetColumnByName("Fraction"))
-worst = [round(check.GetWorstFraction(i), 3) for i in range(check.GetNumberOfLabels())]
-t.check(float(np.mean(table)) > TEMPLE_BOX_MEAN and min(worst) > TEMPLE_BOX_WORST,
-        "templeRing: propagated labels inside slab boxes from view 0 (mean over views, worst per label)",
-        (round(float(np.mean(table)), 3), worst))
-swapped = lfd.vtkDeformationCage()
-swapped.DeepCopy(cage)
-swapped.GetCellData().GetArray("Label").SetValue(0, 3)
-swapped.GetCellData().GetArray("Label").SetValue(2, 1)
-check.SetCageData(swapped)
-check.Update()
-table = vtk_to_numpy(check.GetOutput().GetColumnByName("Fraction"))
-t.check(float(np.mean(table)) < 0.75, "templeRing: the same slabs with labels 1 and 3 swapped fail",
-        round(float(np.mean(table)), 3))
+    # ... and by the box check: one slab per label along the ring axis, between
+    # the heights where view 0's painted band starts and ends (projected along
+    # the axis through the ring's centre), as wide as the temple.
+    rig = temple.GetRig()
+    centre, axis, radius = np.array(rig.GetCenter()), np.array(rig.GetAxis()), rig.GetRadius()
+    K, R, tr = [0.0] * 9, [0.0] * 9, [0.0] * 3
+    rig.GetIntrinsics(0, K)
+    rig.GetRotation(0, R)
+    rig.GetTranslation(0, tr)
+    K, R, tr = np.array(K).reshape(3, 3), np.array(R).reshape(3, 3), np.array(tr)
+    heights = np.linspace(-radius, radius, 2001)
+    columns = [(K @ (R @ (centre + h * axis) + tr)) for h in heights]
+    columns = np.array([c[0] / c[2] for c in columns])
+    order = np.argsort(columns)
+    painted0 = propagated[0][::-1]
+    side = np.cross(axis, [1.0, 0.0, 0.0] if abs(axis[0]) < 0.9 else [0.0, 0.0, 1.0])
+    side /= np.linalg.norm(side)
+    other = np.cross(axis, side)
+    # Half the box's side: the temple's largest width across the axis in the
+    # painted views (image rows there, as the cameras are rolled), plus 10 %.
+    distance = np.linalg.norm(R @ centre + tr)
+    half = 0.55 * max(np.ptp(np.nonzero(propagated[v].any(axis=1))[0]) for v in (0, 16, 32)) \
+        * distance / K[1, 1]
+    cage = lfd.vtkDeformationCage()
+    for label in (1, 2, 3):
+        band = np.nonzero((painted0 == label).any(axis=0))[0]
+        low, high = sorted(np.interp([band.min() - 0.5, band.max() + 0.5], columns[order], heights[order]))
+        ids = [cage.AddPoint(list(centre + h * axis + half * (a * side + b * other)))
+               for h in (low, high) for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+        cage.AddBox(ids, label)
+    check = lfd.vtkBoxCoverageCheck()
+    check.SetInputData(0, propagation.GetOutput())
+    check.SetCageData(cage)
+    check.Update()
+    table = vtk_to_numpy(check.GetOutput().GetColumnByName("Fraction"))
+    worst = [round(check.GetWorstFraction(i), 3) for i in range(check.GetNumberOfLabels())]
+    t.check(float(np.mean(table)) > TEMPLE_BOX_MEAN and min(worst) > TEMPLE_BOX_WORST,
+            "templeRing: propagated labels inside slab boxes from view 0 (mean over views, worst per label)",
+            (round(float(np.mean(table)), 3), worst))
+    swapped = lfd.vtkDeformationCage()
+    swapped.DeepCopy(cage)
+    swapped.GetCellData().GetArray("Label").SetValue(0, 3)
+    swapped.GetCellData().GetArray("Label").SetValue(2, 1)
+    check.SetCageData(swapped)
+    check.Update()
+    table = vtk_to_numpy(check.GetOutput().GetColumnByName("Fraction"))
+    t.check(float(np.mean(table)) < 0.75, "templeRing: the same slabs with labels 1 and 3 swapped fail",
+            round(float(np.mean(table)), 3))
 
 # 4. Box coverage: the fish's part boxes hold their labels; without a box a
 # label covers nothing.
