@@ -178,15 +178,9 @@ t.check(errors and errors[-1].rstrip().endswith(expected),
         "two labels on the unlabelled figure: the renderer says to split first", errors)
 
 # (b) Real: the templeRing ------------------------------------------------------
-par = os.path.join(t.SHARED_DATA_DIR, "templeRing", "templeR_par.txt")
-if not os.path.isfile(par):  # data not found: skipped, as ctest's SKIP_RETURN_CODE says
-    print(f"SKIP (b): {par} not found (https://vision.middlebury.edu/mview/data/)")
+importer = t.templering("(b) templeRing top twisted in one box")
+if importer is None:
     t.finish()
-    sys.exit(125)
-importer = lfd.vtkMiddleburyImporter()
-importer.SetFileName(par)
-importer.Update()
-t.check(importer.GetErrorCode() == 0, "templeRing imported", importer.GetErrorMessage() or "ok")
 temple = importer.GetOutput()
 rig = temple.GetRig()
 rig.FitCylinder()
