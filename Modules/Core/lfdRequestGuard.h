@@ -7,16 +7,10 @@
  * Algorithms of lfd whose superclass is one of VTK's override ProcessRequest
  * with GuardRequest(), so an exception (bad_alloc, a JSON or filesystem
  * error) ends like any other failure: an ErrorEvent carrying the message
- * (vtkErrorMacro's channel) and a non-zero error code.
- *
- *   vtkTypeBool vtkX::ProcessRequest(vtkInformation* request,
- *     vtkInformationVector** inputs, vtkInformationVector* outputs)
- *   {
- *     return lfd::GuardRequest(
- *       this,
- *       [&] { return this->Superclass::ProcessRequest(request, inputs, outputs); },
- *       [this](unsigned long code) { this->SetErrorCode(code); });
- *   }
+ * (vtkErrorMacro's channel) and a non-zero error code. Most only guard their
+ * superclass's request: they declare the override in their header and define
+ * it with lfdGuardedProcessRequestMacro(vtkX) in their .cxx (as
+ * vtkStandardNewMacro defines New()).
  */
 #ifndef lfdRequestGuard_h
 #define lfdRequestGuard_h
@@ -35,7 +29,7 @@ namespace lfd
  * passes a lambda that calls it), reports "<class>: <exception>" as the
  * algorithm's error and returns 0 (the request failed).
  */
-template <typename Request, typename SetErrorCode>
+template<typename Request, typename SetErrorCode>
 int GuardRequest(vtkAlgorithm* algorithm, Request&& request, SetErrorCode&& setErrorCode)
 {
   try
@@ -51,5 +45,20 @@ int GuardRequest(vtkAlgorithm* algorithm, Request&& request, SetErrorCode&& setE
   }
 }
 }
+
+/**
+ * Defines thisClass::ProcessRequest as the superclass's request under
+ * lfd::GuardRequest.
+ */
+#define lfdGuardedProcessRequestMacro(thisClass)                                                   \
+  vtkTypeBool thisClass::ProcessRequest(vtkInformation* request,                                   \
+    vtkInformationVector** inputVector,                                                            \
+    vtkInformationVector* outputVector)                                                            \
+  {                                                                                                \
+    return lfd::GuardRequest(                                                                      \
+      this,                                                                                        \
+      [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },        \
+      [this](unsigned long code) { this->SetErrorCode(code); });                                   \
+  }
 
 #endif

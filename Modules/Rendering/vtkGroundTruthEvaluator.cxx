@@ -293,12 +293,4 @@ void vtkGroundTruthEvaluator::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkGroundTruthEvaluator::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  return lfd::GuardRequest(
-    this,
-    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
-    [this](unsigned long code) { this->SetErrorCode(code); });
-}
+lfdGuardedProcessRequestMacro(vtkGroundTruthEvaluator);

@@ -207,12 +207,4 @@ void vtkLeaveOneOutEvaluator::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkLeaveOneOutEvaluator::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  return lfd::GuardRequest(
-    this,
-    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
-    [this](unsigned long code) { this->SetErrorCode(code); });
-}
+lfdGuardedProcessRequestMacro(vtkLeaveOneOutEvaluator);

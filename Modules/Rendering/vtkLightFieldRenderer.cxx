@@ -783,12 +783,4 @@ void vtkLightFieldRenderer::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkLightFieldRenderer::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  return lfd::GuardRequest(
-    this,
-    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
-    [this](unsigned long code) { this->SetErrorCode(code); });
-}
+lfdGuardedProcessRequestMacro(vtkLightFieldRenderer);

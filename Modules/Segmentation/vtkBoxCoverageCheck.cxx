@@ -289,12 +289,4 @@ void vtkBoxCoverageCheck::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkBoxCoverageCheck::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  return lfd::GuardRequest(
-    this,
-    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
-    [this](unsigned long code) { this->SetErrorCode(code); });
-}
+lfdGuardedProcessRequestMacro(vtkBoxCoverageCheck);

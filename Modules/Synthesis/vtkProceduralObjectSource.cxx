@@ -477,12 +477,4 @@ void vtkProceduralObjectSource::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-vtkTypeBool vtkProceduralObjectSource::ProcessRequest(vtkInformation* request,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
-{
-  return lfd::GuardRequest(
-    this,
-    [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
-    [this](unsigned long code) { this->SetErrorCode(code); });
-}
+lfdGuardedProcessRequestMacro(vtkProceduralObjectSource);

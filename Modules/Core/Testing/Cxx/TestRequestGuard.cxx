@@ -1,5 +1,5 @@
-// lfd::GuardRequest: an exception thrown inside a pipeline request becomes
-// the algorithm's error (ErrorEvent with the message, error code set, Update
+// lfd::GuardRequest (through lfdGuardedProcessRequestMacro): an exception thrown inside a pipeline
+// request becomes the algorithm's error (ErrorEvent with the message, error code set, Update
 // returns) instead of terminating the process.
 #include "lfdRequestGuard.h"
 
@@ -31,13 +31,7 @@ public:
 
   vtkTypeBool ProcessRequest(vtkInformation* request,
     vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override
-  {
-    return lfd::GuardRequest(
-      this,
-      [&] { return this->Superclass::ProcessRequest(request, inputVector, outputVector); },
-      [this](unsigned long code) { this->SetErrorCode(code); });
-  }
+    vtkInformationVector* outputVector) override;
 
 protected:
   ThrowingSource() { this->SetNumberOfInputPorts(0); }
@@ -55,6 +49,7 @@ protected:
   }
 };
 vtkStandardNewMacro(ThrowingSource);
+lfdGuardedProcessRequestMacro(ThrowingSource);
 }
 
 int TestRequestGuard(int, char*[])
