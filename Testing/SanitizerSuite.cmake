@@ -3,7 +3,7 @@
 #         -DC_COMPILER=clang-14 -DPYTHON=... -DSHARED_DATA_DIR=... [-DCCACHE=...]
 #         -P SanitizerSuite.cmake
 # Configures and builds the sanitizer tree (ASan + UBSan + libFuzzer
-# instrumentation, no Python package) in BINARY_DIR, then runs its C++ tests
+# instrumentation, no Python package, no lfd tool) in BINARY_DIR, then runs its C++ tests
 # (label cxx) and fuzz tests (label fuzz) in one ctest call. Fails (exit 1)
 # when a step fails.
 
@@ -27,7 +27,7 @@ run("configure ${BINARY_DIR}" "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${BINARY
   "-DCMAKE_C_FLAGS_RELEASE=-O1 -DNDEBUG"
   "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" "-DCMAKE_C_COMPILER=${C_COMPILER}" ${launcher}
   "-DPython3_EXECUTABLE=${PYTHON}" "-DLFD_SHARED_DATA_DIR=${SHARED_DATA_DIR}"
-  -DBUILD_TESTING=ON -DLFD_WRAP_PYTHON=OFF -DLFD_SANITIZE=ON -DLFD_FUZZ=ON)
+  -DBUILD_TESTING=ON -DLFD_WRAP_PYTHON=OFF -DLFD_BUILD_APPLICATIONS=OFF -DLFD_SANITIZE=ON -DLFD_FUZZ=ON)
 cmake_host_system_information(RESULT cores QUERY NUMBER_OF_LOGICAL_CORES)
 run("build" "${CMAKE_COMMAND}" --build "${BINARY_DIR}" -j ${cores})
 
