@@ -15,7 +15,7 @@ packages=(
   libvtk9-dev python3-vtk9 python3-numpy
   libopenimageio-dev openimageio-tools
   libglm-dev nlohmann-json3-dev libcli11-dev libopencv-dev
-  xvfb xauth
+  xvfb xauth libx11-dev    # lfd asks the X server before opening an OpenGL window
   clang-14 libclang-rt-14-dev   # the sanitizer and fuzz suite (lfd-SanitizerSuite)
 )
 
