@@ -5,14 +5,12 @@ behind does not), and progressive refinement (a quarter of the resolution
 while the window renders at an interactive rate, full resolution when
 still)."""
 
-import os
 
 import lfdtesting as t
 from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow,
                                          vtkRenderer, vtkWindowToImageFilter)
-from vtkmodules.vtkTestingRendering import vtkTesting
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factory)
 
 import lfd
@@ -62,12 +60,8 @@ window.Render()
 t.check(tuple(mapper.GetLastImageSize()) == (300, 300), "still render at full resolution",
         mapper.GetLastImageSize())
 
-testing = vtkTesting()
-for arg in ("-V", os.path.join(t.BASELINE_DIR, "TestLightFieldMapper.png"), "-T", t.TEMP_DIR):
-    testing.AddArgument(arg)
-testing.SetRenderWindow(window)
-result = testing.RegressionTest(10.0)
-t.check(result == vtkTesting.PASSED, "fish and cage outline match the baseline", result)
+passed = t.matches_baseline("TestLightFieldMapper", window=window)
+t.check(passed, "fish and cage outline match the baseline", "passed" if passed else "differs (see {})".format(t.TEMP_DIR))
 
 
 def fish_pixels_left():

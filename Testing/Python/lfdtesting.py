@@ -9,6 +9,7 @@ import numpy as np
 
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkRenderingCore import vtkCamera
+from vtkmodules.vtkTestingRendering import vtkTesting
 
 import lfd
 
@@ -52,6 +53,19 @@ def templering(what):
     if failures:
         finish()
     return importer
+
+
+def matches_baseline(name, source=None, window=None, threshold=10.0):
+    """vtkTesting's regression test of an algorithm's output image (`source`)
+    or of a render window against Data/Baseline/<name>.png; on a mismatch the
+    candidate and difference images are left in TEMP_DIR."""
+    testing = vtkTesting()
+    for arg in ("-V", os.path.join(BASELINE_DIR, name + ".png"), "-T", TEMP_DIR):
+        testing.AddArgument(arg)
+    if window is not None:
+        testing.SetRenderWindow(window)
+        return testing.RegressionTest(threshold) == vtkTesting.PASSED
+    return testing.RegressionTest(source, threshold) == vtkTesting.PASSED
 
 
 def finish():
