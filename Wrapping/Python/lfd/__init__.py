@@ -12,3 +12,4 @@ from .lfdSynthesis import *  # noqa: F401,F403
 from .lfdSegmentation import *  # noqa: F401,F403
 from .lfdDeformation import *  # noqa: F401,F403
 from .lfdRendering import *  # noqa: F401,F403
+from .lfdEvaluation import *  # noqa: F401,F403

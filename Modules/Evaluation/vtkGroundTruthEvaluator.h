@@ -23,12 +23,12 @@
 #ifndef vtkGroundTruthEvaluator_h
 #define vtkGroundTruthEvaluator_h
 
-#include "lfdRenderingModule.h" // For export macro
+#include "lfdEvaluationModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
 
 class vtkCamera;
 
-class LFDRENDERING_EXPORT vtkGroundTruthEvaluator : public vtkImageAlgorithm
+class LFDEVALUATION_EXPORT vtkGroundTruthEvaluator : public vtkImageAlgorithm
 {
 public:
   static vtkGroundTruthEvaluator* New();

@@ -20,12 +20,12 @@
 #ifndef vtkLeaveOneOutEvaluator_h
 #define vtkLeaveOneOutEvaluator_h
 
-#include "lfdRenderingModule.h" // For export macro
+#include "lfdEvaluationModule.h" // For export macro
 #include "vtkTableAlgorithm.h"
 
 #include <vector> // For std::vector
 
-class LFDRENDERING_EXPORT vtkLeaveOneOutEvaluator : public vtkTableAlgorithm
+class LFDEVALUATION_EXPORT vtkLeaveOneOutEvaluator : public vtkTableAlgorithm
 {
 public:
   static vtkLeaveOneOutEvaluator* New();
