@@ -93,6 +93,29 @@ struct PinholeCamera
    */
   glm::dmat3 PixelToDirection() const { return glm::transpose(this->R) * glm::inverse(this->K); }
 
+  /**
+   * Back-projection of pixels with their depth (the distance along the
+   * optical axis, camera z, as the Depth pass stores it): the world point
+   * `C + depth R^T K^-1 (x, y, 1)`. Built once per camera (it holds R^T K^-1),
+   * applied per pixel.
+   */
+  struct Unprojection
+  {
+    glm::dvec3 Center;
+    glm::dmat3 PixelToDirection;
+    glm::dvec3 operator()(const glm::dvec2& pixel, double depth) const
+    {
+      return this->Center + depth * (this->PixelToDirection * glm::dvec3(pixel, 1.0));
+    }
+  };
+  Unprojection GetUnprojection() const { return { this->Center(), this->PixelToDirection() }; }
+
+  /// The world point seen at `pixel` at `depth` (camera z); see Unprojection.
+  glm::dvec3 Unproject(const glm::dvec2& pixel, double depth) const
+  {
+    return this->GetUnprojection()(pixel, depth);
+  }
+
   /// Unit world-space direction of the ray through a pixel.
   glm::dvec3 RayDirection(const glm::dvec2& pixel) const
   {

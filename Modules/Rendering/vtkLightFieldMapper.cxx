@@ -1,4 +1,5 @@
 #include "vtkLightFieldMapper.h"
+#include "lfdPerspectiveDepth.h"
 
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
@@ -182,7 +183,7 @@ void vtkLightFieldMapper::Render(vtkRenderer* renderer)
   this->LastImageSize[1] = height;
 
   // Camera z -> window depth of the perspective projection (clipping range
-  // n, f): z_ndc = (f + n) / (f - n) - 2 f n / ((f - n) z).
+  // n, f); no ray: the far plane.
   double range[2];
   renderer->GetActiveCamera()->GetClippingRange(range);
   const double n = range[0], f = range[1];
@@ -194,8 +195,8 @@ void vtkLightFieldMapper::Render(vtkRenderer* renderer)
     const double z = depths->GetValue(p);
     std::copy(colors->GetPointer(3 * p), colors->GetPointer(3 * p) + 3, &in.Rgba[4 * p]);
     in.Rgba[4 * p + 3] = z > 0.0 ? 255 : 0;
-    const double ndc = z > 0.0 ? (f + n) / (f - n) - 2.0 * f * n / ((f - n) * z) : 1.0;
-    in.WindowDepth[p] = static_cast<float>(std::clamp(0.5 * ndc + 0.5, 0.0, 1.0));
+    const double window = z > 0.0 ? lfd::DistanceToWindowDepth(z, n, f) : 1.0;
+    in.WindowDepth[p] = static_cast<float>(std::clamp(window, 0.0, 1.0));
   }
 
   in.Color->SetContext(window);

@@ -271,23 +271,17 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
   silhouettes.Height = height;
   silhouettes.Mask.assign(pixels * views, 0);
   // Per view: the camera centre and R^T K^-1, the pixel-to-direction map.
-  std::vector<glm::dvec3> centres(views);
-  std::vector<glm::dmat3> toWorld(views);
+  std::vector<lfd::PinholeCamera::Unprojection> cameras(views);
   for (int view = 0; view < views; ++view)
   {
-    centres[view] = rig->GetCamera(view).Center();
-    toWorld[view] = rig->GetCamera(view).PixelToDirection();
+    cameras[view] = rig->GetCamera(view).GetUnprojection();
   }
+  auto pixelOf = [&](vtkIdType p)
+  { return glm::dvec2(static_cast<double>(p % width), height - 1.0 - p / width); };
   auto directionOf = [&](int view, vtkIdType p)
-  {
-    return toWorld[view] *
-      glm::dvec3(static_cast<double>(p % width), height - 1.0 - p / width, 1.0);
-  };
+  { return cameras[view].PixelToDirection * glm::dvec3(pixelOf(p), 1.0); };
   auto pointOf = [&](int view, vtkIdType p)
-  {
-    return centres[view] +
-      static_cast<double>(depth->GetValue(view * pixels + p)) * directionOf(view, p);
-  };
+  { return cameras[view](pixelOf(p), static_cast<double>(depth->GetValue(view * pixels + p))); };
   glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-low);
   if (useDepth)
   {
@@ -337,12 +331,12 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
     glm::dvec3 centre(0.0);
     for (int view = 0; view < views; ++view)
     {
-      centre += centres[view] / static_cast<double>(views);
+      centre += cameras[view].Center / static_cast<double>(views);
     }
     double reach = 0.0;
     for (int view = 0; view < views; ++view)
     {
-      reach = std::max(reach, glm::length(centres[view] - centre));
+      reach = std::max(reach, glm::length(cameras[view].Center - centre));
     }
     const VoxelGrid coarse(centre - reach, centre + reach, 64);
     if (!OccupiedBounds(
@@ -372,8 +366,9 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
             const vtkIdType index = view * pixels + p;
             if (silhouettes.Mask[index])
             {
-              seen[index] = march ? March(grid, occupied, centres[view], directionOf(view, p))
-                                  : grid.Find(pointOf(view, p));
+              seen[index] = march
+                ? March(grid, occupied, cameras[view].Center, directionOf(view, p))
+                : grid.Find(pointOf(view, p));
             }
           }
         }

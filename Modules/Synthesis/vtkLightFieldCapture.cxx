@@ -1,5 +1,6 @@
 #include "vtkLightFieldCapture.h"
 
+#include "lfdPerspectiveDepth.h"
 #include "lfdPinholeCamera.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -652,8 +653,7 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
     const double f = range[1];
     for (vtkIdType p = 0; p < static_cast<vtkIdType>(w) * h; ++p)
     {
-      const double ndc = 2.0 * z[p] - 1.0;
-      z[p] = z[p] >= 1.0f ? 0.0f : static_cast<float>(2.0 * n * f / (f + n - ndc * (f - n)));
+      z[p] = z[p] >= 1.0f ? 0.0f : static_cast<float>(lfd::WindowDepthToDistance(z[p], n, f));
     }
   };
 
@@ -753,13 +753,12 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
       std::fill(codedSum.begin(), codedSum.end(), 0.0);
       std::fill(floodSum.begin(), floodSum.end(), 0.0);
       // The surface point each pixel sees, from the depth.
-      const lfd::PinholeCamera& viewCamera = rig->GetCamera(view);
-      const glm::dmat3 toWorld = viewCamera.PixelToDirection();
+      const lfd::PinholeCamera::Unprojection unproject = rig->GetCamera(view).GetUnprojection();
       for (vtkIdType q = 0; q < pixels; ++q)
       {
-        const glm::dvec3 pixel(
-          static_cast<double>(q % width), static_cast<double>(height - 1 - q / width), 1.0);
-        surface[q] = viewCamera.Center() + static_cast<double>(z[q]) * (toWorld * pixel);
+        const glm::dvec2 pixel(
+          static_cast<double>(q % width), static_cast<double>(height - 1 - q / width));
+        surface[q] = unproject(pixel, static_cast<double>(z[q]));
       }
       for (int p = 0; p < projectorCount; ++p)
       {
