@@ -1478,6 +1478,26 @@ vtkSmartPointer<vtkPolyData> SinglePart(vtkPolyData* mesh)
 }
 
 /**
+ * A demo's animation in its staged folder `staged` (to be known as `out`):
+ * frames`suffix`/ and contact_sheet`suffix`.png.
+ */
+void AnimateDemo(vtkLightFieldScene* scene,
+  vtkLightField* lightField,
+  int frames,
+  const std::string& staged,
+  const std::string& out,
+  const std::string& suffix)
+{
+  const double start = vtkTimerLog::GetUniversalTime();
+  const std::string frameDir = "/frames" + suffix;
+  const auto images = RenderAnimation(scene, lightField, frames, staged + frameDir);
+  PrintAnimation(scene, frames, Seconds(start), staged + frameDir, out + frameDir);
+  const std::string sheet = "/contact_sheet" + suffix + ".png";
+  WriteImage(ContactSheet(images, 6, 128), staged + sheet);
+  std::printf("sheet     %s%s\n", out.c_str(), sheet.c_str());
+}
+
+/**
  * `lfd demo`: captures the scene's object (under each light), writes the
  * light field, a scene with the cage and its keyframes, the animation's
  * frames and a contact sheet. A second light writes its files with the
@@ -1583,13 +1603,7 @@ void Demo(const std::string& sceneName,
       static_cast<long long>(parts->GetOutput()->GetNumberOfBoxes()),
       keyframes + 1,
       demo->Motion);
-    start = vtkTimerLog::GetUniversalTime();
-    const std::string frameDir = "/frames" + suffix;
-    const auto images = RenderAnimation(scene, lightField, frames, staged + frameDir);
-    PrintAnimation(scene, frames, Seconds(start), staged + frameDir, out + frameDir);
-    const std::string sheet = "/contact_sheet" + suffix + ".png";
-    WriteImage(ContactSheet(images, 6, 128), staged + sheet);
-    std::printf("sheet     %s%s\n", out.c_str(), sheet.c_str());
+    AnimateDemo(scene, lightField, frames, staged, out, suffix);
   }
   folder.Commit();
 }
@@ -1680,19 +1694,12 @@ void DemoTemple(const std::string& dataDir, const std::string& out, int frames, 
   scene->SetWidth(size);
   scene->SetHeight(size);
   scene->SetObjectThreshold(60.0);
-  if (!scene->Write((staged + "/temple.json").c_str()))
-  {
-    Fail(scene->GetErrorMessage());
-  }
+  WriteScene(scene, staged + "/temple.json");
   std::printf("scene     %s/temple.json (1 box over the unsplit light field, %d keyframes: top "
               "twisted 0-60 degrees)\n",
     out.c_str(),
     keyframes + 1);
-  const double start = vtkTimerLog::GetUniversalTime();
-  const auto images = RenderAnimation(scene, lightField, frames, staged + "/frames");
-  PrintAnimation(scene, frames, Seconds(start), staged + "/frames", out + "/frames");
-  WriteImage(ContactSheet(images, 6, 128), staged + "/contact_sheet.png");
-  std::printf("sheet     %s/contact_sheet.png\n", out.c_str());
+  AnimateDemo(scene, lightField, frames, staged, out, "");
   folder.Commit();
 }
 

@@ -23,20 +23,11 @@ std::string SystemError(int error)
   return std::strerror(error);
 }
 
-// True when `text` is a process id of a process that still runs (or that we
-// may not signal: it exists).
-bool IsRunningProcess(const std::string& text)
+// True when the process `pid` still runs (or exists and we may not signal
+// it); our own id counts as gone: an earlier temporary of ours is stale too.
+bool IsRunningProcess(pid_t pid)
 {
-  if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
-  {
-    return false;
-  }
-  const pid_t pid = static_cast<pid_t>(std::stol(text));
-  if (pid == ::getpid())
-  {
-    return false; // our own earlier temporary: stale as well
-  }
-  return pid > 0 && (::kill(pid, 0) == 0 || errno == EPERM);
+  return pid > 0 && pid != ::getpid() && (::kill(pid, 0) == 0 || errno == EPERM);
 }
 
 // Removes the siblings `<prefix><pid><suffix>` of a target whose process no
@@ -57,8 +48,9 @@ void RemoveStaleTemporaries(const fs::path& folder,
       continue;
     }
     const std::string pid = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
-    if (!pid.empty() && pid.find_first_not_of("0123456789") == std::string::npos &&
-      !IsRunningProcess(pid))
+    if (!pid.empty() && pid.size() <= 9 &&
+      pid.find_first_not_of("0123456789") == std::string::npos &&
+      !IsRunningProcess(static_cast<pid_t>(std::stol(pid))))
     {
       RemoveQuietly(it->path().string());
     }

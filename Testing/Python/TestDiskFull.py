@@ -39,12 +39,17 @@ def noise_image(seed, size=64):
     return image
 
 
-def write_png(image, target):
-    writer = lfd.vtkImageFileWriter()
-    writer.SetInputData(image)
-    writer.SetFileName(target)
+def run_writer(writer, data):
+    """Writes `data` with a writer whose target is set: (success, message)."""
+    writer.SetInputData(data)
     quiet(writer)
     return writer.Write(), writer.GetErrorMessage()
+
+
+def write_png(image, target):
+    writer = lfd.vtkImageFileWriter()
+    writer.SetFileName(target)
+    return run_writer(writer, image)
 
 
 def light_field(fill):
@@ -59,10 +64,8 @@ def light_field(fill):
 
 def write_dataset(data, target):
     writer = lfd.vtkLightFieldWriter()
-    writer.SetInputData(data)
     writer.SetDirectory(target)
-    quiet(writer)
-    return writer.Write(), writer.GetErrorMessage()
+    return run_writer(writer, data)
 
 
 def quiet(obj):

@@ -77,15 +77,20 @@ def write_image(file, channels=3, scalar=VTK_UNSIGNED_CHAR, width=W, height=H, v
     assert writer.GetErrorCode() == 0, writer.GetErrorMessage()
 
 
-def read_dataset(target, **passes):
-    reader = lfd.vtkLightFieldReader()
+def update_reader(reader, target):
+    """Runs a reader on `target`: (error code 0, its error events, its
+    message, what it printed on stderr)."""
     errors = []
     observe(reader, errors)
     reader.SetFileName(target)
     with CapturedStderr() as captured:
         reader.Update()
-    ok = reader.GetErrorCode() == 0 and not errors
-    return ok, reader.GetErrorMessage(), captured.text
+    return reader.GetErrorCode() == 0, errors, reader.GetErrorMessage(), captured.text
+
+
+def read_dataset(target):
+    ok, errors, message, printed = update_reader(lfd.vtkLightFieldReader(), target)
+    return ok and not errors, message, printed
 
 
 def read_scene(target):
@@ -97,23 +102,13 @@ def read_scene(target):
 
 
 def import_par(target):
-    importer = lfd.vtkMiddleburyImporter()
-    errors = []
-    observe(importer, errors)
-    importer.SetFileName(target)
-    with CapturedStderr() as captured:
-        importer.Update()
-    return importer.GetErrorCode() == 0, importer.GetErrorMessage(), captured.text
+    ok, _, message, printed = update_reader(lfd.vtkMiddleburyImporter(), target)
+    return ok, message, printed
 
 
 def read_image(target):
-    reader = lfd.vtkImageFileReader()
-    errors = []
-    observe(reader, errors)
-    reader.SetFileName(target)
-    with CapturedStderr() as captured:
-        reader.Update()
-    return reader.GetErrorCode() == 0, reader.GetErrorMessage(), captured.text
+    ok, _, message, printed = update_reader(lfd.vtkImageFileReader(), target)
+    return ok, message, printed
 
 
 def fifo(name):
