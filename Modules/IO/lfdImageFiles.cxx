@@ -135,6 +135,15 @@ OIIO::ImageInput::unique_ptr OpenImage(const std::string& path, std::string& err
 }
 
 //------------------------------------------------------------------------------
+std::string DescribePixels(int channels, int scalarType)
+{
+  return std::to_string(channels) + (channels == 1 ? " channel" : " channels") + " of " +
+    (scalarType == VTK_FLOAT               ? "32-bit float"
+        : scalarType == VTK_UNSIGNED_SHORT ? "16-bit"
+                                           : "8-bit");
+}
+
+//------------------------------------------------------------------------------
 bool ReadImageHeader(const std::string& path, ImageHeader& header, std::string& error)
 {
   // A FIFO or a device would block or never end: refuse it unopened.

@@ -31,6 +31,12 @@ struct ImageHeader
 };
 
 /**
+ * The pixel format in words, for messages: "3 channels of 8-bit",
+ * "1 channel of 32-bit float".
+ */
+std::string DescribePixels(int channels, int scalarType);
+
+/**
  * Reads the header of `path`. On failure returns false and sets `error`
  * (without the file name).
  */

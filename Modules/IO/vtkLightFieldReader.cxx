@@ -398,7 +398,7 @@ int vtkLightFieldReader::RequestInformation(vtkInformation*,
     if (manifest.HasPass[pass] && this->ReadPass[pass])
     {
       bytesPerPixel += vtkLightField::GetPassComponents(pass) *
-        (vtkLightField::GetPassScalarType(pass) == VTK_FLOAT ? 4 : 1);
+        vtkDataArray::GetDataTypeSize(vtkLightField::GetPassScalarType(pass));
     }
   }
   std::string tooLarge = lfd::CheckLightFieldSize(manifest.Width,
@@ -571,17 +571,10 @@ bool vtkLightFieldReader::CheckImage(const std::string& image,
   }
   if (header.Channels != channels || header.ScalarType != scalarType)
   {
-    const auto describe = [](int count, int type)
-    {
-      return std::to_string(count) + (count == 1 ? " channel" : " channels") + " of " +
-        (type == VTK_FLOAT               ? "32-bit float"
-            : type == VTK_UNSIGNED_SHORT ? "16-bit"
-                                         : "8-bit");
-    };
     this->Fail(output,
       vtkErrorCode::FileFormatError,
-      where + "image has " + describe(header.Channels, header.ScalarType) + ", expected " +
-        describe(channels, scalarType));
+      where + "image has " + lfd::io::DescribePixels(header.Channels, header.ScalarType) +
+        ", expected " + lfd::io::DescribePixels(channels, scalarType));
     return false;
   }
   return true;

@@ -312,11 +312,7 @@ int vtkMiddleburyImporter::RequestData(vtkInformation*,
     {
       this->Fail(output,
         vtkErrorCode::FileFormatError,
-        where + "image has " + std::to_string(header.Channels) + " channels of " +
-          (header.ScalarType == VTK_UNSIGNED_CHAR       ? "8"
-              : header.ScalarType == VTK_UNSIGNED_SHORT ? "16"
-                                                        : "32-bit float") +
-          (header.ScalarType == VTK_FLOAT ? "" : "-bit") +
+        where + "image has " + lfd::io::DescribePixels(header.Channels, header.ScalarType) +
           ", expected 8-bit grey (1 channel) or colour (3 or 4)");
       return 0;
     }
