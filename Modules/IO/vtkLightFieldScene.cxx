@@ -6,15 +6,12 @@
 #include "lfdLimits.h"
 #include "lfdPinholeCamera.h"
 #include "vtkCamera.h"
-#include "vtkCellArray.h"
-#include "vtkCellData.h"
-#include "vtkDoubleArray.h"
+#include "vtkDataArray.h"
+#include "vtkDeformationCage.h"
 #include "vtkIdList.h"
-#include "vtkIntArray.h"
 #include "vtkLightFieldReader.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
@@ -314,7 +311,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
   // Parse into locals; the scene changes only when the whole file is valid.
   std::string lightField;
   bool hasLightField = false;
-  auto cage = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  auto cage = vtkSmartPointer<vtkDeformationCage>::New();
   std::vector<Keyframe> keyframes;
   auto camera = vtkSmartPointer<vtkCamera>::New();
   int width = 512, height = 512, subdivision = 1, widenedSearch = 2;
@@ -365,16 +362,10 @@ bool vtkLightFieldScene::Read(const char* fileName)
         throw FieldError(
           "cage.boxes", "expected an array of boxes, found " + lfd::io::Describe(boxes));
       }
-      cage->SetPoints(MakePoints(deformed));
-      vtkNew<vtkDoubleArray> restArray;
-      restArray->SetName("RestPosition");
-      restArray->SetNumberOfComponents(3);
-      restArray->SetNumberOfTuples(static_cast<vtkIdType>(cagePoints));
-      std::copy(rest.begin(), rest.end(), restArray->GetPointer(0));
-      cage->GetPointData()->AddArray(restArray);
-      vtkNew<vtkIntArray> labels;
-      labels->SetName("Label");
-      cage->Allocate(static_cast<vtkIdType>(boxes.size()));
+      for (size_t i = 0; i < cagePoints; ++i)
+      {
+        cage->AddPoint(&rest[3 * i], &deformed[3 * i]);
+      }
       for (size_t b = 0; b < boxes.size(); ++b)
       {
         const std::string boxPath = ElementPath("cage.boxes", b);
@@ -401,10 +392,8 @@ bool vtkLightFieldScene::Read(const char* fileName)
         }
         const long long label = lfd::io::GetInteger(
           lfd::io::RequireMember(boxes[b], boxPath, "label"), MemberPath(boxPath, "label"), 0, 255);
-        cage->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
-        labels->InsertNextValue(static_cast<int>(label));
+        cage->AddBox(ids, static_cast<int>(label));
       }
-      cage->GetCellData()->AddArray(labels);
     }
 
     if (const Json* list = lfd::io::FindMember(document, "", "keyframes"))
@@ -604,27 +593,24 @@ bool vtkLightFieldScene::WriteFile(const char* fileName)
   {
     document["lightfield"] = lightFieldPath;
   }
-  vtkUnstructuredGrid* cage = this->Internal->Cage;
-  const vtkIdType cagePoints = cage->GetNumberOfPoints();
+  const vtkIdType cagePoints = this->Internal->Cage->GetNumberOfPoints();
   if (cagePoints > 0)
   {
-    vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
-    vtkDataArray* labels = cage->GetCellData()->GetArray("Label");
-    if (!rest || rest->GetNumberOfComponents() != 3 || rest->GetNumberOfTuples() != cagePoints)
+    const std::string why = vtkDeformationCage::CheckGridArrays(this->Internal->Cage);
+    if (!why.empty())
     {
-      return this->Fail(file + ": the cage has no \"RestPosition\" point array of 3 components");
+      return this->Fail(file + ": " + why);
     }
-    if (!labels || labels->GetNumberOfTuples() != cage->GetNumberOfCells())
-    {
-      return this->Fail(file + ": the cage has no \"Label\" cell array");
-    }
+    vtkNew<vtkDeformationCage> cage;
+    cage->InitializeFromGrid(this->Internal->Cage);
+    vtkDataArray* rest = cage->GetRestPositions();
     if (!AllFinite(rest) || !AllFinite(cage->GetPoints()->GetData()))
     {
       return this->Fail(file + ": the cage has non-finite coordinates");
     }
     Json boxes = Json::array();
     vtkNew<vtkIdList> ids;
-    for (vtkIdType c = 0; c < cage->GetNumberOfCells(); ++c)
+    for (vtkIdType c = 0; c < cage->GetNumberOfBoxes(); ++c)
     {
       if (cage->GetCellType(c) != VTK_HEXAHEDRON)
       {
@@ -638,7 +624,7 @@ bool vtkLightFieldScene::WriteFile(const char* fileName)
       }
       Json box;
       box["corners"] = corners;
-      box["label"] = static_cast<int>(labels->GetComponent(c, 0));
+      box["label"] = cage->GetBoxLabel(c);
       boxes.push_back(box);
     }
     Json cageJson;

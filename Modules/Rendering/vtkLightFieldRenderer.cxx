@@ -10,7 +10,6 @@
 
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
-#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDeformationCage.h"
 #include "vtkFloatArray.h"
@@ -577,9 +576,10 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   vtkLightField* lightField = input; // the input, or its one-part split
   if (vtkUnstructuredGrid* grid = vtkUnstructuredGrid::GetData(inputVector[1]))
   {
-    if (!grid->GetCellData()->GetArray("Label"))
+    const std::string refused = vtkDeformationCage::CheckGridArrays(grid);
+    if (!refused.empty())
     {
-      vtkErrorMacro("The cage has no cell array 'Label': every box needs the label of its part.");
+      vtkErrorMacro(<< "Input port 1: " << refused << ".");
       return 0;
     }
     // A plain grid (or one without rest positions: at rest) is read as a cage.

@@ -188,10 +188,9 @@ public:
 
   ///@{
   /**
-   * The deformation cage (optional input port 1): a vtkUnstructuredGrid of
-   * VTK_HEXAHEDRON boxes whose points are the deformed corners, with the
-   * rest corners in the point array "RestPosition" and each box's part in the
-   * cell array "Label" (vtkDeformationCage, or the cage of a scene file).
+   * The deformation cage (optional input port 1): a vtkDeformationCage, or
+   * any vtkUnstructuredGrid it reads (vtkDeformationCage::CheckGridArrays(),
+   * InitializeFromGrid()): boxes with deformed and rest corners and a label.
    * With a cage the renderer draws the deformed light field (paper Sec. 6);
    * validate the cage first (vtkDeformationCage::Validate).
    */

@@ -4,9 +4,8 @@
 
 #include "lfdPinholeCamera.h"
 #include "vtkCameraRig.h"
-#include "vtkCellData.h"
-#include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkDeformationCage.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -14,7 +13,6 @@
 #include "vtkIntArray.h"
 #include "vtkLightField.h"
 #include "vtkObjectFactory.h"
-#include "vtkPointData.h"
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -115,30 +113,25 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
 {
   this->Labels.clear();
   vtkLightField* lightField = vtkLightField::GetData(inputVector[0]);
-  vtkUnstructuredGrid* cage = vtkUnstructuredGrid::GetData(inputVector[1]);
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::GetData(inputVector[1]);
   vtkTable* output = vtkTable::GetData(outputVector);
   auto* labels = lightField
     ? vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::LABEL))
     : nullptr;
-  if (!labels || !cage)
+  if (!labels || !grid)
   {
     vtkErrorMacro(<< (labels ? "No cage on input port 1."
                              : "The light field has no Label pass to check."));
     return 0;
   }
-  vtkDataArray* boxLabels = cage->GetCellData()->GetArray("Label");
-  if (!boxLabels)
+  const std::string why = vtkDeformationCage::CheckGridArrays(grid);
+  if (!why.empty())
   {
-    vtkErrorMacro("The cage has no cell array \"Label\".");
+    vtkErrorMacro("Input port 1: " << why << ".");
     return 0;
   }
-  vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
-  if (rest &&
-    (rest->GetNumberOfComponents() != 3 || rest->GetNumberOfTuples() != cage->GetNumberOfPoints()))
-  {
-    vtkErrorMacro("The cage's \"RestPosition\" array does not hold 3 values per point.");
-    return 0;
-  }
+  vtkNew<vtkDeformationCage> cage;
+  cage->InitializeFromGrid(grid);
   const int width = lightField->GetWidth();
   const int height = lightField->GetHeight();
   const int views = lightField->GetNumberOfViews();
@@ -159,36 +152,25 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
     // The projected rest boxes of each label.
     const lfd::PinholeCamera& camera = rig->GetCamera(view);
     std::map<int, std::vector<Polygon>> hulls;
-    for (vtkIdType cell = 0; cell < cage->GetNumberOfCells(); ++cell)
+    for (vtkIdType box = 0; box < cage->GetNumberOfBoxes(); ++box)
     {
-      if (cage->GetCellType(cell) != VTK_HEXAHEDRON)
+      double rest[24];
+      if (!cage->GetRestCorners(box, rest))
       {
         continue;
       }
-      vtkIdType count;
-      const vtkIdType* ids;
-      cage->GetCellPoints(cell, count, ids);
       Polygon corners;
-      for (vtkIdType c = 0; c < count; ++c)
+      for (int c = 0; c < 8; ++c)
       {
-        double x[3];
-        if (rest)
-        {
-          rest->GetTuple(ids[c], x);
-        }
-        else
-        {
-          cage->GetPoint(ids[c], x);
-        }
         glm::dvec2 pixel;
-        if (camera.Project(glm::dvec3(x[0], x[1], x[2]), pixel))
+        if (camera.Project(glm::dvec3(rest[3 * c], rest[3 * c + 1], rest[3 * c + 2]), pixel))
         {
           corners.push_back(pixel);
         }
       }
-      if (corners.size() == static_cast<size_t>(count))
+      if (corners.size() == 8)
       {
-        hulls[static_cast<int>(boxLabels->GetComponent(cell, 0))].push_back(ConvexHull(corners));
+        hulls[cage->GetBoxLabel(box)].push_back(ConvexHull(corners));
       }
     }
     std::map<int, std::pair<vtkIdType, vtkIdType>> counts; // label -> (pixels, inside)

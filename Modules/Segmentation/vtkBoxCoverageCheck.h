@@ -7,10 +7,10 @@
  * I3D 2005, section 4.1: "the bounding box of each sub-light field"). For
  * every view and every label of the light field (input port 0, its `Label`
  * pass and rig), vtkBoxCoverageCheck projects the rest boxes of that label
- * of the cage (input port 1: a vtkUnstructuredGrid of VTK_HEXAHEDRON cells
- * with a cell array "Label" and, when present, the point array
- * "RestPosition" for the rest corners, as vtkDeformationCage stores them)
- * into the view, and counts the label's pixels that fall inside the
+ * of the cage (input port 1: a vtkUnstructuredGrid read through
+ * vtkDeformationCage, which gives each box's label and rest corners; a grid
+ * that vtkDeformationCage::CheckGridArrays() refuses is an error) into the
+ * view, and counts the label's pixels that fall inside the
  * projection (the convex hull of the 8 projected corners; the union over
  * the label's boxes).
  *

@@ -3,8 +3,8 @@
 #include "lfdRequestGuard.h"
 
 #include "vtkCellData.h"
-#include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkDeformationCage.h"
 #include "vtkHexahedron.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
@@ -12,7 +12,6 @@
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocalObject.h"
@@ -29,7 +28,7 @@ namespace
 {
 struct Box
 {
-  std::array<std::array<double, 3>, 8> Corners;
+  std::array<double, 24> Corners; // rest corners, VTK hexahedron order
   std::array<double, 6> Bounds;
   int Label;
 };
@@ -73,7 +72,7 @@ struct LabelByBoxes
         }
         for (int corner = 0; corner < 8; ++corner)
         {
-          hexahedron->GetPoints()->SetPoint(corner, box.Corners[corner].data());
+          hexahedron->GetPoints()->SetPoint(corner, box.Corners.data() + 3 * corner);
         }
         if (hexahedron->EvaluatePosition(x, closest, subId, pcoords, dist2, weights) == 1)
         {
@@ -124,65 +123,33 @@ int vtkLabelCellsByBoxes::RequestData(vtkInformation*,
   vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkUnstructuredGrid* cage = vtkUnstructuredGrid::GetData(inputVector[1]);
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !cage || !output)
+  if (!input || !grid || !output)
   {
     vtkErrorMacro("Need a mesh on input port 0 and the boxes on input port 1.");
     return 0;
   }
-  vtkDataArray* boxLabels = cage->GetCellData()->GetArray("Label");
-  if (!boxLabels)
+  const std::string why = vtkDeformationCage::CheckGridArrays(grid);
+  if (!why.empty())
   {
-    vtkErrorMacro("The boxes have no cell array \"Label\".");
+    vtkErrorMacro("The boxes on input port 1: " << why << ".");
     return 0;
   }
-  vtkDataArray* rest = cage->GetPointData()->GetArray("RestPosition");
-  if (rest &&
-    (rest->GetNumberOfComponents() != 3 || rest->GetNumberOfTuples() != cage->GetNumberOfPoints()))
-  {
-    vtkErrorMacro("The boxes' point array \"RestPosition\" has "
-      << rest->GetNumberOfTuples() << " tuples of " << rest->GetNumberOfComponents()
-      << " components; expected " << cage->GetNumberOfPoints() << " tuples of 3.");
-    return 0;
-  }
+  vtkNew<vtkDeformationCage> cage;
+  cage->InitializeFromGrid(grid);
 
   std::vector<Box> boxes;
-  vtkNew<vtkIdList> ids;
   int skipped = 0;
-  for (vtkIdType c = 0; c < cage->GetNumberOfCells(); ++c)
+  for (vtkIdType c = 0; c < cage->GetNumberOfBoxes(); ++c)
   {
-    if (cage->GetCellType(c) != VTK_HEXAHEDRON)
+    Box box;
+    if (!cage->GetRestCorners(c, box.Corners.data()) || !cage->GetRestBounds(c, box.Bounds.data()))
     {
       ++skipped;
       continue;
     }
-    cage->GetCellPoints(c, ids);
-    Box box;
-    box.Label = static_cast<int>(boxLabels->GetComponent(c, 0));
-    box.Bounds = { VTK_DOUBLE_MAX,
-      -VTK_DOUBLE_MAX,
-      VTK_DOUBLE_MAX,
-      -VTK_DOUBLE_MAX,
-      VTK_DOUBLE_MAX,
-      -VTK_DOUBLE_MAX };
-    for (int corner = 0; corner < 8; ++corner)
-    {
-      double* x = box.Corners[corner].data();
-      if (rest)
-      {
-        rest->GetTuple(ids->GetId(corner), x);
-      }
-      else
-      {
-        cage->GetPoint(ids->GetId(corner), x);
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        box.Bounds[2 * k] = std::min(box.Bounds[2 * k], x[k]);
-        box.Bounds[2 * k + 1] = std::max(box.Bounds[2 * k + 1], x[k]);
-      }
-    }
+    box.Label = cage->GetBoxLabel(c);
     // Grow the bounds like EvaluatePosition's parametric tolerance does.
     for (int k = 0; k < 3; ++k)
     {
@@ -198,6 +165,7 @@ int vtkLabelCellsByBoxes::RequestData(vtkInformation*,
   }
 
   const vtkIdType numberOfCells = input->GetNumberOfCells();
+  vtkNew<vtkIdList> ids;
   std::vector<double> centroids(3 * numberOfCells, 0.0);
   for (vtkIdType cell = 0; cell < numberOfCells; ++cell)
   {

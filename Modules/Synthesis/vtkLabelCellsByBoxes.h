@@ -5,13 +5,14 @@
  * vtkLabelCellsByBoxes gives every cell of a mesh (input port 0) the label
  * of the deformation box (DESIGN.md section 2) that contains the cell's
  * centroid (the mean of its points). The boxes come as a vtkUnstructuredGrid
- * on input port 1 (a cage, as vtkDeformationCage stores it): VTK_HEXAHEDRON
- * cells, a cell array "Label" and, when present, a point array
- * "RestPosition" with the rest-space corners, used instead of the points
- * (the mesh lives in rest space). Boxes need not be axis-aligned: containment
- * inverts each box's trilinear map (vtkHexahedron::EvaluatePosition). Where
- * boxes overlap, the first box (by cell index) wins; cells in no box get
- * label 0.
+ * on input port 1, read through vtkDeformationCage (InitializeFromGrid()):
+ * each box's label and its rest corners (the points when the grid is at
+ * rest), since the mesh lives in rest space. A grid that
+ * vtkDeformationCage::CheckGridArrays() refuses is an error; cells that are
+ * not hexahedra of existing points are skipped with a warning. Boxes need
+ * not be axis-aligned: containment inverts each box's trilinear map
+ * (vtkHexahedron::EvaluatePosition). Where boxes overlap, the first box (by
+ * cell index) wins; cells in no box get label 0.
  *
  * The output is the mesh with its cell array "Label" (int) replaced; every
  * other array is passed through. This is how a synthetic mesh is split into

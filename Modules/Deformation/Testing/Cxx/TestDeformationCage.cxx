@@ -177,11 +177,55 @@ bool TestFromGrid()
   ok &= lfdtest::CheckValid(fromGrid, "the new box validates");
   return ok;
 }
+
+/// CheckGridArrays(): what the modules reading a cage from an input port
+/// refuse; GetRestBounds(): the rest box's extent.
+bool TestGridArrays()
+{
+  const auto expect = [](vtkUnstructuredGrid* grid, const std::string& expected, const char* what)
+  {
+    const std::string why = vtkDeformationCage::CheckGridArrays(grid);
+    std::printf("%s: \"%s\"\n", what, why.c_str());
+    return Check(why == expected, what);
+  };
+  const double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 2, 3 };
+  auto cage = lfdtest::MakeBoxCage(lo, hi);
+  bool ok = expect(cage, "", "a cage passes");
+  ok &= expect(nullptr, "the cage is missing", "no grid");
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->DeepCopy(cage);
+  grid->GetPointData()->RemoveArray("RestPosition");
+  ok &= expect(grid, "", "a grid without RestPosition passes (at rest)");
+  vtkNew<vtkFloatArray> flat;
+  flat->SetName("RestPosition");
+  flat->SetNumberOfComponents(2);
+  flat->SetNumberOfTuples(8);
+  grid->GetPointData()->AddArray(flat);
+  ok &= expect(grid,
+    "the cage's point array \"RestPosition\" has 8 tuples of 2 components; expected 8 tuples of 3",
+    "RestPosition of 2 components");
+  grid->GetPointData()->RemoveArray("RestPosition");
+  grid->GetCellData()->RemoveArray("Label");
+  ok &= expect(grid,
+    "the cage has no cell array \"Label\" of one value per box (the label of its part)",
+    "no Label");
+
+  double bounds[6];
+  ok &= Check(cage->GetRestBounds(0, bounds) && bounds[0] == 0 && bounds[1] == 1 &&
+      bounds[2] == 0 && bounds[3] == 2 && bounds[4] == 0 && bounds[5] == 3,
+    "GetRestBounds of the box [0,1] x [0,2] x [0,3]");
+  const double moved[3] = { 5, 5, 5 };
+  cage->SetDeformedPoint(6, moved);
+  ok &= Check(cage->GetRestBounds(0, bounds) && bounds[1] == 1, "the rest bounds ignore the move");
+  ok &= Check(!cage->GetRestBounds(1, bounds), "no bounds for a missing box");
+  return ok;
+}
 } // namespace
 
 int TestDeformationCage(int, char*[])
 {
   bool ok = TestSharedCorners();
   ok &= TestFromGrid();
+  ok &= TestGridArrays();
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

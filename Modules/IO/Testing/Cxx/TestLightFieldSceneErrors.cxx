@@ -3,8 +3,11 @@
 // leaves the existing file untouched.
 #include "lfdIOTestUtilities.h"
 
+#include "vtkCellData.h"
+#include "vtkDeformationCage.h"
 #include "vtkLightFieldScene.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -134,5 +137,31 @@ int TestLightFieldSceneErrors(int, char*[])
     scene->GetErrorMessage(),
     { folder + "/missing/dir/scene.json: cannot create the file" });
   lfdtest::CheckEqual(lfdtest::CountEntries(folder, "valid.tmp-"), 0, "temporary files left");
+
+  // Write() reads the cage through vtkDeformationCage: a grid without labels
+  // is refused by its check; one without rest positions is written at rest.
+  lfdtest::Check(vtkDeformationCage::SafeDownCast(scene->GetCage()) != nullptr,
+    "Read() gives a vtkDeformationCage");
+  vtkNew<vtkUnstructuredGrid> plain;
+  plain->DeepCopy(scene->GetCage());
+  plain->GetPointData()->RemoveArray("RestPosition");
+  plain->GetPoints()->SetPoint(6, 1.5, 1.5, 1.5);
+  scene->SetCage(plain);
+  const std::string atRest = folder + "/at-rest.json";
+  lfdtest::Check(scene->Write(atRest.c_str()), "a cage without rest positions is written");
+  lfdtest::Check(scene->Read(atRest.c_str()), "and reads back");
+  vtkNew<vtkDeformationCage> read;
+  read->InitializeFromGrid(scene->GetCage());
+  double rest[3];
+  read->GetRestPoint(6, rest);
+  lfdtest::Check(!read->IsDeformed() && rest[0] == 1.5, "at rest: rest = points");
+  plain->GetCellData()->RemoveArray("Label");
+  scene->SetCage(plain);
+  const std::string unlabelled = folder + "/unlabelled.json";
+  const bool unlabelledWritten = scene->Write(unlabelled.c_str());
+  lfdtest::CheckFailure("write a cage without labels",
+    !unlabelledWritten,
+    scene->GetErrorMessage(),
+    { unlabelled + ": the cage has no cell array \"Label\"" });
   return lfdtest::Result();
 }

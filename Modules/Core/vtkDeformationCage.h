@@ -22,12 +22,16 @@
  * with AddPoint() and AddBox(). Validate() checks that the cage can be
  * rendered and used as a map (see there); vtkCageTransform is the map itself.
  *
+ * The class lives in LFD::Core so that every module reads boxes through it
+ * (the scene file, vtkBoxCoverageCheck, vtkLabelCellsByBoxes, the renderer):
+ * the array names above are known here only.
+ *
  * @sa vtkCageTransform vtkLightFieldScene
  */
 #ifndef vtkDeformationCage_h
 #define vtkDeformationCage_h
 
-#include "lfdDeformationModule.h" // For export macro
+#include "lfdCoreModule.h" // For export macro
 #include "vtkUnstructuredGrid.h"
 
 #include <string> // For std::string
@@ -39,7 +43,7 @@ class vtkInformation;
 class vtkInformationVector;
 class vtkLightField;
 
-class LFDDEFORMATION_EXPORT vtkDeformationCage : public vtkUnstructuredGrid
+class LFDCORE_EXPORT vtkDeformationCage : public vtkUnstructuredGrid
 {
 public:
   static vtkDeformationCage* New();
@@ -55,6 +59,16 @@ public:
    * the cage.
    */
   void InitializeFromGrid(vtkUnstructuredGrid* grid);
+
+  /**
+   * Why the boxes of `grid` (a cage on an algorithm's input port, which
+   * InitializeFromGrid() then reads) would be made up rather than read, or
+   * "": `grid` is null, has no "Label" cell array of one value per cell, or
+   * has a "RestPosition" point array that does not hold 3 values per point.
+   * A grid without "RestPosition" passes: it is at rest. The line starts
+   * with "the cage".
+   */
+  static std::string CheckGridArrays(vtkUnstructuredGrid* grid);
 
   ///@{
   /**
@@ -104,6 +118,12 @@ public:
   bool GetRestCorners(vtkIdType box, double corners[24]);
   bool GetDeformedCorners(vtkIdType box, double corners[24]);
   ///@}
+
+  /**
+   * Axis-aligned bounds (xmin, xmax, ymin, ymax, zmin, zmax) of the rest
+   * corners of box `box`; false, as GetRestCorners(), when it has none.
+   */
+  bool GetRestBounds(vtkIdType box, double bounds[6]);
 
   /**
    * Moves every point back to its rest position (undoes the deformation).

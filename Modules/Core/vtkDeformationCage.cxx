@@ -204,6 +204,31 @@ void vtkDeformationCage::InitializeFromGrid(vtkUnstructuredGrid* grid)
 }
 
 //------------------------------------------------------------------------------
+std::string vtkDeformationCage::CheckGridArrays(vtkUnstructuredGrid* grid)
+{
+  if (!grid)
+  {
+    return "the cage is missing";
+  }
+  vtkDataArray* labels = grid->GetCellData()->GetArray(LabelName);
+  if (!labels || labels->GetNumberOfComponents() != 1 ||
+    labels->GetNumberOfTuples() != grid->GetNumberOfCells())
+  {
+    return "the cage has no cell array \"Label\" of one value per box (the label of its part)";
+  }
+  vtkDataArray* rest = grid->GetPointData()->GetArray(RestPositionName);
+  if (rest &&
+    (rest->GetNumberOfComponents() != 3 || rest->GetNumberOfTuples() != grid->GetNumberOfPoints()))
+  {
+    return "the cage's point array \"RestPosition\" has " +
+      std::to_string(rest->GetNumberOfTuples()) + " tuples of " +
+      std::to_string(rest->GetNumberOfComponents()) + " components; expected " +
+      std::to_string(grid->GetNumberOfPoints()) + " tuples of 3";
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
 vtkIdType vtkDeformationCage::AddPoint(const double rest[3])
 {
   return this->AddPoint(rest, rest);
@@ -331,6 +356,23 @@ bool vtkDeformationCage::GetRestCorners(vtkIdType box, double corners[24])
 bool vtkDeformationCage::GetDeformedCorners(vtkIdType box, double corners[24])
 {
   return this->GetCorners(box, false, corners);
+}
+
+//------------------------------------------------------------------------------
+bool vtkDeformationCage::GetRestBounds(vtkIdType box, double bounds[6])
+{
+  double corners[24];
+  if (!this->GetRestCorners(box, corners))
+  {
+    return false;
+  }
+  const lfd::AxisBounds extent = lfd::BoxBounds(lfd::HexahedronFromArray(corners));
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds[2 * k] = extent.Min[k];
+    bounds[2 * k + 1] = extent.Max[k];
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
