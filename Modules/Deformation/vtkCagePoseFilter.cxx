@@ -46,6 +46,91 @@ void ArcTerms(double phi, double& sinc, double& cosc)
   sinc = std::sin(phi) / phi;
   cosc = (1.0 - std::cos(phi)) / phi;
 }
+
+/// The rest positions of the cage's points (x0 y0 z0 x1 ...), their axis
+/// (`requested`, or the longest side of their bounds when it is -1) and
+/// their length along it.
+std::vector<double> RestPoints(vtkDeformationCage* cage, int requested, int& axis, double& length)
+{
+  const vtkIdType numberOfPoints = cage->GetNumberOfPoints();
+  std::vector<double> rest(3 * numberOfPoints);
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MIN, VTK_DOUBLE_MIN };
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double* p = &rest[3 * i];
+    cage->GetRestPoint(i, p);
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+    }
+  }
+  axis = requested;
+  if (axis < 0)
+  {
+    axis = 0;
+    for (int a = 1; a < 3; ++a)
+    {
+      if (hi[a] - lo[a] > hi[axis] - lo[axis])
+      {
+        axis = a;
+      }
+    }
+  }
+  length = hi[axis] - lo[axis];
+  return rest;
+}
+
+/// The layers of a cage: its points grouped by their rest coordinate along
+/// the axis (equal within 1e-6 of the length), in increasing order.
+struct Layers
+{
+  std::vector<int> Of;                       // the layer of each point
+  std::vector<double> Coordinate;            // each layer's coordinate along the axis
+  std::vector<std::array<double, 3>> Centre; // the mean of its points
+
+  Layers(const std::vector<double>& rest, int axis, double length)
+  {
+    const vtkIdType numberOfPoints = static_cast<vtkIdType>(rest.size() / 3);
+    std::vector<vtkIdType> order(numberOfPoints);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(),
+      order.end(),
+      [&](vtkIdType a, vtkIdType b) { return rest[3 * a + axis] < rest[3 * b + axis]; });
+    const double tolerance = 1e-6 * (length > 0.0 ? length : 1.0);
+    this->Of.resize(numberOfPoints);
+    std::vector<int> count;
+    double previous = 0.0;
+    for (vtkIdType n = 0; n < numberOfPoints; ++n)
+    {
+      const double* p = &rest[3 * order[n]];
+      if (n == 0 || p[axis] - previous > tolerance)
+      {
+        this->Coordinate.push_back(p[axis]);
+        this->Centre.push_back({ 0.0, 0.0, 0.0 });
+        count.push_back(0);
+      }
+      previous = p[axis];
+      const int k = static_cast<int>(count.size()) - 1;
+      this->Of[order[n]] = k;
+      for (int a = 0; a < 3; ++a)
+      {
+        this->Centre[k][a] += p[a];
+      }
+      ++count[k];
+    }
+    for (size_t k = 0; k < count.size(); ++k)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        this->Centre[k][a] /= count[k];
+      }
+    }
+  }
+
+  int GetNumberOfLayers() const { return static_cast<int>(this->Coordinate.size()); }
+};
 }
 
 //------------------------------------------------------------------------------
@@ -97,32 +182,9 @@ int vtkCagePoseFilter::RequestData(vtkInformation*,
     vtkErrorMacro("The input cage has no points: there is nothing to pose.");
     return 0;
   }
-  std::vector<double> rest(3 * numberOfPoints);
-  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-  double hi[3] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MIN, VTK_DOUBLE_MIN };
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    double* p = &rest[3 * i];
-    cage->GetRestPoint(i, p);
-    for (int a = 0; a < 3; ++a)
-    {
-      lo[a] = std::min(lo[a], p[a]);
-      hi[a] = std::max(hi[a], p[a]);
-    }
-  }
-  int axis = this->Axis;
-  if (axis < 0)
-  {
-    axis = 0;
-    for (int a = 1; a < 3; ++a)
-    {
-      if (hi[a] - lo[a] > hi[axis] - lo[axis])
-      {
-        axis = a;
-      }
-    }
-  }
-  const double length = hi[axis] - lo[axis];
+  int axis = 0;
+  double length = 0.0;
+  const std::vector<double> rest = RestPoints(cage, this->Axis, axis, length);
   double direction[3] = { 0.0, 0.0, 0.0 };
   direction[axis] = 1.0;
 
@@ -145,44 +207,9 @@ int vtkCagePoseFilter::RequestData(vtkInformation*,
     vtkMath::Cross(turn, direction, sideways);
   }
 
-  // Layers: points sharing their rest coordinate along the axis.
-  std::vector<vtkIdType> order(numberOfPoints);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(),
-    order.end(),
-    [&](vtkIdType a, vtkIdType b) { return rest[3 * a + axis] < rest[3 * b + axis]; });
-  const double tolerance = 1e-6 * (length > 0.0 ? length : 1.0);
-  std::vector<int> layerOf(numberOfPoints);
-  std::vector<double> layerCoordinate;
-  std::vector<std::array<double, 3>> layerCentre;
-  std::vector<int> layerCount;
-  double previous = 0.0;
-  for (vtkIdType n = 0; n < numberOfPoints; ++n)
-  {
-    const double* p = &rest[3 * order[n]];
-    if (n == 0 || p[axis] - previous > tolerance)
-    {
-      layerCoordinate.push_back(p[axis]);
-      layerCentre.push_back({ 0.0, 0.0, 0.0 });
-      layerCount.push_back(0);
-    }
-    previous = p[axis];
-    const int k = static_cast<int>(layerCount.size()) - 1;
-    layerOf[order[n]] = k;
-    for (int a = 0; a < 3; ++a)
-    {
-      layerCentre[k][a] += p[a];
-    }
-    ++layerCount[k];
-  }
-  const int numberOfLayers = static_cast<int>(layerCount.size());
-  for (int k = 0; k < numberOfLayers; ++k)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      layerCentre[k][a] /= layerCount[k];
-    }
-  }
+  const Layers layers(rest, axis, length);
+  const int numberOfLayers = layers.GetNumberOfLayers();
+  const std::vector<double>& layerCoordinate = layers.Coordinate;
 
   // Per layer: the rotation axis and angle, and the new position of its
   // centre.
@@ -190,7 +217,7 @@ int vtkCagePoseFilter::RequestData(vtkInformation*,
   const double first = layerCoordinate.front();
   const double middle = 0.5 * (first + layerCoordinate.back());
   std::vector<double> layerAngle(numberOfLayers);
-  std::vector<std::array<double, 3>> layerTarget(layerCentre);
+  std::vector<std::array<double, 3>> layerTarget(layers.Centre);
   for (int k = 0; k < numberOfLayers; ++k)
   {
     const double t = length > 0.0 ? (layerCoordinate[k] - first) / length : 0.0;
@@ -233,11 +260,10 @@ int vtkCagePoseFilter::RequestData(vtkInformation*,
   const double* rotationAxis = this->Mode == TWIST ? direction : turn;
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
-    const int k = layerOf[i];
+    const int k = layers.Of[i];
     const double* p = &rest[3 * i];
-    const double offset[3] = {
-      p[0] - layerCentre[k][0], p[1] - layerCentre[k][1], p[2] - layerCentre[k][2]
-    };
+    const std::array<double, 3>& centre = layers.Centre[k];
+    const double offset[3] = { p[0] - centre[0], p[1] - centre[1], p[2] - centre[2] };
     double rotated[3];
     Rotate(rotationAxis, layerAngle[k], offset, rotated);
     const double q[3] = {

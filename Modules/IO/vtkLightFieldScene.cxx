@@ -6,12 +6,16 @@
 #include "lfdLimits.h"
 #include "lfdPinholeCamera.h"
 #include "vtkCamera.h"
-#include "vtkDataArray.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDeformationCage.h"
+#include "vtkDoubleArray.h"
 #include "vtkIdList.h"
+#include "vtkIntArray.h"
 #include "vtkLightFieldReader.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
@@ -311,7 +315,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
   // Parse into locals; the scene changes only when the whole file is valid.
   std::string lightField;
   bool hasLightField = false;
-  auto cage = vtkSmartPointer<vtkDeformationCage>::New();
+  auto cage = vtkSmartPointer<vtkUnstructuredGrid>::New();
   std::vector<Keyframe> keyframes;
   auto camera = vtkSmartPointer<vtkCamera>::New();
   int width = 512, height = 512, subdivision = 1, widenedSearch = 2;
@@ -362,10 +366,16 @@ bool vtkLightFieldScene::Read(const char* fileName)
         throw FieldError(
           "cage.boxes", "expected an array of boxes, found " + lfd::io::Describe(boxes));
       }
-      for (size_t i = 0; i < cagePoints; ++i)
-      {
-        cage->AddPoint(&rest[3 * i], &deformed[3 * i]);
-      }
+      cage->SetPoints(MakePoints(deformed));
+      vtkNew<vtkDoubleArray> restArray;
+      restArray->SetName("RestPosition");
+      restArray->SetNumberOfComponents(3);
+      restArray->SetNumberOfTuples(static_cast<vtkIdType>(cagePoints));
+      std::copy(rest.begin(), rest.end(), restArray->GetPointer(0));
+      cage->GetPointData()->AddArray(restArray);
+      vtkNew<vtkIntArray> labels;
+      labels->SetName("Label");
+      cage->Allocate(static_cast<vtkIdType>(boxes.size()));
       for (size_t b = 0; b < boxes.size(); ++b)
       {
         const std::string boxPath = ElementPath("cage.boxes", b);
@@ -392,8 +402,10 @@ bool vtkLightFieldScene::Read(const char* fileName)
         }
         const long long label = lfd::io::GetInteger(
           lfd::io::RequireMember(boxes[b], boxPath, "label"), MemberPath(boxPath, "label"), 0, 255);
-        cage->AddBox(ids, static_cast<int>(label));
+        cage->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
+        labels->InsertNextValue(static_cast<int>(label));
       }
+      cage->GetCellData()->AddArray(labels);
     }
 
     if (const Json* list = lfd::io::FindMember(document, "", "keyframes"))

@@ -8,12 +8,13 @@
  *
  * - LightFieldPath: the light-field dataset as written in the file;
  *   GetResolvedLightFieldPath() resolves it against the scene file's folder.
- * - The cage (GetCage()): Read() gives a vtkDeformationCage (Modules/Core):
- *   one VTK_HEXAHEDRON per box, corners in VTK's hexahedron order (0-3
- *   bottom face counter-clockwise, 4-7 the top face above them), shared
- *   between neighbouring boxes, deformed and rest positions and a label per
- *   box. A file without `points` gets points equal to the rest positions; a
- *   file without `cage` gives an empty cage (HasCage() false).
+ * - The cage (GetCage()): a vtkUnstructuredGrid with one VTK_HEXAHEDRON per
+ *   box, corners in VTK's hexahedron order (0-3 bottom face counter-clockwise,
+ *   4-7 the top face above them), shared between neighbouring boxes. Its
+ *   points are the deformed positions; the point array "RestPosition" (3
+ *   doubles) holds the rest positions; the cell array "Label" (int) the label
+ *   of each box. A file without `points` gets points equal to the rest
+ *   positions; a file without `cage` gives an empty grid (HasCage() false).
  * - Keyframes: (time, cage point positions), in file order.
  * - Camera: a vtkCamera (position, focal point, view up, view angle in
  *   degrees) and the image Width x Height (default 512 x 512, 30 degrees).
