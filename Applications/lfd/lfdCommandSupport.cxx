@@ -1,7 +1,6 @@
 // What every `lfd` subcommand shares (see lfdCommandSupport.h).
 #include "lfdCommandSupport.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkDeformationCage.h"
 #include "vtkImageData.h"
 #include "vtkImageFileReader.h"
@@ -193,13 +192,10 @@ vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
     keyframes->InterpolatePoints(*time, points);
     cage->SetPoints(points);
   }
-  // The refusal is said once, with the scene's file name: the observer keeps
-  // the cage's own error event from the console.
-  vtkNew<vtkCallbackCommand> quiet;
-  cage->AddObserver(vtkCommand::ErrorEvent, quiet);
-  if (!cage->Validate(lightField))
+  const std::string why = cage->Validate(lightField);
+  if (!why.empty())
   {
-    Fail(std::string(scene->GetFileName()) + ": " + cage->GetErrorMessage());
+    Fail(std::string(scene->GetFileName()) + ": " + why);
   }
   return cage;
 }

@@ -1,7 +1,6 @@
 // `lfd render`, `lfd animate` and `lfd lattice`: a scene's views out.
 #include "lfdCommands.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
@@ -250,11 +249,10 @@ void Lattice(const LatticeOptions& options)
   lattice->SetSubdivision(options.Subdivision);
   Run(lattice.Get(), "sampling the lattice into boxes");
   vtkDeformationCage* cage = lattice->GetOutput();
-  vtkNew<vtkCallbackCommand> quiet; // the refusal is said once, below
-  cage->AddObserver(vtkCommand::ErrorEvent, quiet);
-  if (!cage->Validate())
+  const std::string why = cage->Validate();
+  if (!why.empty())
   {
-    Fail(options.Out + ": the sampled cage is refused: " + cage->GetErrorMessage());
+    Fail(options.Out + ": the sampled cage is refused: " + why);
   }
 
   scene->SetCage(cage);

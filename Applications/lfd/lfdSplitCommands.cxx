@@ -3,7 +3,7 @@
 
 #include "vtkBoxCoverageCheck.h"
 #include "vtkCallbackCommand.h"
-#include "vtkCellData.h"
+#include "vtkDeformationCage.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkLabelPropagation.h"
@@ -218,10 +218,11 @@ void SplitCheck(const SplitOptions& options)
   // Every box's label must have pixels and every label value a box: a
   // mismatch (a scene written for another split) is warned about per label.
   std::set<int> boxLabels;
-  vtkDataArray* cellLabels = scene->GetCage()->GetCellData()->GetArray("Label");
-  for (vtkIdType box = 0; cellLabels && box < cellLabels->GetNumberOfTuples(); ++box)
+  vtkNew<vtkDeformationCage> cage;
+  cage->InitializeFromGrid(scene->GetCage());
+  for (vtkIdType box = 0; box < cage->GetNumberOfBoxes(); ++box)
   {
-    boxLabels.insert(static_cast<int>(cellLabels->GetTuple1(box)));
+    boxLabels.insert(cage->GetBoxLabel(box));
   }
   bool mismatch = false;
   for (int label = 1; label < 256; ++label)
