@@ -47,6 +47,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace lfd
@@ -267,19 +268,27 @@ struct ViewRayLook
   const Lookup& Light;
   const glm::dvec3& O;
   const glm::dvec3& D;
-  RaySamples Samples;
-  bool Gathered = false;
+  std::optional<RaySamples> Samples; // constructed by the first lookup only
   bool Found = false;
-  int Seen = -1;
+  int Seen = -2; // -2: not voted yet
+
+  /// Looks the view ray up once; false when it has no sample.
+  bool Gather()
+  {
+    if (!this->Samples)
+    {
+      this->Samples.emplace();
+      this->Found = this->Light.Gather(this->O, this->D, *this->Samples);
+    }
+    return this->Found;
+  }
 
   /// The label voted along the view ray (-1: no sample).
   int Look()
   {
-    if (!this->Gathered)
+    if (this->Seen == -2)
     {
-      this->Gathered = true;
-      this->Found = this->Light.Gather(this->O, this->D, this->Samples);
-      this->Seen = this->Found ? VoteLabel(this->Samples) : -1;
+      this->Seen = this->Gather() ? VoteLabel(*this->Samples) : -1;
     }
     return this->Seen;
   }
@@ -299,10 +308,11 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
   {
     const RenderBox& box = boxes[entry.Box];
     const WarpedSegment& segment = entry.Segment;
-    const RaySamples* seenSamples = &view.Samples;
+    const RaySamples* seenSamples = &samples;
     if (!box.Moved)
     {
       entry.Seen = view.Look();
+      seenSamples = &*view.Samples;
     }
     else
     {
@@ -313,7 +323,6 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
         continue;
       }
       entry.Seen = VoteLabel(samples);
-      seenSamples = &samples;
     }
     if (entry.Seen == box.Label)
     {
@@ -356,13 +365,12 @@ template<typename Lookup>
 ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& settings)
 {
   ViewSample result;
-  view.Look();
-  if (!view.Found)
+  if (!view.Gather())
   {
     return result;
   }
   result.Depth = view.Light.FocalDepth(view.O, view.D);
-  RaySamples& samples = view.Samples;
+  RaySamples& samples = *view.Samples;
   if (!settings.UseLabels)
   {
     BlendLabel(samples, 0, result.Color);
@@ -405,8 +413,10 @@ ViewSample RenderView(const glm::dvec3& o,
   {
     ViewSample result;
     CollectSegments(boxes, o, d, segments);
-    if (detail::ShadeSegments(boxes, segments, lookup, view, result) ||
-      (settings.WidenedSearch && detail::WidenSegments(boxes, segments, lookup, result)))
+    // (Most rays of a frame miss every box: they skip the segment walk.)
+    if (!segments.empty() &&
+      (detail::ShadeSegments(boxes, segments, lookup, view, result) ||
+        (settings.WidenedSearch && detail::WidenSegments(boxes, segments, lookup, result))))
     {
       return result;
     }
