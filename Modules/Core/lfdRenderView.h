@@ -10,7 +10,9 @@
  * entry and exit points) and looked up in the light field; the first
  * interval whose looked-up label is its box's label gives the ray its colour
  * (DESIGN.md section 4.3). That is how occlusion between parts comes out
- * right without any geometry.
+ * right without any geometry. A box that did not move warps a ray onto
+ * itself: its intervals are looked up along the view ray itself, once per
+ * ray, so a cage at rest renders exactly the undeformed light field.
  *
  * When no interval matches, a moved box may have uncovered a region that
  * the nearby cameras saw hidden behind another part: the widened search of
