@@ -36,8 +36,8 @@ constexpr int MaximumSubdivision = 16;
 /// Largest number of sub-boxes of a whole tessellated cage: every ray tests
 /// every sub-box, about 1.1 ms per sub-box for a 256 x 256 frame on 2 cores,
 /// so this budget bounds a 512 x 512 frame to about 18 s. One box at the
-/// maximum subdivision fills it. (A ray crosses at most 3k - 2 sub-boxes of
-/// one box, which stays under the 64 segments a ray keeps.)
+/// maximum subdivision fills it. (A ray keeps every segment it meets:
+/// lfdRenderView.h.)
 constexpr int MaximumSubBoxes = MaximumSubdivision * MaximumSubdivision * MaximumSubdivision;
 
 ///@{

@@ -1,6 +1,7 @@
 #include "vtkLatticeCageFilter.h"
 
 #include "lfdBernstein.h"
+#include "lfdTessellation.h"
 #include "lfdTrilinear.h"
 
 #include "vtkDataArray.h"
@@ -24,6 +25,12 @@ namespace
 bool HasVolume(const double region[6])
 {
   return region[1] > region[0] && region[3] > region[2] && region[5] > region[4];
+}
+
+/// Index of `node` in the (k+1)^3 node ids of one box's sub-grid, u fastest.
+std::size_t GridIndex(int k, const glm::ivec3& node)
+{
+  return static_cast<std::size_t>(node.x + (k + 1) * (node.y + (k + 1) * node.z));
 }
 
 /// The kernel's lattice of the filter's control points over `region`.
@@ -254,51 +261,41 @@ int vtkLatticeCageFilter::RequestData(vtkInformation*,
     vtkIdType npts;
     const vtkIdType* ids;
     cage->GetCellPoints(b, npts, ids);
-    for (int w = 0; w <= k; ++w)
-    {
-      for (int v = 0; v <= k; ++v)
+    lfd::ForEachSubGridNode(k,
+      [&](const glm::ivec3& node)
       {
-        for (int u = 0; u <= k; ++u)
+        vtkIdType& id = grid[GridIndex(k, node)];
+        const glm::ivec3 corner = node / k;
+        if (node == corner * k)
         {
-          vtkIdType& id = grid[u + (k + 1) * (v + (k + 1) * w)];
-          if ((u == 0 || u == k) && (v == 0 || v == k) && (w == 0 || w == k))
-          {
-            const int corner[3] = { u / k, v / k, w / k };
-            for (int c = 0; c < 8; ++c)
-            {
-              if (std::equal(corner, corner + 3, lfd::HexCorner[c]))
-              {
-                id = ids[c];
-              }
-            }
-            continue;
-          }
-          const glm::dvec3 p = lfd::TrilinearMap(box, glm::dvec3(u, v, w) / static_cast<double>(k));
-          const double x[3] = { p.x, p.y, p.z };
-          id = locator->IsInsertedPoint(x);
-          if (id < 0)
-          {
-            id = locator->InsertNextPoint(x);
-          }
-        }
-      }
-    }
-    const int label = cage->GetBoxLabel(b);
-    for (int w = 0; w < k; ++w)
-    {
-      for (int v = 0; v < k; ++v)
-      {
-        for (int u = 0; u < k; ++u)
-        {
+          // A corner of the box: its own point.
           for (int c = 0; c < 8; ++c)
           {
-            const int* h = lfd::HexCorner[c];
-            boxes.push_back(grid[(u + h[0]) + (k + 1) * ((v + h[1]) + (k + 1) * (w + h[2]))]);
+            if (corner == lfd::SubBoxNode(glm::ivec3(0), c))
+            {
+              id = ids[c];
+            }
           }
-          labels.push_back(label);
+          return;
         }
-      }
-    }
+        const glm::dvec3 p = lfd::TrilinearMap(box, lfd::SubGridPoint(k, node));
+        const double x[3] = { p.x, p.y, p.z };
+        id = locator->IsInsertedPoint(x);
+        if (id < 0)
+        {
+          id = locator->InsertNextPoint(x);
+        }
+      });
+    const int label = cage->GetBoxLabel(b);
+    lfd::ForEachSubBox(k,
+      [&](const glm::ivec3& cell)
+      {
+        for (int c = 0; c < 8; ++c)
+        {
+          boxes.push_back(grid[GridIndex(k, lfd::SubBoxNode(cell, c))]);
+        }
+        labels.push_back(label);
+      });
   }
 
   std::copy(region, region + 6, this->UsedRegion);

@@ -5,8 +5,8 @@
 #include "lfdCylinderSampling.h"
 #include "lfdLimits.h"
 #include "lfdPinholeCamera.h"
-#include "lfdRayWarp.h"
-#include "lfdTrilinear.h"
+#include "lfdRenderView.h"
+#include "lfdTessellation.h"
 
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
@@ -20,6 +20,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkScanlineSplit.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -36,158 +37,15 @@ vtkCxxSetObjectMacro(vtkLightFieldRenderer, Camera, vtkCamera);
 
 namespace
 {
-/// A box of the cage as the renderer uses it: rest and deformed corners, the
-/// label it owns and the bounds of the deformed box (to skip missed boxes).
-struct CageBox
-{
-  lfd::Hexahedron Rest;
-  lfd::Hexahedron Deformed;
-  int Label = 0;
-  glm::dvec3 Low{ 0.0 };
-  glm::dvec3 High{ 0.0 };
-  bool Moved = false;      // deformed differs from rest: it may uncover regions
-  bool EyeOutside = false; // the eye is outside the deformed box (set per frame)
-};
-
-/// Slab test of the line o + t d (t >= 0) against an axis-aligned box.
-bool HitsBounds(const glm::dvec3& o,
-  const glm::dvec3& d,
-  const glm::dvec3& low,
-  const glm::dvec3& high)
-{
-  double t0 = 0.0;
-  double t1 = std::numeric_limits<double>::infinity();
-  for (int a = 0; a < 3; ++a)
-  {
-    if (d[a] == 0.0)
-    {
-      if (o[a] < low[a] || o[a] > high[a])
-      {
-        return false;
-      }
-      continue;
-    }
-    double near = (low[a] - o[a]) / d[a];
-    double far = (high[a] - o[a]) / d[a];
-    if (near > far)
-    {
-      std::swap(near, far);
-    }
-    t0 = std::max(t0, near);
-    t1 = std::min(t1, far);
-    if (t0 > t1)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
 /**
- * Distance of the box's map from the affine map through corners 0, 1, 3 and
- * 4, at the face centres and the centre: the second-order part of the
- * trilinear map, which bends the true inverse image of a straight ray.
+ * The boxes of a cage grid as RENDER_VIEW takes them, untessellated. False
+ * (with an error on `self` naming the box) when a cell is not a hexahedron of
+ * existing points or its label is outside 1..255.
  */
-double Nonlinearity(const lfd::Hexahedron& box)
-{
-  const glm::dvec3& c0 = box.Corners[0];
-  const glm::dmat3 affine(box.Corners[1] - c0, box.Corners[3] - c0, box.Corners[4] - c0);
-  const glm::dvec3 probes[7] = { { 0.5, 0.5, 0.5 },
-    { 0.0, 0.5, 0.5 },
-    { 1.0, 0.5, 0.5 },
-    { 0.5, 0.0, 0.5 },
-    { 0.5, 1.0, 0.5 },
-    { 0.5, 0.5, 0.0 },
-    { 0.5, 0.5, 1.0 } };
-  double deviation = 0.0;
-  for (const glm::dvec3& uvw : probes)
-  {
-    deviation = std::max(deviation, glm::distance(lfd::TrilinearMap(box, uvw), c0 + affine * uvw));
-  }
-  return deviation;
-}
-
-/**
- * Tessellation (DESIGN.md 4.4): box `box` split into k x k x k sub-boxes whose
- * corners are the rest and deformed maps of the parametric sub-grid, so the
- * deformation stays the same while each warped ray becomes piecewise linear.
- */
-void Subdivide(const CageBox& box, int k, std::vector<CageBox>& boxes)
-{
-  for (int i = 0; i < k; ++i)
-  {
-    for (int j = 0; j < k; ++j)
-    {
-      for (int l = 0; l < k; ++l)
-      {
-        CageBox sub;
-        sub.Label = box.Label;
-        sub.Moved = box.Moved;
-        for (int c = 0; c < 8; ++c)
-        {
-          const glm::dvec3 uvw =
-            glm::dvec3(
-              i + lfd::HexCorner[c][0], j + lfd::HexCorner[c][1], l + lfd::HexCorner[c][2]) /
-            static_cast<double>(k);
-          sub.Rest.Corners[c] = lfd::TrilinearMap(box.Rest, uvw);
-          sub.Deformed.Corners[c] = lfd::TrilinearMap(box.Deformed, uvw);
-        }
-        const lfd::AxisBounds bounds = lfd::BoxBounds(sub.Deformed);
-        sub.Low = bounds.Min;
-        sub.High = bounds.Max;
-        boxes.push_back(sub);
-      }
-    }
-  }
-}
-
-/// The tessellation k of a box chosen by Subdivision 0 (auto): the smallest
-/// that brings the map's nonlinearity under `tolerance` x the box size (it
-/// falls as 1 / k^2), up to 8.
-int AutomaticSubdivision(const CageBox& box, double tolerance)
-{
-  const double error = std::max(Nonlinearity(box.Rest), Nonlinearity(box.Deformed)) /
-    std::max(lfd::BoxSize(box.Deformed), 1e-300);
-  return std::clamp(static_cast<int>(std::ceil(std::sqrt(error / tolerance))), 1, 8);
-}
-
-/// Sub-boxes of a cage whose box b is split into ks[b]^3.
-long long CountSubBoxes(const std::vector<int>& ks)
-{
-  long long count = 0;
-  for (int k : ks)
-  {
-    count += static_cast<long long>(k) * k * k;
-  }
-  return count;
-}
-
-/**
- * The boxes of a cage grid, each tessellated into subdivision^3 sub-boxes
- * (subdivision 0: AutomaticSubdivision() per box, its largest k lowered until
- * the cage fits lfd::MaximumSubBoxes). False (with an error on `self`) when
- * the grid is malformed or the tessellation is over the budget of
- * lfdLimits.h.
- */
-bool CollectBoxes(vtkObject* self,
-  vtkDeformationCage* cage,
-  int subdivision,
-  double tolerance,
-  std::vector<CageBox>& boxes)
+bool ReadBoxes(vtkObject* self, vtkDeformationCage* cage, std::vector<lfd::RenderBox>& boxes)
 {
   const vtkIdType count = cage->GetNumberOfBoxes();
-  if (subdivision < 0 || subdivision > lfd::MaximumSubdivision)
-  {
-    vtkErrorWithObjectMacro(self,
-      "Subdivision " << subdivision << " (render.subdivision) is outside [1, "
-                     << lfd::MaximumSubdivision
-                     << "] (0 = auto): a ray keeps at most 64 segments, and one box at k "
-                     << lfd::MaximumSubdivision << " already makes " << lfd::MaximumSubBoxes
-                     << " sub-boxes.");
-    return false;
-  }
-  std::vector<CageBox> whole(count);
-  std::vector<int> ks(count, subdivision);
+  boxes.resize(count);
   for (vtkIdType b = 0; b < count; ++b)
   {
     double rest[24], deformed[24];
@@ -197,201 +55,108 @@ bool CollectBoxes(vtkObject* self,
         self, "Cage cell " << b << " is not a hexahedron of 8 existing points.");
       return false;
     }
-    CageBox& box = whole[b];
-    box.Label = cage->GetBoxLabel(b);
-    if (box.Label < 1 || box.Label > 255)
+    const int label = cage->GetBoxLabel(b);
+    if (label < 1 || label > 255)
     {
       vtkErrorWithObjectMacro(
-        self, "Box " << b << " has label " << box.Label << "; labels are 1..255.");
+        self, "Box " << b << " has label " << label << "; labels are 1..255.");
       return false;
     }
-    box.Rest = lfd::HexahedronFromArray(rest);
-    box.Deformed = lfd::HexahedronFromArray(deformed);
-    const double size = lfd::BoxSize(box.Rest);
-    for (int c = 0; c < 8; ++c)
-    {
-      box.Moved =
-        box.Moved || glm::distance(box.Rest.Corners[c], box.Deformed.Corners[c]) > 1e-9 * size;
-    }
-    if (subdivision == 0)
-    {
-      ks[b] = AutomaticSubdivision(box, tolerance);
-    }
+    boxes[b] =
+      lfd::MakeRenderBox(lfd::HexahedronFromArray(rest), lfd::HexahedronFromArray(deformed), label);
   }
-  // Auto spends the budget where the map bends most: the largest k goes
-  // down first, and every box keeps at least k = 1.
-  for (int cap = 8; subdivision == 0 && cap > 1 && CountSubBoxes(ks) > lfd::MaximumSubBoxes; --cap)
+  return true;
+}
+
+/**
+ * The k of every box: `subdivision`, or with 0 (auto) lfd::AutomaticSubdivision
+ * lowered to fit lfd::MaximumSubBoxes. False (with an error on `self`) when
+ * the tessellation is over that budget.
+ */
+bool ChooseSubdivisions(vtkObject* self,
+  const std::vector<lfd::RenderBox>& boxes,
+  int subdivision,
+  double tolerance,
+  std::vector<int>& ks)
+{
+  ks.assign(boxes.size(), subdivision);
+  if (subdivision == 0)
   {
-    for (int& k : ks)
+    for (std::size_t b = 0; b < boxes.size(); ++b)
     {
-      k = std::min(k, cap - 1);
+      ks[b] = lfd::AutomaticSubdivision(boxes[b].Rest, boxes[b].Deformed, tolerance);
     }
+    lfd::FitSubdivisionBudget(ks, lfd::MaximumSubBoxes);
   }
-  const long long subBoxes = CountSubBoxes(ks);
+  const long long subBoxes = lfd::CountSubBoxes(ks);
   if (subBoxes > lfd::MaximumSubBoxes)
   {
     vtkErrorWithObjectMacro(self,
       "Subdivision " << (subdivision ? std::to_string(subdivision) : std::string("auto"))
-                     << " (render.subdivision) splits the cage's " << count << " boxes into "
+                     << " (render.subdivision) splits the cage's " << boxes.size() << " boxes into "
                      << subBoxes << " sub-boxes, above the budget of " << lfd::MaximumSubBoxes
                      << " (every ray tests every sub-box): "
                      << (subdivision > 1 ? "lower it" : "use fewer boxes") << ".");
     return false;
   }
-  boxes.reserve(static_cast<std::size_t>(subBoxes));
-  for (vtkIdType b = 0; b < count; ++b)
+  return true;
+}
+
+/**
+ * The boxes of a cage grid, each tessellated into subdivision^3 sub-boxes
+ * (subdivision 0: chosen per box, see ChooseSubdivisions). False (with an
+ * error on `self`) when the subdivision is out of range, the grid is
+ * malformed or the tessellation is over the budget of lfdLimits.h.
+ */
+bool CollectBoxes(vtkObject* self,
+  vtkDeformationCage* cage,
+  int subdivision,
+  double tolerance,
+  std::vector<lfd::RenderBox>& boxes)
+{
+  if (subdivision < 0 || subdivision > lfd::MaximumSubdivision)
   {
-    Subdivide(whole[b], ks[b], boxes);
+    vtkErrorWithObjectMacro(self,
+      "Subdivision " << subdivision << " (render.subdivision) is outside [1, "
+                     << lfd::MaximumSubdivision << "] (0 = auto): one box at k "
+                     << lfd::MaximumSubdivision << " already makes " << lfd::MaximumSubBoxes
+                     << " sub-boxes, the budget of a cage (lfd::MaximumSubBoxes).");
+    return false;
+  }
+  std::vector<lfd::RenderBox> whole;
+  std::vector<int> ks;
+  if (!ReadBoxes(self, cage, whole) || !ChooseSubdivisions(self, whole, subdivision, tolerance, ks))
+  {
+    return false;
+  }
+  boxes.reserve(static_cast<std::size_t>(lfd::CountSubBoxes(ks)));
+  for (std::size_t b = 0; b < whole.size(); ++b)
+  {
+    lfd::Tessellate(whole[b], ks[b], boxes);
   }
   return true;
 }
 
-/// A segment of a view ray inside one deformed box.
-struct BoxSegment
-{
-  lfd::WarpedSegment Segment;
-  int Box;
-};
-
-/**
- * One ray per pixel, rows in parallel. Without a cage the ray is looked up
- * as it is. With a cage this is the paper's RENDER_VIEW (Sec. 6): the
- * segments of the view ray inside the deformed boxes, front to back, each
- * warped back to rest space (a straight warped ray through the rest images
- * of its entry and exit points) and looked up; the first segment whose
- * looked-up label is its box's label gives the pixel. Rays that match no
- * segment see the undeformed light field, but only the parts that no box
- * owns (a part that has a box is wherever its box put it).
- */
+/// One ray per pixel through lfd::RenderView (paper Sec. 6), rows in parallel.
 struct RenderRows
 {
-  const lfd::LightFieldSampler& Sampler;
-  const std::vector<CageBox>& Boxes;
-  const std::array<bool, 256>& Owned; // labels that have a box
-  bool AllOwned;                      // every part of the light field has a box: no part stays put
-  int WidenReach;                     // views tried on each side by the widened search (0: off)
+  const lfd::SamplerLookup& Lookup;
+  const std::vector<lfd::RenderBox>& Boxes;
+  const lfd::RenderViewSettings& Settings;
   glm::dvec3 Origin;
-  glm::dmat3 PixelToDirection;
+  glm::dmat3 PixelToDirection; // a pixel's ray direction, camera z component 1
   int Width;
   int Height;
-  bool UseLabels;
   std::uint8_t Background[3];
   std::uint8_t* Radiance; // output, VTK row order
   std::uint8_t* Labels;
   float* Depths;
-  glm::dvec3 Forward; // the camera's optical axis: d's camera z is 1
-
-  static constexpr int MaxSegments = 64;
-  static constexpr int WidenSteps = 8;
-
-  /**
-   * Label and colour seen along the view ray d (camera z component 1);
-   * label -1 when nothing is seen. `depth` (camera z) approximates where:
-   * the middle of the accepted segment in its box, or the focal point of a
-   * ray that matched no box.
-   */
-  int Shade(const glm::dvec3& d, glm::dvec3& color, double& depth) const
-  {
-    lfd::RaySamples samples;
-    BoxSegment segments[MaxSegments];
-    int count = 0;
-    for (std::size_t b = 0; b < this->Boxes.size() && count < MaxSegments; ++b)
-    {
-      const CageBox& box = this->Boxes[b];
-      if (!HitsBounds(this->Origin, d, box.Low, box.High))
-      {
-        continue;
-      }
-      lfd::WarpedSegment found[lfd::MaxWarpedSegments];
-      const int n = lfd::WarpRayThroughBox(box.Rest,
-        box.Deformed,
-        this->Origin,
-        d,
-        0.0,
-        found,
-        lfd::MaxWarpedSegments,
-        box.EyeOutside);
-      for (int k = 0; k < n && count < MaxSegments; ++k)
-      {
-        segments[count++] = { found[k], static_cast<int>(b) };
-      }
-    }
-    std::sort(segments,
-      segments + count,
-      [](const BoxSegment& a, const BoxSegment& b) { return a.Segment.TEnter < b.Segment.TEnter; });
-    int seen[MaxSegments];
-    for (int k = 0; k < count; ++k)
-    {
-      seen[k] = -1;
-      const lfd::WarpedSegment& segment = segments[k].Segment;
-      const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
-      if (glm::dot(direction, direction) <= 0.0 ||
-        !this->Sampler.Gather(segment.RestEnter, direction, samples))
-      {
-        continue;
-      }
-      const CageBox& box = this->Boxes[segments[k].Box];
-      seen[k] = lfd::VoteLabel(samples);
-      if (seen[k] == box.Label)
-      {
-        lfd::BlendLabel(samples, box.Label, color);
-        depth = 0.5 * (segment.TEnter + segment.TExit);
-        return box.Label;
-      }
-    }
-    // No segment matched. Where the nearby cameras saw another part in a
-    // moved box, that part may have hidden this one before the deformation
-    // uncovered it (paper Sec. 8): look in further cameras, front to back.
-    const int widen = this->WidenReach > 0 ? count : 0;
-    for (int k = 0; k < widen; ++k)
-    {
-      const CageBox& box = this->Boxes[segments[k].Box];
-      const lfd::WarpedSegment& segment = segments[k].Segment;
-      if (box.Moved && seen[k] > 0 &&
-        this->Sampler.Widen(
-          segment.RestEnter, segment.RestExit, box.Label, WidenSteps, this->WidenReach, color))
-      {
-        depth = 0.5 * (segment.TEnter + segment.TExit);
-        return box.Label;
-      }
-    }
-    if (this->UseLabels && this->AllOwned)
-    {
-      // Every part moved with its box: what no box shows is background,
-      // without looking the ray up.
-      return 0;
-    }
-    if (!this->Sampler.Gather(this->Origin, d, samples))
-    {
-      return -1;
-    }
-    depth = glm::dot(
-      lfd::FocalPoint(this->Sampler.Layout->Cyl, this->Origin, d, this->Sampler.FocalDistance) -
-        this->Origin,
-      this->Forward);
-    if (!this->UseLabels)
-    {
-      lfd::BlendLabel(samples, 0, color);
-      return 0;
-    }
-    // The heaviest label that no box owns (background included).
-    for (int i = 0; i < samples.Count; ++i)
-    {
-      if (this->Owned[samples.Samples[i].Label])
-      {
-        samples.Samples[i].Weight = 0.0;
-      }
-    }
-    const int label = lfd::VoteLabel(samples);
-    if (label >= 0)
-    {
-      lfd::BlendLabel(samples, label, color);
-    }
-    return label;
-  }
+  // The segments of a ray, reused from ray to ray by each thread.
+  mutable vtkSMPThreadLocal<std::vector<lfd::BoxSegment>> Segments;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
+    std::vector<lfd::BoxSegment>& segments = this->Segments.Local();
     for (vtkIdType j = begin; j < end; ++j)
     {
       const double y = static_cast<double>(this->Height - 1 - j); // OpenCV row
@@ -399,25 +164,115 @@ struct RenderRows
       {
         const vtkIdType id = j * this->Width + x;
         std::uint8_t* rgb = this->Radiance + 3 * id;
-        glm::dvec3 color;
-        double depth = 0.0;
-        const int label = this->Shade(this->PixelToDirection * glm::dvec3(x, y, 1.0), color, depth);
-        this->Labels[id] = static_cast<std::uint8_t>(std::max(label, 0));
-        if (label < 0 || (this->UseLabels && label == 0))
+        // d's camera z is 1, so the ray parameter of the seen point is its depth.
+        const lfd::ViewSample seen = lfd::RenderView(this->Origin,
+          this->PixelToDirection * glm::dvec3(x, y, 1.0),
+          this->Boxes,
+          this->Lookup,
+          this->Settings,
+          segments);
+        this->Labels[id] = static_cast<std::uint8_t>(std::max(seen.Label, 0));
+        if (seen.Label < 0 || (this->Settings.UseLabels && seen.Label == 0))
         {
           std::copy(this->Background, this->Background + 3, rgb);
           this->Depths[id] = 0.0f;
           continue;
         }
-        this->Depths[id] = static_cast<float>(depth);
+        this->Depths[id] = static_cast<float>(seen.Depth);
         for (int c = 0; c < 3; ++c)
         {
-          rgb[c] = static_cast<std::uint8_t>(std::clamp(std::lround(color[c]), 0L, 255L));
+          rgb[c] = static_cast<std::uint8_t>(std::clamp(std::lround(seen.Color[c]), 0L, 255L));
         }
       }
     }
   }
 };
+
+/// The input's RGB uint8 Coaxial pass when the input can be rendered (its
+/// rig has a camera per view); nullptr after an error on `self`.
+vtkUnsignedCharArray* RenderableRadiance(vtkObject* self, vtkLightField* input)
+{
+  if (!input)
+  {
+    vtkErrorWithObjectMacro(self, "The input is not a vtkLightField.");
+    return nullptr;
+  }
+  auto* radiance = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::COAXIAL));
+  if (!radiance || radiance->GetNumberOfComponents() != 3)
+  {
+    vtkErrorWithObjectMacro(
+      self, "The light field has no RGB uint8 'Coaxial' pass to render from.");
+    return nullptr;
+  }
+  vtkCameraRig* rig = input->GetRig();
+  const int views = input->GetNumberOfViews();
+  if (!rig || rig->GetNumberOfViews() != views)
+  {
+    vtkErrorWithObjectMacro(self,
+      "The light field has " << views << " views but its rig has "
+                             << (rig ? rig->GetNumberOfViews() : 0) << " cameras.");
+    return nullptr;
+  }
+  return radiance;
+}
+
+/// The cage on port 1 as a vtkDeformationCage (a plain grid, or one without
+/// rest positions, is a cage at rest); nullptr after an error on `self`.
+vtkSmartPointer<vtkDeformationCage> ReadCage(vtkObject* self, vtkUnstructuredGrid* grid)
+{
+  const std::string refused = vtkDeformationCage::CheckGridArrays(grid);
+  if (!refused.empty())
+  {
+    vtkErrorWithObjectMacro(self, "Input port 1: " << refused << ".");
+    return nullptr;
+  }
+  // A plain grid (or one without rest positions: at rest) is read as a cage.
+  vtkSmartPointer<vtkDeformationCage> cage = vtkDeformationCage::SafeDownCast(grid);
+  if (!cage || !cage->GetRestPositions())
+  {
+    cage = vtkSmartPointer<vtkDeformationCage>::New();
+    cage->InitializeFromGrid(grid);
+  }
+  return cage;
+}
+
+/// True when every label that `lightField` holds has a box.
+bool OwnsEveryPart(const lfd::RenderViewSettings& settings, vtkLightField* lightField)
+{
+  for (int label = 1; label < 256; ++label)
+  {
+    if (!settings.Owned[label] && lightField->HasLabel(label))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The Width x Height output image with its Radiance, Label and Depth
+/// arrays, and `functor` pointed at them.
+void AllocateImage(vtkImageData* output, int width, int height, RenderRows& functor)
+{
+  output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
+  output->SetSpacing(1.0, 1.0, 1.0);
+  output->SetOrigin(0.0, 0.0, 0.0);
+  vtkNew<vtkUnsignedCharArray> image;
+  image->SetName("Radiance");
+  image->SetNumberOfComponents(3);
+  image->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+  vtkNew<vtkUnsignedCharArray> labels;
+  labels->SetName("Label");
+  labels->SetNumberOfTuples(image->GetNumberOfTuples());
+  vtkNew<vtkFloatArray> depths;
+  depths->SetName("Depth");
+  depths->SetNumberOfTuples(image->GetNumberOfTuples());
+  output->GetPointData()->SetScalars(image);
+  output->GetPointData()->AddArray(labels);
+  output->GetPointData()->AddArray(depths);
+  functor.Radiance = image->GetPointer(0);
+  functor.Labels = labels->GetPointer(0);
+  functor.Depths = depths->GetPointer(0);
+}
 }
 
 //------------------------------------------------------------------------------
@@ -545,163 +400,112 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   vtkInformationVector* outputVector)
 {
   vtkLightField* input = vtkLightField::GetData(inputVector[0]);
-  vtkImageData* output = vtkImageData::GetData(outputVector);
-  if (!input)
+  vtkUnsignedCharArray* radiance = RenderableRadiance(this, input);
+  if (!radiance)
   {
-    vtkErrorMacro("The input is not a vtkLightField.");
-    return 0;
-  }
-  auto* radiance = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::COAXIAL));
-  if (!radiance || radiance->GetNumberOfComponents() != 3)
-  {
-    vtkErrorMacro("The light field has no RGB uint8 'Coaxial' pass to render from.");
     return 0;
   }
   vtkCameraRig* rig = input->GetRig();
-  const int views = input->GetNumberOfViews();
-  if (!rig || rig->GetNumberOfViews() != views)
-  {
-    vtkErrorMacro("The light field has " << views << " views but its rig has "
-                                         << (rig ? rig->GetNumberOfViews() : 0) << " cameras.");
-    return 0;
-  }
   const lfd::RingLayout layout = rig->GetRingLayout(this->ExcludedViews);
   if (layout.Rows.empty())
   {
     vtkErrorMacro("No cylinder could be fitted to the rig, or every view is excluded.");
     return 0;
   }
-  std::vector<CageBox> boxes;
-  std::array<bool, 256> owned{};
+  std::vector<lfd::RenderBox> boxes;
   vtkLightField* lightField = input; // the input, or its one-part split
   if (vtkUnstructuredGrid* grid = vtkUnstructuredGrid::GetData(inputVector[1]))
   {
-    const std::string refused = vtkDeformationCage::CheckGridArrays(grid);
-    if (!refused.empty())
-    {
-      vtkErrorMacro(<< "Input port 1: " << refused << ".");
-      return 0;
-    }
-    // A plain grid (or one without rest positions: at rest) is read as a cage.
-    vtkSmartPointer<vtkDeformationCage> cage = vtkDeformationCage::SafeDownCast(grid);
-    if (!cage || !cage->GetRestPositions())
-    {
-      cage = vtkSmartPointer<vtkDeformationCage>::New();
-      cage->InitializeFromGrid(grid);
-    }
-    if (!CollectBoxes(this, cage, this->Subdivision, this->SubdivisionTolerance, boxes))
+    vtkSmartPointer<vtkDeformationCage> cage = ReadCage(this, grid);
+    if (!cage || !CollectBoxes(this, cage, this->Subdivision, this->SubdivisionTolerance, boxes))
     {
       return 0;
     }
-    for (const CageBox& box : boxes)
+    lightField = this->LightFieldOfCage(input, cage, boxes.empty() ? 0 : boxes.front().Label);
+    if (!lightField)
     {
-      owned[box.Label] = true;
-    }
-    if (this->UseLabels && !boxes.empty() && !input->GetPass(vtkLightField::LABEL))
-    {
-      const std::string why = cage->ValidateLabels(input);
-      if (!why.empty())
-      {
-        vtkErrorMacro(<< why);
-        return 0;
-      }
-      lightField = this->OnePart(input, boxes.front().Label);
-      if (!lightField)
-      {
-        return 0;
-      }
+      return 0;
     }
   }
-  std::vector<lfd::PinholeCamera> cameras(views);
-  for (int v = 0; v < views; ++v)
+  std::vector<lfd::PinholeCamera> cameras(input->GetNumberOfViews());
+  for (int v = 0; v < input->GetNumberOfViews(); ++v)
   {
     cameras[v] = rig->GetCamera(v);
   }
-
   lfd::LightFieldSampler sampler;
   sampler.Layout = &layout;
   sampler.Cameras = cameras.data();
   sampler.Radiance = { radiance->GetPointer(0), input->GetWidth(), input->GetHeight(), 3 };
   auto* labels = vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::LABEL));
-  const bool useLabels = this->UseLabels && labels;
-  if (useLabels)
+  lfd::RenderViewSettings settings;
+  settings.UseLabels = this->UseLabels && labels;
+  if (settings.UseLabels)
   {
     sampler.Labels = { labels->GetPointer(0), input->GetWidth(), input->GetHeight(), 1 };
   }
   sampler.FocalDistance = this->FocalDistance;
-
-  double K[9], R[9], t[3];
-  if (this->Camera)
-  {
-    vtkCameraRig::CameraToPinhole(this->Camera, this->Width, this->Height, K, R, t);
-  }
-  else
-  {
-    std::copy(this->PinholeK, this->PinholeK + 9, K);
-    std::copy(this->PinholeR, this->PinholeR + 9, R);
-    std::copy(this->PinholeT, this->PinholeT + 3, t);
-  }
-  const lfd::PinholeCamera eye = lfd::PinholeCamera::FromRowMajor(K, R, t);
-  const glm::dvec3 eyeCenter = eye.Center();
-  for (CageBox& box : boxes)
-  {
-    glm::dvec3 uvw(0.5);
-    const bool inBounds = glm::all(glm::greaterThanEqual(eyeCenter, box.Low)) &&
-      glm::all(glm::lessThanEqual(eyeCenter, box.High));
-    box.EyeOutside = !inBounds || !lfd::Contains(box.Deformed, eyeCenter, uvw);
-  }
-
-  output->SetExtent(0, this->Width - 1, 0, this->Height - 1, 0, 0);
-  output->SetSpacing(1.0, 1.0, 1.0);
-  output->SetOrigin(0.0, 0.0, 0.0);
-  vtkNew<vtkUnsignedCharArray> image;
-  image->SetName("Radiance");
-  image->SetNumberOfComponents(3);
-  image->SetNumberOfTuples(static_cast<vtkIdType>(this->Width) * this->Height);
-  vtkNew<vtkUnsignedCharArray> imageLabels;
-  imageLabels->SetName("Label");
-  imageLabels->SetNumberOfTuples(image->GetNumberOfTuples());
-  vtkNew<vtkFloatArray> imageDepths;
-  imageDepths->SetName("Depth");
-  imageDepths->SetNumberOfTuples(image->GetNumberOfTuples());
-
+  settings.WidenedSearch = this->WidenedSearch > 0;
+  settings.Owned = lfd::OwnedLabels(boxes);
   // With a cage, a ray that no box claims shows the parts without a box;
   // when every part of the light field has one, it shows background.
-  bool allOwned = false;
-  if (useLabels && !boxes.empty())
-  {
-    allOwned = true;
-    for (int label = 1; label < 256; ++label)
-    {
-      allOwned = allOwned && (owned[label] || !lightField->HasLabel(label));
-    }
-  }
-  RenderRows functor{ sampler,
+  settings.AllOwned = settings.UseLabels && !boxes.empty() && OwnsEveryPart(settings, lightField);
+
+  double K[9], R[9], t[3];
+  this->GetEyePinhole(K, R, t);
+  const lfd::PinholeCamera eye = lfd::PinholeCamera::FromRowMajor(K, R, t);
+  lfd::PlaceEye(boxes, eye.Center());
+  const lfd::SamplerLookup lookup{ sampler, this->WidenedSearch, eye.Forward() };
+  RenderRows functor{ lookup,
     boxes,
-    owned,
-    allOwned,
-    this->WidenedSearch,
+    settings,
     eye.Center(),
     eye.PixelToDirection(),
     this->Width,
     this->Height,
-    useLabels,
     {},
-    image->GetPointer(0),
-    imageLabels->GetPointer(0),
-    imageDepths->GetPointer(0),
-    eye.Forward() };
+    nullptr,
+    nullptr,
+    nullptr,
+    {} };
   for (int c = 0; c < 3; ++c)
   {
     functor.Background[c] =
       static_cast<std::uint8_t>(std::clamp(std::lround(255.0 * this->Background[c]), 0L, 255L));
   }
+  AllocateImage(vtkImageData::GetData(outputVector), this->Width, this->Height, functor);
   vtkSMPTools::For(0, this->Height, functor);
-
-  output->GetPointData()->SetScalars(image);
-  output->GetPointData()->AddArray(imageLabels);
-  output->GetPointData()->AddArray(imageDepths);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldRenderer::GetEyePinhole(double K[9], double R[9], double t[3])
+{
+  if (this->Camera)
+  {
+    vtkCameraRig::CameraToPinhole(this->Camera, this->Width, this->Height, K, R, t);
+    return;
+  }
+  std::copy(this->PinholeK, this->PinholeK + 9, K);
+  std::copy(this->PinholeR, this->PinholeR + 9, R);
+  std::copy(this->PinholeT, this->PinholeT + 3, t);
+}
+
+//------------------------------------------------------------------------------
+vtkLightField* vtkLightFieldRenderer::LightFieldOfCage(vtkLightField* input,
+  vtkDeformationCage* cage,
+  int label)
+{
+  if (!this->UseLabels || label == 0 || input->GetPass(vtkLightField::LABEL))
+  {
+    return input;
+  }
+  const std::string why = cage->ValidateLabels(input);
+  if (!why.empty())
+  {
+    vtkErrorMacro(<< why);
+    return nullptr;
+  }
+  return this->OnePart(input, label);
 }
 
 //------------------------------------------------------------------------------

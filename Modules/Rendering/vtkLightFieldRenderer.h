@@ -49,6 +49,7 @@
 #include <vector> // For std::vector
 
 class vtkCamera;
+class vtkDeformationCage;
 class vtkLightField;
 class vtkUnstructuredGrid;
 
@@ -234,6 +235,17 @@ private:
   vtkLightFieldRenderer(const vtkLightFieldRenderer&) = delete;
 
   void operator=(const vtkLightFieldRenderer&) = delete;
+
+  /// The camera that renders the output: Camera at Width x Height, or the pinhole.
+  void GetEyePinhole(double K[9], double R[9], double t[3]);
+
+  /**
+   * The light field to sample under `cage`, whose first box owns `label` (0:
+   * the cage has no box): the input, or when labels are used and the input
+   * has none, its one-part split (OnePart) once the cage is checked to have
+   * one label. nullptr after an error.
+   */
+  vtkLightField* LightFieldOfCage(vtkLightField* input, vtkDeformationCage* cage, int label);
 
   /**
    * `input` with a Label pass that makes its object pixels part `label`

@@ -121,8 +121,10 @@ int TestLightFieldRendererLimits(int, char*[])
 
   renderer->SetCageData(Boxes(1, 30.0));
   renderer->SetSubdivision(lfd::MaximumSubdivision + 1);
-  ExpectRefusal(
-    renderer, "subdivision 17", "Subdivision 17 (render.subdivision) is outside [1, 16]");
+  ExpectRefusal(renderer,
+    "subdivision 17",
+    "Subdivision 17 (render.subdivision) is outside [1, 16] (0 = auto): one box at k 16 already "
+    "makes 4096 sub-boxes, the budget of a cage (lfd::MaximumSubBoxes).");
   renderer->SetSubdivision(-1);
   ExpectRefusal(renderer, "subdivision -1", "Subdivision -1 (render.subdivision) is outside");
   renderer->SetSubdivision(lfd::MaximumSubdivision);

@@ -1,0 +1,252 @@
+// RENDER_VIEW (paper Sec. 6, lfdRenderView.h) on analytic light fields whose
+// parts are spheres: an identity cage renders exactly what the undeformed
+// light field shows; of two moved boxes on a ray the nearer one wins in
+// whichever order the boxes are given; a ray through a twisted box gets two
+// intervals and the first visible one gives the pixel; a ray through 200
+// boxes keeps all 200 segments, sorted by distance.
+#include "lfdRenderView.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+int failures = 0;
+
+void Expect(const std::string& what, double value, double expected, double tolerance = 0.0)
+{
+  const bool ok = std::abs(value - expected) <= tolerance;
+  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (expected " << expected
+            << ")\n";
+  failures += ok ? 0 : 1;
+}
+
+/// A part of the light field: the rays whose line meets the sphere see it.
+struct Part
+{
+  glm::dvec3 Center;
+  double Radius;
+  int Label;
+  glm::dvec3 Color;
+};
+
+/**
+ * A light field of spheres in rest space, looked up like lfd::SamplerLookup:
+ * the line o + s d sees the part it meets first along d, one sample whose
+ * colour varies with where the line passes (so that any change of the looked
+ * up line shows), else background (label 0). Every lookup is counted.
+ */
+struct SphereLookup
+{
+  std::vector<Part> Parts;
+  mutable int Gathers = 0;
+
+  bool Gather(const glm::dvec3& o, const glm::dvec3& d, lfd::RaySamples& out) const
+  {
+    ++this->Gathers;
+    lfd::RaySample& sample = out.Samples[0];
+    out.Count = 1;
+    sample = { glm::dvec3(10.0, 20.0, 30.0), 1.0, 0 };
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Part& part : this->Parts)
+    {
+      const double s = glm::dot(part.Center - o, d) / glm::dot(d, d);
+      const glm::dvec3 offset = o + s * d - part.Center;
+      if (glm::length(offset) < part.Radius && s < nearest)
+      {
+        nearest = s;
+        sample = { part.Color + 50.0 * offset / part.Radius, 1.0, part.Label };
+      }
+    }
+    return true;
+  }
+  bool Widen(const glm::dvec3&, const glm::dvec3&, int, glm::dvec3&) const { return false; }
+  double FocalDepth(const glm::dvec3& o, const glm::dvec3& d) const
+  {
+    return -glm::dot(o, d) / glm::dot(d, d);
+  }
+};
+
+/// The axis-aligned box [low, low + size].
+lfd::Hexahedron Cube(const glm::dvec3& low, double size = 1.0)
+{
+  lfd::Hexahedron box;
+  for (int c = 0; c < 8; ++c)
+  {
+    box.Corners[c] =
+      low + size * glm::dvec3(lfd::HexCorner[c][0], lfd::HexCorner[c][1], lfd::HexCorner[c][2]);
+  }
+  return box;
+}
+
+lfd::RenderViewSettings SettingsFor(const std::vector<lfd::RenderBox>& boxes)
+{
+  lfd::RenderViewSettings settings;
+  settings.Owned = lfd::OwnedLabels(boxes);
+  return settings;
+}
+
+lfd::ViewSample Render(const glm::dvec3& o,
+  const glm::dvec3& d,
+  std::vector<lfd::RenderBox> boxes,
+  const SphereLookup& lookup)
+{
+  lfd::PlaceEye(boxes, o);
+  std::vector<lfd::BoxSegment> segments;
+  return lfd::RenderView(o, d, boxes, lookup, SettingsFor(boxes), segments);
+}
+
+void IdentityCage()
+{
+  // Two parts, each inside its own box of a 2 x 1 x 1 cage at rest, the cage
+  // tessellated 3 x 3 x 3 as the renderer does; a 33 x 33 grid of rays.
+  SphereLookup lookup;
+  lookup.Parts = { { { 0.5, 0.5, 0.5 }, 0.45, 1, { 200, 60, 40 } },
+    { { 1.5, 0.5, 0.5 }, 0.45, 2, { 40, 180, 90 } } };
+  std::vector<lfd::RenderBox> boxes;
+  lfd::Tessellate(lfd::MakeRenderBox(Cube({ 0, 0, 0 }), Cube({ 0, 0, 0 }), 1), 3, boxes);
+  lfd::Tessellate(lfd::MakeRenderBox(Cube({ 1, 0, 0 }), Cube({ 1, 0, 0 }), 2), 3, boxes);
+  const glm::dvec3 eye(0.9, 0.4, -3.0);
+  int rays = 0, different = 0, parts = 0;
+  for (int i = 0; i <= 32; ++i)
+  {
+    for (int j = 0; j <= 32; ++j)
+    {
+      const glm::dvec3 d = glm::dvec3(-0.4 + 0.8 * i / 32.0, -0.25 + 0.5 * j / 32.0, 1.0);
+      const lfd::ViewSample caged = Render(eye, d, boxes, lookup);
+      const lfd::ViewSample undeformed = Render(eye, d, {}, lookup);
+      different += caged.Label != undeformed.Label || caged.Color != undeformed.Color;
+      parts += caged.Label > 0;
+      ++rays;
+    }
+  }
+  Expect("identity cage: rays", rays, 33 * 33);
+  Expect("identity cage: rays seeing a part", parts, 276);
+  Expect(
+    "identity cage: rays whose label or colour differs from the undeformed lookup", different, 0);
+}
+
+void OcclusionOrder()
+{
+  // Parts 1 and 2 rest side by side; both boxes are moved onto the ray
+  // x = y = 0.5, one of them nearer the eye.
+  SphereLookup lookup;
+  lookup.Parts = { { { 0.5, 0.5, 0.5 }, 0.3, 1, { 250, 0, 0 } },
+    { { 3.5, 0.5, 0.5 }, 0.3, 2, { 0, 250, 0 } } };
+  const glm::dvec3 eye(0.5, 0.5, -10.0), d(0.0, 0.0, 1.0);
+  for (int nearer = 1; nearer <= 2; ++nearer)
+  {
+    const lfd::RenderBox one =
+      lfd::MakeRenderBox(Cube({ 0, 0, 0 }), Cube({ 0, 0, nearer == 1 ? 0.0 : 2.0 }), 1);
+    const lfd::RenderBox two =
+      lfd::MakeRenderBox(Cube({ 3, 0, 0 }), Cube({ 0, 0, nearer == 2 ? 0.0 : 2.0 }), 2);
+    for (int order = 0; order < 2; ++order)
+    {
+      const std::string what = "box " + std::to_string(nearer) + " nearer, boxes given " +
+        (order == 0 ? "1, 2" : "2, 1") + ": ";
+      const lfd::ViewSample seen =
+        Render(eye, d, order == 0 ? std::vector{ one, two } : std::vector{ two, one }, lookup);
+      Expect(what + "label", seen.Label, nearer);
+      Expect(what + "red", std::round(seen.Color.r), nearer == 1 ? 250.0 : 0.0);
+      Expect(what + "green", std::round(seen.Color.g), nearer == 1 ? 0.0 : 250.0);
+      Expect(what + "depth", seen.Depth, 10.5);
+    }
+  }
+}
+
+void TwistedBox()
+{
+  // The unit cube with its top face turned by 90 degrees (as in
+  // TestRayWarp): the vertical line through (0.1, 0.1) leaves through the
+  // face u = 0 at height w0 and comes back in at w1 (w - w^2 = 0.1). In rest
+  // space the first interval runs from (0.1, 0.1, 0) to (0, w0, w0), the
+  // second from (0, w1, w1) to (0.1, 0.9, 1).
+  const double w0 = 0.5 * (1 - std::sqrt(0.6)), w1 = 0.5 * (1 + std::sqrt(0.6));
+  const lfd::Hexahedron rest = Cube({ 0, 0, 0 });
+  lfd::Hexahedron twisted = rest;
+  for (int i = 4; i < 8; ++i)
+  {
+    const glm::dvec3 c = rest.Corners[i] - glm::dvec3(0.5, 0.5, 0);
+    twisted.Corners[i] = glm::dvec3(0.5 - c.y, 0.5 + c.x, c.z);
+  }
+  std::vector<lfd::RenderBox> boxes{ lfd::MakeRenderBox(rest, twisted, 1) };
+  const glm::dvec3 eye(0.1, 0.1, -1.0), d(0.0, 0.0, 1.0);
+  lfd::PlaceEye(boxes, eye);
+  std::vector<lfd::BoxSegment> segments;
+  lfd::CollectSegments(boxes, eye, d, segments);
+  Expect("twisted box: intervals", static_cast<double>(segments.size()), 2);
+  if (segments.size() != 2)
+  {
+    return;
+  }
+  Expect("  first exit", segments[0].Segment.TExit, 1 + w0, 1e-12);
+  Expect("  second entry", segments[1].Segment.TEnter, 1 + w1, 1e-12);
+
+  // A part on the second interval's warped ray only: the pixel is the
+  // second interval; add one on the first: the first, nearer, wins.
+  SphereLookup lookup;
+  lookup.Parts = { { { 0.05, 0.5 * (w1 + 0.9), 0.5 * (w1 + 1) }, 0.05, 1, { 0, 0, 200 } } };
+  lfd::ViewSample seen = lfd::RenderView(eye, d, boxes, lookup, SettingsFor(boxes), segments);
+  Expect("  part behind the fold: label", seen.Label, 1);
+  Expect("  part behind the fold: blue", std::round(seen.Color.b), 200);
+  Expect("  part behind the fold: depth", seen.Depth, 1.5 + 0.5 * w1, 1e-12);
+  Expect("  part behind the fold: lookups (2 intervals)", lookup.Gathers, 2);
+  lookup.Parts.push_back({ { 0.05, 0.5 * (0.1 + w0), 0.5 * w0 }, 0.05, 1, { 200, 200, 0 } });
+  seen = lfd::RenderView(eye, d, boxes, lookup, SettingsFor(boxes), segments);
+  Expect("  parts on both intervals: red", std::round(seen.Color.r), 200);
+  Expect("  parts on both intervals: depth", seen.Depth, 1 + 0.5 * w0, 1e-12);
+}
+
+void TwoHundredBoxes()
+{
+  // Box i rests at x = 3i and is moved onto the ray, at z in [2i, 2i + 1];
+  // its part (label i + 1) sits at its rest centre. The boxes are given far
+  // to near, so a cap that kept the first segments in box order would lose
+  // the near ones.
+  const int count = 200;
+  SphereLookup lookup;
+  std::vector<lfd::RenderBox> boxes;
+  for (int b = 0; b < count; ++b)
+  {
+    const int i = count - 1 - b;
+    boxes.push_back(lfd::MakeRenderBox(Cube({ 3.0 * i, 0, 0 }), Cube({ 0, 0, 2.0 * i }), i + 1));
+    lookup.Parts.push_back({ { 3.0 * i + 0.5, 0.5, 0.5 }, 0.3, i + 1, { 100, 100, 100 } });
+  }
+  const glm::dvec3 eye(0.5, 0.5, -1.0), d(0.0, 0.0, 1.0);
+  lfd::PlaceEye(boxes, eye);
+  std::vector<lfd::BoxSegment> segments;
+  lfd::CollectSegments(boxes, eye, d, segments);
+  Expect("200 boxes: segments", static_cast<double>(segments.size()), count);
+  int misplaced = 0;
+  for (std::size_t k = 0; k < segments.size(); ++k)
+  {
+    const lfd::BoxSegment& s = segments[k];
+    misplaced += s.Box != count - 1 - static_cast<int>(k) || s.Segment.TEnter != 2.0 * k + 1 ||
+      s.Segment.TExit != 2.0 * k + 2;
+  }
+  Expect("  segments out of distance order or off their box", misplaced, 0);
+
+  lfd::ViewSample seen = lfd::RenderView(eye, d, boxes, lookup, SettingsFor(boxes), segments);
+  Expect("  every part visible: label of the nearest", seen.Label, 1);
+  Expect("  every part visible: depth", seen.Depth, 1.5);
+  Expect("  every part visible: lookups", lookup.Gathers, 1);
+  lookup.Parts.erase(lookup.Parts.begin() + 1, lookup.Parts.end());
+  lookup.Gathers = 0;
+  seen = lfd::RenderView(eye, d, boxes, lookup, SettingsFor(boxes), segments);
+  Expect("  only the farthest part: label", seen.Label, 200);
+  Expect("  only the farthest part: depth", seen.Depth, 399.5);
+  Expect("  only the farthest part: lookups", lookup.Gathers, 200);
+}
+}
+
+int TestRenderView(int, char*[])
+{
+  IdentityCage();
+  OcclusionOrder();
+  TwistedBox();
+  TwoHundredBoxes();
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

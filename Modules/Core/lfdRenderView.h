@@ -1,0 +1,436 @@
+/**
+ * @file   lfdRenderView.h
+ * @brief  RENDER_VIEW of Chen, Ofek, Shum and Levoy 2005 (Sec. 6): one view ray through a cage.
+ *
+ * A view ray o + t d in deformed space crosses the deformed boxes of the
+ * cage. RenderView() collects every interval of the ray inside a box
+ * (lfdRayWarp.h, every interval of a twisted box), sorts them by distance
+ * along the ray, and walks them front to back: each interval is warped back
+ * to rest space (the straight warped ray through the rest images of its
+ * entry and exit points) and looked up in the light field; the first
+ * interval whose looked-up label is its box's label gives the ray its colour
+ * (DESIGN.md section 4.3). That is how occlusion between parts comes out
+ * right without any geometry. A box that did not move warps a ray onto
+ * itself: its intervals are looked up along the view ray itself, once per
+ * ray, so a cage at rest renders exactly the undeformed light field.
+ *
+ * When no interval matches, a moved box may have uncovered a region that
+ * the nearby cameras saw hidden behind another part: the widened search of
+ * paper Sec. 8 looks in further cameras, front to back. A ray that no box
+ * claims sees the undeformed light field, but only the parts that no box
+ * owns: a part that has a box is wherever its box put it.
+ *
+ * The light field is reached through a lookup object (the renderer passes a
+ * SamplerLookup over lfd::LightFieldSampler; tests pass analytic ones) with
+ *
+ *   bool Gather(const glm::dvec3& o, const glm::dvec3& d, RaySamples& out) const;
+ *     the weighted samples of the rest-space ray o + s d (false: none);
+ *   bool Widen(const glm::dvec3& a, const glm::dvec3& b, int label, glm::dvec3& color) const;
+ *     the widened search along the rest-space segment [a, b] for `label`;
+ *   double FocalDepth(const glm::dvec3& o, const glm::dvec3& d) const;
+ *     the depth reported for a ray that no box claims.
+ *
+ * Segments have no fixed cap: they go to a caller-owned vector that keeps
+ * its capacity from ray to ray (one per thread), so a ray allocates nothing
+ * once the vector has grown to the deepest ray seen.
+ *
+ * Plain C++17 + GLM, no VTK.
+ */
+#ifndef lfdRenderView_h
+#define lfdRenderView_h
+
+#include "lfdCylinderSampling.h"
+#include "lfdRayWarp.h"
+#include "lfdTessellation.h"
+#include "lfdTrilinear.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace lfd
+{
+
+/// A box of the cage (or a sub-box of its tessellation) as RENDER_VIEW uses it.
+struct RenderBox
+{
+  Hexahedron Rest;
+  Hexahedron Deformed;
+  AxisBounds Bounds{ glm::dvec3(0.0), glm::dvec3(0.0) }; ///< of the deformed box
+  int Label = 0;                                         ///< the part it owns, 1..255
+  /// Deformed differs from rest (by more than 1e-9 of the box size): its
+  /// warp is not the identity, and it may uncover regions (Sec. 8).
+  bool Moved = false;
+  /// The eye lies outside the deformed box (see PlaceEye).
+  bool EyeOutside = false;
+};
+
+/// The RenderBox of a box with corners `rest` and `deformed` owning `label`.
+inline RenderBox MakeRenderBox(const Hexahedron& rest, const Hexahedron& deformed, int label)
+{
+  RenderBox box;
+  box.Rest = rest;
+  box.Deformed = deformed;
+  box.Bounds = BoxBounds(deformed);
+  box.Label = label;
+  const double size = BoxSize(rest);
+  for (int c = 0; c < 8; ++c)
+  {
+    box.Moved = box.Moved || glm::distance(rest.Corners[c], deformed.Corners[c]) > 1e-9 * size;
+  }
+  return box;
+}
+
+/**
+ * Appends the k^3 sub-boxes of `box` (lfdTessellation.h) to `out`. They
+ * keep the box's label and its Moved flag: a part moves or stays as a whole.
+ */
+inline void Tessellate(const RenderBox& box, int k, std::vector<RenderBox>& out)
+{
+  ForEachSubBox(k,
+    [&](const glm::ivec3& cell)
+    {
+      RenderBox sub;
+      sub.Rest = SubBox(box.Rest, k, cell);
+      sub.Deformed = SubBox(box.Deformed, k, cell);
+      sub.Bounds = BoxBounds(sub.Deformed);
+      sub.Label = box.Label;
+      sub.Moved = box.Moved;
+      out.push_back(sub);
+    });
+}
+
+/// Marks the boxes that do not contain the eye, so that their rays skip
+/// the inside test of the stretch before the first face (WarpRayThroughBox).
+inline void PlaceEye(std::vector<RenderBox>& boxes, const glm::dvec3& eye)
+{
+  for (RenderBox& box : boxes)
+  {
+    glm::dvec3 uvw(0.5);
+    const bool inBounds = glm::all(glm::greaterThanEqual(eye, box.Bounds.Min)) &&
+      glm::all(glm::lessThanEqual(eye, box.Bounds.Max));
+    box.EyeOutside = !inBounds || !Contains(box.Deformed, eye, uvw);
+  }
+}
+
+/// Slab test of the half-line o + t d (t >= 0) against axis-aligned bounds.
+inline bool RayHitsBounds(const glm::dvec3& o, const glm::dvec3& d, const AxisBounds& bounds)
+{
+  double t0 = 0.0;
+  double t1 = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3; ++a)
+  {
+    if (d[a] == 0.0)
+    {
+      if (o[a] < bounds.Min[a] || o[a] > bounds.Max[a])
+      {
+        return false;
+      }
+      continue;
+    }
+    double near = (bounds.Min[a] - o[a]) / d[a];
+    double far = (bounds.Max[a] - o[a]) / d[a];
+    if (near > far)
+    {
+      std::swap(near, far);
+    }
+    t0 = std::max(t0, near);
+    t1 = std::min(t1, far);
+    if (t0 > t1)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// An interval of a view ray inside box `Box`, and the label the light
+/// field showed along its warped ray (-1: not looked up, or nothing seen).
+struct BoxSegment
+{
+  WarpedSegment Segment;
+  int Box = 0;
+  int Seen = -1;
+};
+
+/**
+ * Every interval of the ray o + t d (t >= 0) inside the deformed boxes,
+ * into `segments` (cleared first), sorted by distance: by entry parameter,
+ * then by box index, so that the order does not depend on the sort.
+ */
+inline void CollectSegments(const std::vector<RenderBox>& boxes,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  std::vector<BoxSegment>& segments)
+{
+  segments.clear();
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+  {
+    const RenderBox& box = boxes[b];
+    if (!RayHitsBounds(o, d, box.Bounds))
+    {
+      continue;
+    }
+    WarpedSegment found[MaxWarpedSegments];
+    const int n = WarpRayThroughBox(
+      box.Rest, box.Deformed, o, d, 0.0, found, MaxWarpedSegments, box.EyeOutside);
+    for (int k = 0; k < n; ++k)
+    {
+      segments.push_back({ found[k], static_cast<int>(b), -1 });
+    }
+  }
+  std::sort(segments.begin(),
+    segments.end(),
+    [](const BoxSegment& a, const BoxSegment& b)
+    {
+      return a.Segment.TEnter < b.Segment.TEnter ||
+        (a.Segment.TEnter == b.Segment.TEnter && a.Box < b.Box);
+    });
+}
+
+/// What a view ray sees.
+struct ViewSample
+{
+  int Label = -1; ///< the part (0: background or a part without a box; -1: no camera sees the ray)
+  glm::dvec3 Color{ 0.0 }; ///< meaningful when Label >= 0
+  /// The ray parameter t of the seen point, approximate: the middle of the
+  /// accepted interval, or the lookup's FocalDepth when no box claims the
+  /// ray; 0 for a ray that shows background through a fully owned light field.
+  double Depth = 0.0;
+};
+
+/// How RenderView treats the light field's parts.
+struct RenderViewSettings
+{
+  /// The light field has labels. Without them no interval can match its
+  /// box, and every ray sees the light field as it is (label 0).
+  bool UseLabels = true;
+  /// Try the widened search (paper Sec. 8) before giving up on the boxes.
+  bool WidenedSearch = false;
+  /// Every part of the light field has a box: a ray that no box claims is
+  /// background (label 0), without a lookup.
+  bool AllOwned = false;
+  /// The labels that have a box (see OwnedLabels).
+  std::array<bool, 256> Owned{};
+};
+
+/// The labels of `boxes`, as RenderViewSettings::Owned.
+inline std::array<bool, 256> OwnedLabels(const std::vector<RenderBox>& boxes)
+{
+  std::array<bool, 256> owned{};
+  for (const RenderBox& box : boxes)
+  {
+    owned[box.Label] = true;
+  }
+  return owned;
+}
+
+/// The Lookup of RENDER_VIEW over a LightFieldSampler; the depth of a ray
+/// that no box claims is its focal point's distance along `Forward` (the
+/// camera's optical axis: camera z for rays whose camera z component is 1).
+struct SamplerLookup
+{
+  const LightFieldSampler& Sampler;
+  int WidenReach; ///< views tried on each side by the widened search
+  glm::dvec3 Forward;
+
+  /// Points tried along a segment by the widened search.
+  static constexpr int WidenSteps = 8;
+
+  bool Gather(const glm::dvec3& o, const glm::dvec3& d, RaySamples& out) const
+  {
+    return this->Sampler.Gather(o, d, out);
+  }
+  bool Widen(const glm::dvec3& a, const glm::dvec3& b, int label, glm::dvec3& color) const
+  {
+    return this->Sampler.Widen(a, b, label, WidenSteps, this->WidenReach, color);
+  }
+  double FocalDepth(const glm::dvec3& o, const glm::dvec3& d) const
+  {
+    return glm::dot(
+      FocalPoint(this->Sampler.Layout->Cyl, o, d, this->Sampler.FocalDistance) - o, this->Forward);
+  }
+};
+
+namespace detail
+{
+/**
+ * The light field's samples along the view ray itself, gathered at most once
+ * per ray: a box that did not move warps the ray onto itself, so every
+ * interval in such a box, and the final undeformed lookup, see exactly
+ * these samples.
+ */
+template<typename Lookup>
+struct ViewRayLook
+{
+  const Lookup& Light;
+  const glm::dvec3& O;
+  const glm::dvec3& D;
+  std::optional<RaySamples> Samples; // constructed by the first lookup only
+  bool Found = false;
+  int Seen = -2; // -2: not voted yet
+
+  /// Looks the view ray up once; false when it has no sample.
+  bool Gather()
+  {
+    if (!this->Samples)
+    {
+      this->Samples.emplace();
+      this->Found = this->Light.Gather(this->O, this->D, *this->Samples);
+    }
+    return this->Found;
+  }
+
+  /// The label voted along the view ray (-1: no sample).
+  int Look()
+  {
+    if (this->Seen == -2)
+    {
+      this->Seen = this->Gather() ? VoteLabel(*this->Samples) : -1;
+    }
+    return this->Seen;
+  }
+};
+
+/// The first interval, front to back, whose warped ray shows its box's
+/// label (Sec. 6); records what each interval showed in BoxSegment::Seen.
+template<typename Lookup>
+bool ShadeSegments(const std::vector<RenderBox>& boxes,
+  std::vector<BoxSegment>& segments,
+  const Lookup& lookup,
+  ViewRayLook<Lookup>& view,
+  ViewSample& result)
+{
+  RaySamples samples;
+  for (BoxSegment& entry : segments)
+  {
+    const RenderBox& box = boxes[entry.Box];
+    const WarpedSegment& segment = entry.Segment;
+    const RaySamples* seenSamples = &samples;
+    if (!box.Moved)
+    {
+      entry.Seen = view.Look();
+      seenSamples = &*view.Samples;
+    }
+    else
+    {
+      const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
+      if (glm::dot(direction, direction) <= 0.0 ||
+        !lookup.Gather(segment.RestEnter, direction, samples))
+      {
+        continue;
+      }
+      entry.Seen = VoteLabel(samples);
+    }
+    if (entry.Seen == box.Label)
+    {
+      BlendLabel(*seenSamples, box.Label, result.Color);
+      result.Label = box.Label;
+      result.Depth = 0.5 * (segment.TEnter + segment.TExit);
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Sec. 8: where the nearby cameras saw another part in a moved box, that
+/// part may have hidden this one before the deformation uncovered it: look
+/// in further cameras, front to back.
+template<typename Lookup>
+bool WidenSegments(const std::vector<RenderBox>& boxes,
+  const std::vector<BoxSegment>& segments,
+  const Lookup& lookup,
+  ViewSample& result)
+{
+  for (const BoxSegment& entry : segments)
+  {
+    const RenderBox& box = boxes[entry.Box];
+    const WarpedSegment& segment = entry.Segment;
+    if (box.Moved && entry.Seen > 0 &&
+      lookup.Widen(segment.RestEnter, segment.RestExit, box.Label, result.Color))
+    {
+      result.Label = box.Label;
+      result.Depth = 0.5 * (segment.TEnter + segment.TExit);
+      return true;
+    }
+  }
+  return false;
+}
+
+/// The undeformed light field along a ray that no box claims: with labels,
+/// the heaviest label that no box owns (background included).
+template<typename Lookup>
+ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& settings)
+{
+  ViewSample result;
+  if (!view.Gather())
+  {
+    return result;
+  }
+  result.Depth = view.Light.FocalDepth(view.O, view.D);
+  RaySamples& samples = *view.Samples;
+  if (!settings.UseLabels)
+  {
+    BlendLabel(samples, 0, result.Color);
+    result.Label = 0;
+    return result;
+  }
+  for (int i = 0; i < samples.Count; ++i)
+  {
+    if (settings.Owned[samples.Samples[i].Label])
+    {
+      samples.Samples[i].Weight = 0.0;
+    }
+  }
+  result.Label = VoteLabel(samples);
+  if (result.Label >= 0)
+  {
+    BlendLabel(samples, result.Label, result.Color);
+  }
+  return result;
+}
+} // namespace detail
+
+/**
+ * RENDER_VIEW (Sec. 6) for the view ray o + t d, t >= 0, through `boxes`
+ * (rest and deformed corners, PlaceEye() called for this eye). `segments`
+ * is scratch space whose capacity is reused from ray to ray; on return it
+ * holds the ray's intervals, sorted by distance.
+ */
+template<typename Lookup>
+ViewSample RenderView(const glm::dvec3& o,
+  const glm::dvec3& d,
+  const std::vector<RenderBox>& boxes,
+  const Lookup& lookup,
+  const RenderViewSettings& settings,
+  std::vector<BoxSegment>& segments)
+{
+  detail::ViewRayLook<Lookup> view{ lookup, o, d };
+  segments.clear();
+  if (settings.UseLabels && !boxes.empty())
+  {
+    ViewSample result;
+    CollectSegments(boxes, o, d, segments);
+    // (Most rays of a frame miss every box: they skip the segment walk.)
+    if (!segments.empty() &&
+      (detail::ShadeSegments(boxes, segments, lookup, view, result) ||
+        (settings.WidenedSearch && detail::WidenSegments(boxes, segments, lookup, result))))
+    {
+      return result;
+    }
+    if (settings.AllOwned)
+    {
+      result.Label = 0;
+      return result;
+    }
+  }
+  return detail::LookUndeformed(view, settings);
+}
+
+} // namespace lfd
+
+#endif
