@@ -9,7 +9,9 @@
  * rows around that height are chosen (four cameras, two for a single ring);
  * the ray meets the focal plane at a point that is projected into each
  * chosen camera with its *real* calibration and bilinearly interpolated.
- * That is 16 weighted rays, quadrilinear weights.
+ * That is 16 weighted rays, quadrilinear weights. The real calibration
+ * includes a view's lens distortion (PinholeCamera::Project applies it): a
+ * distorted photograph is sampled at the distorted pixel that saw the point.
  *
  * Labels are categorical and never averaged: the label of a ray is the
  * weighted vote of its samples and the colour is the weighted mean of the

@@ -6,16 +6,23 @@
  * x grows to the right and y downwards (OpenCV, Middlebury). The camera frame
  * has x right, y down and z forward; the camera centre is `C = -R^T t`.
  *
+ * A camera may carry lens distortion (lfdLensDistortion.h, OpenCV's k1, k2,
+ * p1, p2, k3): Project() applies it between the camera frame and K, the
+ * pixel-to-ray direction (Unproject(), RayDirection()) removes it. With all
+ * coefficients 0 both are the plain pinhole, without the polynomial.
+ *
  * Plain C++17 + GLM: no VTK here, so that the renderers, the tests and any
  * later GPU shader share one definition (DESIGN.md section 3).
  */
 #ifndef lfdPinholeCamera_h
 #define lfdPinholeCamera_h
 
+#include "lfdLensDistortion.h"
 #include "lfdLimits.h"
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -27,6 +34,7 @@ struct PinholeCamera
   glm::dmat3 K{ 1.0 }; // intrinsics
   glm::dmat3 R{ 1.0 }; // world -> camera rotation
   glm::dvec3 t{ 0.0 }; // world -> camera translation
+  LensDistortion Lens; // none by default
 
   /// Builds a camera from row-major 3x3 arrays (the file and VTK API order).
   static PinholeCamera FromRowMajor(const double k[9], const double r[9], const double tr[3])
@@ -73,42 +81,77 @@ struct PinholeCamera
   glm::dvec3 Up() const { return -glm::dvec3(R[0][1], R[1][1], R[2][1]); }
 
   /**
-   * Projects a world point. Returns false when the point is not in front of
-   * the camera (then `pixel` is left untouched).
+   * Projects a world point, through the lens distortion when there is one.
+   * Returns false when the point is not in front of the camera (then `pixel`
+   * is left untouched).
    */
   bool Project(const glm::dvec3& X, glm::dvec2& pixel) const
   {
-    const glm::dvec3 x = this->K * (this->R * X + this->t);
-    if (!(x.z > 0.0))
+    const glm::dvec3 c = this->R * X + this->t;
+    if (!(c.z > 0.0))
     {
       return false;
     }
-    pixel = glm::dvec2(x.x / x.z, x.y / x.z);
+    if (!this->Lens.Active)
+    {
+      const glm::dvec3 x = this->K * c;
+      pixel = glm::dvec2(x.x / x.z, x.y / x.z);
+      return true;
+    }
+    // K's last row is (0, 0, 1) (CheckPinhole): the distorted normalised
+    // point maps to the pixel without a division.
+    const glm::dvec3 x =
+      this->K * glm::dvec3(this->Lens.Apply(glm::dvec2(c.x / c.z, c.y / c.z)), 1.0);
+    pixel = glm::dvec2(x.x, x.y);
     return true;
   }
 
   /**
    * Matrix `R^T K^-1` that maps a homogeneous pixel `(x, y, 1)` to a world
-   * direction (not normalised). Renderers compute it once per frame.
+   * direction (not normalised) of an undistorted camera. Renderers compute it
+   * once per frame for their (ideal) view camera.
    */
   glm::dmat3 PixelToDirection() const { return glm::transpose(this->R) * glm::inverse(this->K); }
 
   /**
    * Back-projection of pixels with their depth (the distance along the
    * optical axis, camera z, as the Depth pass stores it): the world point
-   * `C + depth R^T K^-1 (x, y, 1)`. Built once per camera (it holds R^T K^-1),
-   * applied per pixel.
+   * `C + depth R^T (x', y', 1)` where (x', y') are the pixel's undistorted
+   * normalised coordinates (`K^-1 (x, y, 1)` without distortion). Built once
+   * per camera, applied per pixel.
    */
   struct Unprojection
   {
     glm::dvec3 Center;
-    glm::dmat3 PixelToDirection;
+    glm::dmat3 PixelToDirection; // R^T K^-1
+    glm::dmat3 InverseK;
+    glm::dmat3 RotationT;
+    LensDistortion Lens;
+
+    /// World direction (camera z component 1, not normalised) of a pixel's ray.
+    glm::dvec3 Direction(const glm::dvec2& pixel) const
+    {
+      if (!this->Lens.Active)
+      {
+        return this->PixelToDirection * glm::dvec3(pixel, 1.0);
+      }
+      const glm::dvec3 distorted = this->InverseK * glm::dvec3(pixel, 1.0);
+      return this->RotationT * glm::dvec3(this->Lens.Remove(glm::dvec2(distorted)), 1.0);
+    }
+
     glm::dvec3 operator()(const glm::dvec2& pixel, double depth) const
     {
-      return this->Center + depth * (this->PixelToDirection * glm::dvec3(pixel, 1.0));
+      return this->Center + depth * this->Direction(pixel);
     }
   };
-  Unprojection GetUnprojection() const { return { this->Center(), this->PixelToDirection() }; }
+  Unprojection GetUnprojection() const
+  {
+    return { this->Center(),
+      this->PixelToDirection(),
+      glm::inverse(this->K),
+      glm::transpose(this->R),
+      this->Lens };
+  }
 
   /// The world point seen at `pixel` at `depth` (camera z); see Unprojection.
   glm::dvec3 Unproject(const glm::dvec2& pixel, double depth) const
@@ -119,21 +162,46 @@ struct PinholeCamera
   /// Unit world-space direction of the ray through a pixel.
   glm::dvec3 RayDirection(const glm::dvec2& pixel) const
   {
-    return glm::normalize(this->PixelToDirection() * glm::dvec3(pixel, 1.0));
+    return glm::normalize(this->GetUnprojection().Direction(pixel));
   }
 };
+
+/**
+ * Largest distance of an image corner (pixel centres at integers, so the
+ * corners at -0.5 and size - 0.5) from the principal point, in normalised
+ * coordinates K^-1 (x, y, 1): the extent of a `width` x `height` image that a
+ * lens distortion must keep one-to-one. K is row-major and upper triangular.
+ */
+inline double NormalisedImageRadius(const double K[9], int width, int height)
+{
+  double radius = 0.0;
+  for (int corner = 0; corner < 4; ++corner)
+  {
+    const double u = (corner & 1) ? width - 0.5 : -0.5;
+    const double v = (corner & 2) ? height - 0.5 : -0.5;
+    const double y = (v - K[5]) / K[4];
+    const double x = (u - K[2] - K[1] * y) / K[0];
+    radius = std::max(radius, std::sqrt(x * x + y * y));
+  }
+  return radius;
+}
 
 /**
  * The one validation of a calibrated camera, shared by every reader,
  * importer and writer: R a rotation (R R^T = I to 1e-3, det R = +1), K upper
  * triangular with K[8] = 1, finite positive focal lengths fx, fy, finite
- * skew and principal point, t finite with |t| < MaximumTranslation. Returns
- * false with the offending matrix ("K", "R" or "t") in `field` and the
- * problem in words.
+ * skew and principal point, t finite with |t| < MaximumTranslation, and the
+ * lens distortion (k1, k2, p1, p2, k3; null = none) finite and monotonic
+ * over the `width` x `height` image (lfd::CheckLensMonotonic). Returns false
+ * with the offending field ("K", "R", "t" or "distortion") in `field` and
+ * the problem in words.
  */
 inline bool CheckPinhole(const double K[9],
   const double R[9],
   const double t[3],
+  const double distortion[5],
+  int width,
+  int height,
   std::string& field,
   std::string& problem)
 {
@@ -186,6 +254,26 @@ inline bool CheckPinhole(const double K[9],
     field = "t";
     problem = "|t| must be finite and below 1e6 world units";
     return false;
+  }
+  if (distortion)
+  {
+    field = "distortion";
+    for (int i = 0; i < 5; ++i)
+    {
+      if (!std::isfinite(distortion[i]))
+      {
+        problem = "has a non-finite coefficient (expected [k1, k2, p1, p2, k3])";
+        return false;
+      }
+    }
+    const char* fold = CheckLensMonotonic(
+      LensDistortion::FromArray(distortion), NormalisedImageRadius(K, width, height));
+    if (fold)
+    {
+      problem = fold;
+      return false;
+    }
+    field.clear();
   }
   return true;
 }

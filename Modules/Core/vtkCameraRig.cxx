@@ -170,7 +170,15 @@ int vtkCameraRig::FindInvalidView(std::string& field, std::string& problem) cons
     this->GetIntrinsics(i, values.data());
     this->GetRotation(i, values.data() + 9);
     this->GetTranslation(i, values.data() + 18);
-    if (!lfd::CheckPinhole(values.data(), values.data() + 9, values.data() + 18, field, problem))
+    const lfd::PinholeCamera& camera = this->GetCamera(i);
+    if (!lfd::CheckPinhole(values.data(),
+          values.data() + 9,
+          values.data() + 18,
+          camera.Lens.Coefficients,
+          this->ImageSize[0],
+          this->ImageSize[1],
+          field,
+          problem))
     {
       return i;
     }
@@ -184,6 +192,34 @@ int vtkCameraRig::FindInvalidView(std::string& field, std::string& problem) cons
     }
   }
   return -1;
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::SetDistortion(int i, const double coefficients[5])
+{
+  if (i < 0 || i >= this->GetNumberOfViews())
+  {
+    vtkErrorMacro(
+      "SetDistortion: view " << i << " out of range [0, " << this->GetNumberOfViews() << ").");
+    return;
+  }
+  this->Internal->Cameras[i].Lens = lfd::LensDistortion::FromArray(coefficients);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::GetDistortion(int i, double coefficients[5]) const
+{
+  const lfd::LensDistortion& lens = this->GetCamera(i).Lens;
+  std::copy_n(lens.Coefficients, 5, coefficients);
+}
+
+//------------------------------------------------------------------------------
+bool vtkCameraRig::HasDistortion() const
+{
+  return std::any_of(this->Internal->Cameras.begin(),
+    this->Internal->Cameras.end(),
+    [](const lfd::PinholeCamera& camera) { return camera.Lens.Active; });
 }
 
 //------------------------------------------------------------------------------
@@ -695,6 +731,7 @@ void vtkCameraRig::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
   os << indent << "DuplicateTolerance: " << this->DuplicateTolerance << "\n";
   os << indent << "RowTolerance: " << this->RowTolerance << "\n";
+  os << indent << "Distortion: " << (this->HasDistortion() ? "yes" : "none") << "\n";
   os << indent << "Cylinder fitted: " << (this->Internal->Fitted ? "yes" : "no") << "\n";
   if (this->Internal->Fitted)
   {

@@ -88,6 +88,19 @@ public:
 
   ///@{
   /**
+   * Per-view lens distortion, OpenCV's (k1, k2, p1, p2, k3)
+   * (lfdLensDistortion.h); none (all 0) by default and after SetView().
+   * Project() and every pixel-to-ray conversion of the kernels apply it;
+   * ApplyToCamera() cannot (a vtkCamera is an ideal pinhole).
+   * HasDistortion() is true when any view has a non-zero coefficient.
+   */
+  void SetDistortion(int i, const double coefficients[5]);
+  void GetDistortion(int i, double coefficients[5]) const;
+  bool HasDistortion() const;
+  ///@}
+
+  ///@{
+  /**
    * Optional per-view name (e.g. the image file a view was imported from).
    */
   void SetViewName(int i, const char* name);
@@ -252,9 +265,10 @@ public:
 
   /**
    * The rig's validation, shared by every reader, importer and writer: each
-   * view passes lfd::CheckPinhole() and no two views have the same K, R and
-   * t. Returns -1 when the rig is valid; otherwise the first invalid view,
-   * with `field` ("K", "R", "t", or "" for a repeated view) and `problem`.
+   * view passes lfd::CheckPinhole() (its distortion checked over the rig's
+   * ImageSize) and no two views have the same K, R and t. Returns -1 when
+   * the rig is valid; otherwise the first invalid view, with `field` ("K",
+   * "R", "t", "distortion", or "" for a repeated view) and `problem`.
    */
   int FindInvalidView(std::string& field, std::string& problem) const;
 #endif

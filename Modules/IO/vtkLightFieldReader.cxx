@@ -40,6 +40,7 @@ struct ManifestView
   std::array<double, 9> K;
   std::array<double, 9> R;
   std::array<double, 3> T;
+  std::array<double, 5> Distortion{}; // k1, k2, p1, p2, k3; none = 0
 };
 
 // Everything lightfield.json says, validated; image paths are resolved.
@@ -93,7 +94,7 @@ std::array<double, N> GetArray(const Json& object, const std::string& parent, co
 }
 
 // The views of a rig (lightfield.json "views" or "projectors.views"):
-// a non-empty array of {name, K, R, t}.
+// a non-empty array of {name, K, R, t, distortion (optional)}.
 std::vector<ManifestView> ParseViews(const Json& views, const std::string& key)
 {
   if (!views.is_array() || views.empty())
@@ -112,6 +113,10 @@ std::vector<ManifestView> ParseViews(const Json& views, const std::string& key)
     view.K = GetArray<9>(views[i], path, "K");
     view.R = GetArray<9>(views[i], path, "R");
     view.T = GetArray<3>(views[i], path, "t");
+    if (lfd::io::FindMember(views[i], path, "distortion"))
+    {
+      view.Distortion = GetArray<5>(views[i], path, "distortion");
+    }
     parsed.push_back(view);
   }
   return parsed;
@@ -126,6 +131,7 @@ void FillRig(const std::vector<ManifestView>& views, int width, int height, vtkC
     const ManifestView& view = views[i];
     const int index = static_cast<int>(i);
     rig->SetView(index, view.K.data(), view.R.data(), view.T.data());
+    rig->SetDistortion(index, view.Distortion.data());
     if (!view.Name.empty())
     {
       rig->SetViewName(index, view.Name.c_str());
@@ -134,11 +140,15 @@ void FillRig(const std::vector<ManifestView>& views, int width, int height, vtkC
 }
 
 // The rig's one validation (vtkCameraRig::FindInvalidView), reported on the
-// field of the view that fails it.
-void ValidateViews(const std::vector<ManifestView>& views, const std::string& key)
+// field of the view that fails it; the distortion is checked over the
+// `width` x `height` image.
+void ValidateViews(const std::vector<ManifestView>& views,
+  int width,
+  int height,
+  const std::string& key)
 {
   vtkNew<vtkCameraRig> rig;
-  FillRig(views, 1, 1, rig);
+  FillRig(views, width, height, rig);
   std::string field, problem;
   const int invalid = rig->FindInvalidView(field, problem);
   if (invalid >= 0)
@@ -167,7 +177,8 @@ void ParseProjectors(const Json& document, Manifest& manifest)
     lfd::io::RequireMember(*projectors, "projectors", "height"), "projectors.height", 1, 1 << 20));
   manifest.Projectors =
     ParseViews(lfd::io::RequireMember(*projectors, "projectors", "views"), "projectors.views");
-  ValidateViews(manifest.Projectors, "projectors.views");
+  ValidateViews(
+    manifest.Projectors, manifest.ProjectorWidth, manifest.ProjectorHeight, "projectors.views");
   if (const Json* masks = lfd::io::FindMember(*projectors, "projectors", "masks"))
   {
     if (!masks->is_array() || masks->size() != manifest.Projectors.size())
@@ -209,7 +220,7 @@ void ParseManifest(const Json& document, Manifest& manifest)
     lfd::io::GetInteger(lfd::io::RequireMember(document, "", "height"), "height", 1, 1 << 20));
 
   manifest.Views = ParseViews(lfd::io::RequireMember(document, "", "views"), "views");
-  ValidateViews(manifest.Views, "views");
+  ValidateViews(manifest.Views, manifest.Width, manifest.Height, "views");
 
   const Json& passes = lfd::io::RequireMember(document, "", "passes");
   if (!passes.is_object())

@@ -137,6 +137,223 @@ bool AllFinite(vtkDataArray* array)
   }
   return true;
 }
+
+// The scene's "format" and "version".
+void CheckSceneHeader(const Json& document)
+{
+  const std::string format =
+    lfd::io::GetString(lfd::io::RequireMember(document, "", "format"), "format");
+  if (format != "lfd-scene")
+  {
+    throw FieldError("format", "expected \"lfd-scene\", found \"" + format + "\"");
+  }
+  const long long version =
+    lfd::io::GetInteger(lfd::io::RequireMember(document, "", "version"), "version", 0, VTK_INT_MAX);
+  if (version != SceneVersion)
+  {
+    throw FieldError("version",
+      "unsupported version " + std::to_string(version) + " (this reader reads version " +
+        std::to_string(SceneVersion) + ")");
+  }
+}
+
+// The "cage": rest points, optional deformed points, boxes. Returns the
+// number of cage points.
+size_t ParseCage(const Json& cageValue, vtkUnstructuredGrid* cage)
+{
+  const std::vector<double> rest = lfd::io::GetPoints(
+    lfd::io::RequireMember(cageValue, "cage", "rest_points"), "cage.rest_points");
+  const size_t cagePoints = rest.size() / 3;
+  std::vector<double> deformed = rest;
+  if (const Json* points = lfd::io::FindMember(cageValue, "cage", "points"))
+  {
+    deformed = lfd::io::GetPoints(*points, "cage.points");
+    if (deformed.size() != rest.size())
+    {
+      throw FieldError("cage.points",
+        "has " + std::to_string(deformed.size() / 3) + " points, cage.rest_points has " +
+          std::to_string(cagePoints));
+    }
+  }
+  const Json& boxes = lfd::io::RequireMember(cageValue, "cage", "boxes");
+  if (!boxes.is_array())
+  {
+    throw FieldError("cage.boxes", "expected an array of boxes, found " + lfd::io::Describe(boxes));
+  }
+  cage->SetPoints(MakePoints(deformed));
+  vtkNew<vtkDoubleArray> restArray;
+  restArray->SetName("RestPosition");
+  restArray->SetNumberOfComponents(3);
+  restArray->SetNumberOfTuples(static_cast<vtkIdType>(cagePoints));
+  std::copy(rest.begin(), rest.end(), restArray->GetPointer(0));
+  cage->GetPointData()->AddArray(restArray);
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Label");
+  cage->Allocate(static_cast<vtkIdType>(boxes.size()));
+  for (size_t b = 0; b < boxes.size(); ++b)
+  {
+    const std::string boxPath = ElementPath("cage.boxes", b);
+    const Json& corners = lfd::io::RequireMember(boxes[b], boxPath, "corners");
+    const std::string cornersPath = MemberPath(boxPath, "corners");
+    if (!corners.is_array() || corners.size() != 8)
+    {
+      throw FieldError(cornersPath,
+        "a box has 8 corners (VTK hexahedron order), found " + lfd::io::Describe(corners));
+    }
+    vtkIdType ids[8];
+    for (size_t c = 0; c < 8; ++c)
+    {
+      const std::string cornerPath = ElementPath(cornersPath, c);
+      const double index = lfd::io::GetNumber(corners[c], cornerPath);
+      if (index != std::floor(index) || index < 0 || index >= static_cast<double>(cagePoints))
+      {
+        throw FieldError(cornerPath,
+          "corner index " + corners[c].dump() + " out of range (the cage has " +
+            std::to_string(cagePoints) + " points, indices 0.." +
+            std::to_string(static_cast<long long>(cagePoints) - 1) + ")");
+      }
+      ids[c] = static_cast<vtkIdType>(index);
+    }
+    const long long label = lfd::io::GetInteger(
+      lfd::io::RequireMember(boxes[b], boxPath, "label"), MemberPath(boxPath, "label"), 0, 255);
+    cage->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
+    labels->InsertNextValue(static_cast<int>(label));
+  }
+  cage->GetCellData()->AddArray(labels);
+  return cagePoints;
+}
+
+// The "keyframes" of a cage of `cagePoints` points.
+std::vector<Keyframe> ParseKeyframes(const Json& list, size_t cagePoints)
+{
+  std::vector<Keyframe> keyframes;
+  if (!list.is_array())
+  {
+    throw FieldError("keyframes", "expected an array, found " + lfd::io::Describe(list));
+  }
+  if (!list.empty() && cagePoints == 0)
+  {
+    throw FieldError("keyframes", "keyframes move cage points, but the scene has no cage");
+  }
+  for (size_t k = 0; k < list.size(); ++k)
+  {
+    const std::string path = ElementPath("keyframes", k);
+    Keyframe keyframe;
+    keyframe.Time =
+      lfd::io::GetNumber(lfd::io::RequireMember(list[k], path, "time"), MemberPath(path, "time"));
+    const std::vector<double> points = lfd::io::GetPoints(
+      lfd::io::RequireMember(list[k], path, "points"), MemberPath(path, "points"));
+    if (points.size() / 3 != cagePoints)
+    {
+      throw FieldError(MemberPath(path, "points"),
+        "has " + std::to_string(points.size() / 3) + " points, the cage has " +
+          std::to_string(cagePoints));
+    }
+    keyframe.Points = MakePoints(points);
+    keyframes.push_back(keyframe);
+  }
+  return keyframes;
+}
+
+// The view "camera" and the rendered image size.
+void ParseCamera(const Json& cam, vtkCamera* camera, int& width, int& height)
+{
+  if (const Json* v = lfd::io::FindMember(cam, "camera", "position"))
+  {
+    camera->SetPosition(lfd::io::GetNumbers(*v, "camera.position", 3).data());
+  }
+  if (const Json* v = lfd::io::FindMember(cam, "camera", "focal_point"))
+  {
+    camera->SetFocalPoint(lfd::io::GetNumbers(*v, "camera.focal_point", 3).data());
+  }
+  if (const Json* v = lfd::io::FindMember(cam, "camera", "view_up"))
+  {
+    camera->SetViewUp(lfd::io::GetNumbers(*v, "camera.view_up", 3).data());
+  }
+  if (const Json* v = lfd::io::FindMember(cam, "camera", "view_angle"))
+  {
+    // vtkCamera clamps the angle it is given: checked here, unclamped.
+    const double angle = lfd::io::GetNumber(*v, "camera.view_angle");
+    if (!(angle >= lfd::MinimumViewAngle && angle <= lfd::MaximumViewAngle))
+    {
+      throw FieldError(
+        "camera.view_angle", "expected degrees in [0.5, 179], found " + lfd::io::Describe(*v));
+    }
+    camera->SetViewAngle(angle);
+  }
+  if (const Json* v = lfd::io::FindMember(cam, "camera", "width"))
+  {
+    width = static_cast<int>(lfd::io::GetInteger(*v, "camera.width", 1, lfd::MaximumRenderSize));
+  }
+  if (const Json* v = lfd::io::FindMember(cam, "camera", "height"))
+  {
+    height = static_cast<int>(lfd::io::GetInteger(*v, "camera.height", 1, lfd::MaximumRenderSize));
+  }
+}
+
+// The "render" settings, with their defaults.
+struct RenderSettings
+{
+  double FocalDistance = 0.0;
+  int Subdivision = 1;
+  int WidenedSearch = 2;
+  double ObjectThreshold = 10.0;
+  double Background[3] = { 0.0, 0.0, 0.0 };
+};
+
+void ParseRender(const Json& render, RenderSettings& settings)
+{
+  if (const Json* v = lfd::io::FindMember(render, "render", "focal_distance"))
+  {
+    settings.FocalDistance = lfd::io::GetNumber(*v, "render.focal_distance");
+  }
+  if (const Json* v = lfd::io::FindMember(render, "render", "subdivision"))
+  {
+    if (v->is_string() && v->get<std::string>() == "auto")
+    {
+      settings.Subdivision = 0;
+    }
+    else if (v->is_number())
+    {
+      settings.Subdivision = static_cast<int>(lfd::io::GetInteger(
+        *v, "render.subdivision", lfd::MinimumSubdivision, lfd::MaximumSubdivision));
+    }
+    else
+    {
+      throw FieldError("render.subdivision",
+        "expected an integer in [" + std::to_string(lfd::MinimumSubdivision) + ", " +
+          std::to_string(lfd::MaximumSubdivision) + "] or \"auto\", found " +
+          lfd::io::Describe(*v));
+    }
+  }
+  if (const Json* v = lfd::io::FindMember(render, "render", "widened_search"))
+  {
+    settings.WidenedSearch =
+      static_cast<int>(lfd::io::GetInteger(*v, "render.widened_search", 0, 64));
+  }
+  if (const Json* v = lfd::io::FindMember(render, "render", "object_threshold"))
+  {
+    settings.ObjectThreshold = lfd::io::GetNumber(*v, "render.object_threshold");
+    if (!(settings.ObjectThreshold >= 0.0 && settings.ObjectThreshold <= 255.0))
+    {
+      throw FieldError("render.object_threshold",
+        "expected a brightness in [0, 255], found " + lfd::io::Describe(*v));
+    }
+  }
+  if (const Json* v = lfd::io::FindMember(render, "render", "background"))
+  {
+    const std::vector<double> rgb = lfd::io::GetNumbers(*v, "render.background", 3);
+    for (size_t c = 0; c < 3; ++c)
+    {
+      if (rgb[c] < 0.0 || rgb[c] > 1.0)
+      {
+        throw FieldError(ElementPath("render.background", c),
+          "expected a colour component in [0, 1], found " + lfd::io::Describe((*v)[c]));
+      }
+      settings.Background[c] = rgb[c];
+    }
+  }
+}
 }
 
 struct vtkLightFieldScene::Internals
@@ -318,215 +535,34 @@ bool vtkLightFieldScene::Read(const char* fileName)
   auto cage = vtkSmartPointer<vtkUnstructuredGrid>::New();
   std::vector<Keyframe> keyframes;
   auto camera = vtkSmartPointer<vtkCamera>::New();
-  int width = 512, height = 512, subdivision = 1, widenedSearch = 2;
-  double focalDistance = 0.0, objectThreshold = 10.0;
-  double background[3] = { 0.0, 0.0, 0.0 };
+  int width = 512, height = 512;
+  RenderSettings settings;
   try
   {
-    const std::string format =
-      lfd::io::GetString(lfd::io::RequireMember(document, "", "format"), "format");
-    if (format != "lfd-scene")
-    {
-      throw FieldError("format", "expected \"lfd-scene\", found \"" + format + "\"");
-    }
-    const long long version = lfd::io::GetInteger(
-      lfd::io::RequireMember(document, "", "version"), "version", 0, VTK_INT_MAX);
-    if (version != SceneVersion)
-    {
-      throw FieldError("version",
-        "unsupported version " + std::to_string(version) + " (this reader reads version " +
-          std::to_string(SceneVersion) + ")");
-    }
+    CheckSceneHeader(document);
     if (const Json* value = lfd::io::FindMember(document, "", "lightfield"))
     {
       lightField = lfd::io::GetPath(*value, "lightfield");
       hasLightField = true;
     }
-
     size_t cagePoints = 0;
     if (const Json* cageValue = lfd::io::FindMember(document, "", "cage"))
     {
-      const std::vector<double> rest = lfd::io::GetPoints(
-        lfd::io::RequireMember(*cageValue, "cage", "rest_points"), "cage.rest_points");
-      cagePoints = rest.size() / 3;
-      std::vector<double> deformed = rest;
-      if (const Json* points = lfd::io::FindMember(*cageValue, "cage", "points"))
-      {
-        deformed = lfd::io::GetPoints(*points, "cage.points");
-        if (deformed.size() != rest.size())
-        {
-          throw FieldError("cage.points",
-            "has " + std::to_string(deformed.size() / 3) + " points, cage.rest_points has " +
-              std::to_string(cagePoints));
-        }
-      }
-      const Json& boxes = lfd::io::RequireMember(*cageValue, "cage", "boxes");
-      if (!boxes.is_array())
-      {
-        throw FieldError(
-          "cage.boxes", "expected an array of boxes, found " + lfd::io::Describe(boxes));
-      }
-      cage->SetPoints(MakePoints(deformed));
-      vtkNew<vtkDoubleArray> restArray;
-      restArray->SetName("RestPosition");
-      restArray->SetNumberOfComponents(3);
-      restArray->SetNumberOfTuples(static_cast<vtkIdType>(cagePoints));
-      std::copy(rest.begin(), rest.end(), restArray->GetPointer(0));
-      cage->GetPointData()->AddArray(restArray);
-      vtkNew<vtkIntArray> labels;
-      labels->SetName("Label");
-      cage->Allocate(static_cast<vtkIdType>(boxes.size()));
-      for (size_t b = 0; b < boxes.size(); ++b)
-      {
-        const std::string boxPath = ElementPath("cage.boxes", b);
-        const Json& corners = lfd::io::RequireMember(boxes[b], boxPath, "corners");
-        const std::string cornersPath = MemberPath(boxPath, "corners");
-        if (!corners.is_array() || corners.size() != 8)
-        {
-          throw FieldError(cornersPath,
-            "a box has 8 corners (VTK hexahedron order), found " + lfd::io::Describe(corners));
-        }
-        vtkIdType ids[8];
-        for (size_t c = 0; c < 8; ++c)
-        {
-          const std::string cornerPath = ElementPath(cornersPath, c);
-          const double index = lfd::io::GetNumber(corners[c], cornerPath);
-          if (index != std::floor(index) || index < 0 || index >= static_cast<double>(cagePoints))
-          {
-            throw FieldError(cornerPath,
-              "corner index " + corners[c].dump() + " out of range (the cage has " +
-                std::to_string(cagePoints) + " points, indices 0.." +
-                std::to_string(static_cast<long long>(cagePoints) - 1) + ")");
-          }
-          ids[c] = static_cast<vtkIdType>(index);
-        }
-        const long long label = lfd::io::GetInteger(
-          lfd::io::RequireMember(boxes[b], boxPath, "label"), MemberPath(boxPath, "label"), 0, 255);
-        cage->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
-        labels->InsertNextValue(static_cast<int>(label));
-      }
-      cage->GetCellData()->AddArray(labels);
+      cagePoints = ParseCage(*cageValue, cage);
     }
-
     if (const Json* list = lfd::io::FindMember(document, "", "keyframes"))
     {
-      if (!list->is_array())
-      {
-        throw FieldError("keyframes", "expected an array, found " + lfd::io::Describe(*list));
-      }
-      if (!list->empty() && cagePoints == 0)
-      {
-        throw FieldError("keyframes", "keyframes move cage points, but the scene has no cage");
-      }
-      for (size_t k = 0; k < list->size(); ++k)
-      {
-        const std::string path = ElementPath("keyframes", k);
-        Keyframe keyframe;
-        keyframe.Time = lfd::io::GetNumber(
-          lfd::io::RequireMember((*list)[k], path, "time"), MemberPath(path, "time"));
-        const std::vector<double> points = lfd::io::GetPoints(
-          lfd::io::RequireMember((*list)[k], path, "points"), MemberPath(path, "points"));
-        if (points.size() / 3 != cagePoints)
-        {
-          throw FieldError(MemberPath(path, "points"),
-            "has " + std::to_string(points.size() / 3) + " points, the cage has " +
-              std::to_string(cagePoints));
-        }
-        keyframe.Points = MakePoints(points);
-        keyframes.push_back(keyframe);
-      }
+      keyframes = ParseKeyframes(*list, cagePoints);
     }
-
     if (const Json* cam = lfd::io::FindMember(document, "", "camera"))
     {
-      if (const Json* v = lfd::io::FindMember(*cam, "camera", "position"))
-      {
-        camera->SetPosition(lfd::io::GetNumbers(*v, "camera.position", 3).data());
-      }
-      if (const Json* v = lfd::io::FindMember(*cam, "camera", "focal_point"))
-      {
-        camera->SetFocalPoint(lfd::io::GetNumbers(*v, "camera.focal_point", 3).data());
-      }
-      if (const Json* v = lfd::io::FindMember(*cam, "camera", "view_up"))
-      {
-        camera->SetViewUp(lfd::io::GetNumbers(*v, "camera.view_up", 3).data());
-      }
-      if (const Json* v = lfd::io::FindMember(*cam, "camera", "view_angle"))
-      {
-        // vtkCamera clamps the angle it is given: checked here, unclamped.
-        const double angle = lfd::io::GetNumber(*v, "camera.view_angle");
-        if (!(angle >= lfd::MinimumViewAngle && angle <= lfd::MaximumViewAngle))
-        {
-          throw FieldError(
-            "camera.view_angle", "expected degrees in [0.5, 179], found " + lfd::io::Describe(*v));
-        }
-        camera->SetViewAngle(angle);
-      }
-      if (const Json* v = lfd::io::FindMember(*cam, "camera", "width"))
-      {
-        width =
-          static_cast<int>(lfd::io::GetInteger(*v, "camera.width", 1, lfd::MaximumRenderSize));
-      }
-      if (const Json* v = lfd::io::FindMember(*cam, "camera", "height"))
-      {
-        height =
-          static_cast<int>(lfd::io::GetInteger(*v, "camera.height", 1, lfd::MaximumRenderSize));
-      }
+      ParseCamera(*cam, camera, width, height);
     }
-
     if (const Json* render = lfd::io::FindMember(document, "", "render"))
     {
-      if (const Json* v = lfd::io::FindMember(*render, "render", "focal_distance"))
-      {
-        focalDistance = lfd::io::GetNumber(*v, "render.focal_distance");
-      }
-      if (const Json* v = lfd::io::FindMember(*render, "render", "subdivision"))
-      {
-        if (v->is_string() && v->get<std::string>() == "auto")
-        {
-          subdivision = 0;
-        }
-        else if (v->is_number())
-        {
-          subdivision = static_cast<int>(lfd::io::GetInteger(
-            *v, "render.subdivision", lfd::MinimumSubdivision, lfd::MaximumSubdivision));
-        }
-        else
-        {
-          throw FieldError("render.subdivision",
-            "expected an integer in [" + std::to_string(lfd::MinimumSubdivision) + ", " +
-              std::to_string(lfd::MaximumSubdivision) + "] or \"auto\", found " +
-              lfd::io::Describe(*v));
-        }
-      }
-      if (const Json* v = lfd::io::FindMember(*render, "render", "widened_search"))
-      {
-        widenedSearch = static_cast<int>(lfd::io::GetInteger(*v, "render.widened_search", 0, 64));
-      }
-      if (const Json* v = lfd::io::FindMember(*render, "render", "object_threshold"))
-      {
-        objectThreshold = lfd::io::GetNumber(*v, "render.object_threshold");
-        if (!(objectThreshold >= 0.0 && objectThreshold <= 255.0))
-        {
-          throw FieldError("render.object_threshold",
-            "expected a brightness in [0, 255], found " + lfd::io::Describe(*v));
-        }
-      }
-      if (const Json* v = lfd::io::FindMember(*render, "render", "background"))
-      {
-        const std::vector<double> rgb = lfd::io::GetNumbers(*v, "render.background", 3);
-        for (size_t c = 0; c < 3; ++c)
-        {
-          if (rgb[c] < 0.0 || rgb[c] > 1.0)
-          {
-            throw FieldError(ElementPath("render.background", c),
-              "expected a colour component in [0, 1], found " + lfd::io::Describe((*v)[c]));
-          }
-          background[c] = rgb[c];
-        }
-      }
+      ParseRender(*render, settings);
     }
-    ValidateSettings(camera, width, height, subdivision, keyframes);
+    ValidateSettings(camera, width, height, settings.Subdivision, keyframes);
   }
   catch (...)
   {
@@ -540,11 +576,11 @@ bool vtkLightFieldScene::Read(const char* fileName)
   this->Internal->Camera = camera;
   this->Width = width;
   this->Height = height;
-  this->FocalDistance = focalDistance;
-  this->Subdivision = subdivision;
-  this->WidenedSearch = widenedSearch;
-  this->ObjectThreshold = objectThreshold;
-  std::copy(background, background + 3, this->Background);
+  this->FocalDistance = settings.FocalDistance;
+  this->Subdivision = settings.Subdivision;
+  this->WidenedSearch = settings.WidenedSearch;
+  this->ObjectThreshold = settings.ObjectThreshold;
+  std::copy(settings.Background, settings.Background + 3, this->Background);
   this->Modified();
   return true;
 }

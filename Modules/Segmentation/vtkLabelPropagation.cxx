@@ -17,6 +17,8 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <map>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkLabelPropagation);
@@ -187,6 +189,264 @@ vtkIdType March(const VoxelGrid& grid,
   }
   return -1;
 }
+using PaintedViews = std::map<int, vtkSmartPointer<vtkImageData>>;
+
+// The painted label images must be of existing views, of the views' size,
+// one component. Returns the problem in words, empty when they are.
+std::string CheckPaintedViews(const PaintedViews& paintedViews, int width, int height, int views)
+{
+  for (const auto& painted : paintedViews)
+  {
+    const int* dims = painted.second->GetDimensions();
+    vtkDataArray* scalars = painted.second->GetPointData()->GetScalars();
+    if (painted.first < 0 || painted.first >= views)
+    {
+      return "vtkLabelPropagation: painted view " + std::to_string(painted.first) +
+        " does not exist (the light field has views 0.." + std::to_string(views - 1) + ")";
+    }
+    if (dims[0] != width || dims[1] != height || dims[2] != 1 || !scalars ||
+      scalars->GetNumberOfComponents() != 1)
+    {
+      return "vtkLabelPropagation: the label image of view " + std::to_string(painted.first) +
+        " is " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) +
+        (scalars ? " with " + std::to_string(scalars->GetNumberOfComponents()) + " components"
+                 : std::string(" without scalars")) +
+        "; the views are " + std::to_string(width) + "x" + std::to_string(height) +
+        " and labels have 1 component";
+    }
+  }
+  return std::string();
+}
+
+// The rays of the light field's pixels: per view, the camera centre and the
+// pixel-to-direction map (R^T K^-1, lens distortion removed), and the Depth
+// pass when there is one.
+struct PixelRays
+{
+  int Width = 0;
+  int Height = 0;
+  int Views = 0;
+  vtkIdType Pixels = 0;
+  std::vector<lfd::PinholeCamera::Unprojection> Cameras;
+  vtkFloatArray* Depth = nullptr;
+
+  PixelRays(vtkLightField* input, vtkFloatArray* depth)
+    : Width(input->GetWidth())
+    , Height(input->GetHeight())
+    , Views(input->GetNumberOfViews())
+    , Pixels(static_cast<vtkIdType>(Width) * Height)
+    , Cameras(Views)
+    , Depth(depth)
+  {
+    for (int view = 0; view < this->Views; ++view)
+    {
+      this->Cameras[view] = input->GetRig()->GetCamera(view).GetUnprojection();
+    }
+  }
+  // OpenCV coordinates of pixel `p` of a view (VTK row order).
+  glm::dvec2 PixelOf(vtkIdType p) const
+  {
+    return glm::dvec2(static_cast<double>(p % this->Width), this->Height - 1.0 - p / this->Width);
+  }
+  glm::dvec3 DirectionOf(int view, vtkIdType p) const
+  {
+    return this->Cameras[view].Direction(this->PixelOf(p));
+  }
+  // The surface point pixel `p` of `view` sees, from the Depth pass.
+  glm::dvec3 PointOf(int view, vtkIdType p) const
+  {
+    return this->Cameras[view](
+      this->PixelOf(p), static_cast<double>(this->Depth->GetValue(view * this->Pixels + p)));
+  }
+};
+
+// With depth: the object pixels are those with a depth, the proxy's bounds
+// those of their surface points (padded). False when no view sees a surface.
+bool DepthBounds(const PixelRays& rays, Silhouettes& silhouettes, glm::dvec3& low, glm::dvec3& high)
+{
+  low = glm::dvec3(std::numeric_limits<double>::infinity());
+  high = -low;
+  for (int view = 0; view < rays.Views; ++view)
+  {
+    for (vtkIdType p = 0; p < rays.Pixels; ++p)
+    {
+      if (rays.Depth->GetValue(view * rays.Pixels + p) > 0.0f)
+      {
+        silhouettes.Mask[view * rays.Pixels + p] = 1;
+        const glm::dvec3 X = rays.PointOf(view, p);
+        low = glm::min(low, X);
+        high = glm::max(high, X);
+      }
+    }
+  }
+  if (!(low.x <= high.x))
+  {
+    return false;
+  }
+  const glm::dvec3 pad = 1e-3 * (high - low) + 1e-9;
+  low -= pad;
+  high += pad;
+  return true;
+}
+
+// Without depth: the object pixels are the Coaxial pass's silhouettes, the
+// proxy's bounds those of the visual hull, carved coarsely in the box the
+// cameras surround (a cube about their centres). False when the hull is
+// empty.
+bool HullBounds(const PixelRays& rays,
+  vtkCameraRig* rig,
+  vtkUnsignedCharArray* coaxial,
+  double threshold,
+  double tolerance,
+  Silhouettes& silhouettes,
+  glm::dvec3& low,
+  glm::dvec3& high)
+{
+  const int views = rays.Views;
+  const vtkIdType pixels = rays.Pixels;
+  for (int view = 0; view < views; ++view)
+  {
+    lfd::segmentation::ObjectMask(coaxial->GetPointer(3 * view * pixels),
+      rays.Width,
+      rays.Height,
+      threshold,
+      1,
+      silhouettes.Mask.data() + view * pixels);
+  }
+  silhouettes.Distance.resize(silhouettes.Mask.size());
+  std::vector<float> distance;
+  for (int view = 0; view < views; ++view)
+  {
+    lfd::segmentation::DistanceToMask(
+      silhouettes.Mask.data() + view * pixels, rays.Width, rays.Height, distance);
+    std::copy(distance.begin(), distance.end(), silhouettes.Distance.begin() + view * pixels);
+  }
+  glm::dvec3 centre(0.0);
+  for (int view = 0; view < views; ++view)
+  {
+    centre += rays.Cameras[view].Center / static_cast<double>(views);
+  }
+  double reach = 0.0;
+  for (int view = 0; view < views; ++view)
+  {
+    reach = std::max(reach, glm::length(rays.Cameras[view].Center - centre));
+  }
+  const VoxelGrid coarse(centre - reach, centre + reach, 64);
+  return OccupiedBounds(coarse, Carve(coarse, rig, silhouettes, tolerance), 1.0, low, high);
+}
+
+// The voxel each object pixel sees: with `march`, the first occupied one
+// along its ray (visibility of a carved hull); otherwise the one holding
+// its surface point from the depth.
+void FindSeen(const VoxelGrid& grid,
+  const PixelRays& rays,
+  const Silhouettes& silhouettes,
+  bool march,
+  const std::vector<unsigned char>& occupied,
+  std::vector<vtkIdType>& seen)
+{
+  vtkSMPTools::For(0,
+    rays.Views,
+    [&](int first, int last)
+    {
+      for (int view = first; view < last; ++view)
+      {
+        for (vtkIdType p = 0; p < rays.Pixels; ++p)
+        {
+          const vtkIdType index = view * rays.Pixels + p;
+          if (silhouettes.Mask[index])
+          {
+            seen[index] = march
+              ? March(grid, occupied, rays.Cameras[view].Center, rays.DirectionOf(view, p))
+              : grid.Find(rays.PointOf(view, p));
+          }
+        }
+      }
+    });
+}
+
+// The label of every voxel a painted pixel sees (the majority of the
+// pixels that see it); 0 elsewhere. False when no painted pixel lands on
+// the proxy.
+bool VoteVoxels(const PaintedViews& paintedViews,
+  const std::vector<vtkIdType>& seen,
+  vtkIdType pixels,
+  std::vector<unsigned char>& voxelLabel)
+{
+  std::vector<std::array<int, 256>> votes;
+  std::vector<int> voteOf(voxelLabel.size(), -1);
+  for (const auto& painted : paintedViews)
+  {
+    vtkDataArray* scalars = painted.second->GetPointData()->GetScalars();
+    for (vtkIdType p = 0; p < pixels; ++p)
+    {
+      const int label = static_cast<int>(scalars->GetComponent(p, 0));
+      const vtkIdType v = seen[painted.first * pixels + p];
+      if (label <= 0 || label > 255 || v < 0)
+      {
+        continue;
+      }
+      if (voteOf[v] < 0)
+      {
+        voteOf[v] = static_cast<int>(votes.size());
+        votes.emplace_back();
+        votes.back().fill(0);
+      }
+      ++votes[voteOf[v]][label];
+    }
+  }
+  for (std::size_t v = 0; v < voxelLabel.size(); ++v)
+  {
+    if (voteOf[v] >= 0)
+    {
+      const auto& count = votes[voteOf[v]];
+      voxelLabel[v] =
+        static_cast<unsigned char>(std::max_element(count.begin(), count.end()) - count.begin());
+    }
+  }
+  return !votes.empty();
+}
+
+// Gives every unlabelled voxel the label of the nearest labelled one
+// (breadth first over the 26 neighbours, from the voted voxels in order).
+void GrowLabels(const VoxelGrid& grid, std::vector<unsigned char>& voxelLabel)
+{
+  std::deque<vtkIdType> front;
+  for (vtkIdType v = 0; v < grid.Voxels(); ++v)
+  {
+    if (voxelLabel[v])
+    {
+      front.push_back(v);
+    }
+  }
+  const vtkIdType nx = grid.Count[0], ny = grid.Count[1], nz = grid.Count[2];
+  while (!front.empty())
+  {
+    const vtkIdType v = front.front();
+    front.pop_front();
+    const vtkIdType i = v % nx, j = (v / nx) % ny, k = v / (nx * ny);
+    for (int dk = -1; dk <= 1; ++dk)
+    {
+      for (int dj = -1; dj <= 1; ++dj)
+      {
+        for (int di = -1; di <= 1; ++di)
+        {
+          const vtkIdType a = i + di, b = j + dj, c = k + dk;
+          if (a < 0 || b < 0 || c < 0 || a >= nx || b >= ny || c >= nz)
+          {
+            continue;
+          }
+          const vtkIdType u = a + nx * (b + ny * c);
+          if (!voxelLabel[u])
+          {
+            voxelLabel[u] = voxelLabel[v];
+            front.push_back(u);
+          }
+        }
+      }
+    }
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -229,27 +489,10 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
     error = "vtkLabelPropagation: no painted view (SetPaintedView)";
     return false;
   }
-  for (const auto& painted : this->Painted)
+  error = CheckPaintedViews(this->Painted, width, height, views);
+  if (!error.empty())
   {
-    const int* dims = painted.second->GetDimensions();
-    vtkDataArray* scalars = painted.second->GetPointData()->GetScalars();
-    if (painted.first < 0 || painted.first >= views)
-    {
-      error = "vtkLabelPropagation: painted view " + std::to_string(painted.first) +
-        " does not exist (the light field has views 0.." + std::to_string(views - 1) + ")";
-      return false;
-    }
-    if (dims[0] != width || dims[1] != height || dims[2] != 1 || !scalars ||
-      scalars->GetNumberOfComponents() != 1)
-    {
-      error = "vtkLabelPropagation: the label image of view " + std::to_string(painted.first) +
-        " is " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) +
-        (scalars ? " with " + std::to_string(scalars->GetNumberOfComponents()) + " components"
-                 : std::string(" without scalars")) +
-        "; the views are " + std::to_string(width) + "x" + std::to_string(height) +
-        " and labels have 1 component";
-      return false;
-    }
+    return false;
   }
   auto* depth = vtkFloatArray::SafeDownCast(input->GetPass(vtkLightField::DEPTH));
   const bool useDepth = this->Proxy == DEPTH || (this->Proxy == AUTOMATIC && depth);
@@ -266,118 +509,34 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
   }
 
   // The object pixels of every view, and the proxy grid.
+  const PixelRays rays(input, depth);
   Silhouettes silhouettes;
   silhouettes.Width = width;
   silhouettes.Height = height;
   silhouettes.Mask.assign(pixels * views, 0);
-  // Per view: the camera centre and R^T K^-1, the pixel-to-direction map.
-  std::vector<lfd::PinholeCamera::Unprojection> cameras(views);
-  for (int view = 0; view < views; ++view)
+  glm::dvec3 low, high;
+  if (useDepth && !DepthBounds(rays, silhouettes, low, high))
   {
-    cameras[view] = rig->GetCamera(view).GetUnprojection();
+    error = "vtkLabelPropagation: the Depth pass sees no surface in any view";
+    return false;
   }
-  auto pixelOf = [&](vtkIdType p)
-  { return glm::dvec2(static_cast<double>(p % width), height - 1.0 - p / width); };
-  auto directionOf = [&](int view, vtkIdType p)
-  { return cameras[view].PixelToDirection * glm::dvec3(pixelOf(p), 1.0); };
-  auto pointOf = [&](int view, vtkIdType p)
-  { return cameras[view](pixelOf(p), static_cast<double>(depth->GetValue(view * pixels + p))); };
-  glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-low);
-  if (useDepth)
+  if (!useDepth &&
+    !HullBounds(
+      rays, rig, coaxial, this->Threshold, this->SilhouetteTolerance, silhouettes, low, high))
   {
-    for (int view = 0; view < views; ++view)
-    {
-      for (vtkIdType p = 0; p < pixels; ++p)
-      {
-        if (depth->GetValue(view * pixels + p) > 0.0f)
-        {
-          silhouettes.Mask[view * pixels + p] = 1;
-          const glm::dvec3 X = pointOf(view, p);
-          low = glm::min(low, X);
-          high = glm::max(high, X);
-        }
-      }
-    }
-    if (!(low.x <= high.x))
-    {
-      error = "vtkLabelPropagation: the Depth pass sees no surface in any view";
-      return false;
-    }
-    const glm::dvec3 pad = 1e-3 * (high - low) + 1e-9;
-    low -= pad;
-    high += pad;
-  }
-  else
-  {
-    for (int view = 0; view < views; ++view)
-    {
-      lfd::segmentation::ObjectMask(coaxial->GetPointer(3 * view * pixels),
-        width,
-        height,
-        this->Threshold,
-        1,
-        silhouettes.Mask.data() + view * pixels);
-    }
-    silhouettes.Distance.resize(silhouettes.Mask.size());
-    std::vector<float> distance;
-    for (int view = 0; view < views; ++view)
-    {
-      lfd::segmentation::DistanceToMask(
-        silhouettes.Mask.data() + view * pixels, width, height, distance);
-      std::copy(distance.begin(), distance.end(), silhouettes.Distance.begin() + view * pixels);
-    }
-    // The box the cameras surround (a cube about their centres), carved
-    // coarsely to place the grid, then carved at full resolution.
-    glm::dvec3 centre(0.0);
-    for (int view = 0; view < views; ++view)
-    {
-      centre += cameras[view].Center / static_cast<double>(views);
-    }
-    double reach = 0.0;
-    for (int view = 0; view < views; ++view)
-    {
-      reach = std::max(reach, glm::length(cameras[view].Center - centre));
-    }
-    const VoxelGrid coarse(centre - reach, centre + reach, 64);
-    if (!OccupiedBounds(
-          coarse, Carve(coarse, rig, silhouettes, this->SilhouetteTolerance), 1.0, low, high))
-    {
-      error = "vtkLabelPropagation: the visual hull is empty (no point projects inside the "
-              "silhouette in every view; check Threshold and the calibration)";
-      return false;
-    }
+    error = "vtkLabelPropagation: the visual hull is empty (no point projects inside the "
+            "silhouette in every view; check Threshold and the calibration)";
+    return false;
   }
   this->UpdateProgress(0.1);
   const VoxelGrid grid(low, high, this->Resolution);
-  // The voxel each object pixel sees: with depth, the one holding its
-  // surface point (these voxels are the proxy); for a hull, the first
-  // occupied one along its ray (visibility), once the hull is carved.
+  // With depth, the voxels holding the surface points are the proxy; a hull
+  // is carved at full resolution, then each pixel sees its first voxel.
   std::vector<vtkIdType> seen(pixels * views, -1);
-  auto findSeen = [&](bool march, const std::vector<unsigned char>& occupied)
-  {
-    vtkSMPTools::For(0,
-      views,
-      [&](int first, int last)
-      {
-        for (int view = first; view < last; ++view)
-        {
-          for (vtkIdType p = 0; p < pixels; ++p)
-          {
-            const vtkIdType index = view * pixels + p;
-            if (silhouettes.Mask[index])
-            {
-              seen[index] = march
-                ? March(grid, occupied, cameras[view].Center, directionOf(view, p))
-                : grid.Find(pointOf(view, p));
-            }
-          }
-        }
-      });
-  };
   std::vector<unsigned char> occupied;
   if (useDepth)
   {
-    findSeen(false, occupied);
+    FindSeen(grid, rays, silhouettes, false, occupied, seen);
     occupied.assign(grid.Voxels(), 0);
     for (vtkIdType v : seen)
     {
@@ -398,81 +557,21 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
     return false;
   }
   this->UpdateProgress(0.3);
-
   if (!useDepth)
   {
-    findSeen(true, occupied);
+    FindSeen(grid, rays, silhouettes, true, occupied, seen);
   }
   this->UpdateProgress(0.6);
 
   // Votes of the painted pixels, then the nearest voted voxel for all.
-  std::vector<std::array<int, 256>> votes;
-  std::vector<int> voteOf(grid.Voxels(), -1);
-  for (const auto& painted : this->Painted)
-  {
-    vtkDataArray* scalars = painted.second->GetPointData()->GetScalars();
-    for (vtkIdType p = 0; p < pixels; ++p)
-    {
-      const int label = static_cast<int>(scalars->GetComponent(p, 0));
-      const vtkIdType v = seen[painted.first * pixels + p];
-      if (label <= 0 || label > 255 || v < 0)
-      {
-        continue;
-      }
-      if (voteOf[v] < 0)
-      {
-        voteOf[v] = static_cast<int>(votes.size());
-        votes.emplace_back();
-        votes.back().fill(0);
-      }
-      ++votes[voteOf[v]][label];
-    }
-  }
-  if (votes.empty())
+  std::vector<unsigned char> voxelLabel(grid.Voxels(), 0);
+  if (!VoteVoxels(this->Painted, seen, pixels, voxelLabel))
   {
     error = "vtkLabelPropagation: no painted pixel lands on the proxy (are the label images "
             "empty, or of other views?)";
     return false;
   }
-  std::vector<unsigned char> voxelLabel(grid.Voxels(), 0);
-  std::deque<vtkIdType> front;
-  for (vtkIdType v = 0; v < grid.Voxels(); ++v)
-  {
-    if (voteOf[v] >= 0)
-    {
-      const auto& count = votes[voteOf[v]];
-      voxelLabel[v] =
-        static_cast<unsigned char>(std::max_element(count.begin(), count.end()) - count.begin());
-      front.push_back(v);
-    }
-  }
-  const vtkIdType nx = grid.Count[0], ny = grid.Count[1], nz = grid.Count[2];
-  while (!front.empty())
-  {
-    const vtkIdType v = front.front();
-    front.pop_front();
-    const vtkIdType i = v % nx, j = (v / nx) % ny, k = v / (nx * ny);
-    for (int dk = -1; dk <= 1; ++dk)
-    {
-      for (int dj = -1; dj <= 1; ++dj)
-      {
-        for (int di = -1; di <= 1; ++di)
-        {
-          const vtkIdType a = i + di, b = j + dj, c = k + dk;
-          if (a < 0 || b < 0 || c < 0 || a >= nx || b >= ny || c >= nz)
-          {
-            continue;
-          }
-          const vtkIdType u = a + nx * (b + ny * c);
-          if (!voxelLabel[u])
-          {
-            voxelLabel[u] = voxelLabel[v];
-            front.push_back(u);
-          }
-        }
-      }
-    }
-  }
+  GrowLabels(grid, voxelLabel);
   this->UpdateProgress(0.8);
 
   unsigned char* label =

@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <vector>
@@ -105,6 +106,564 @@ double BoundingRadius(const double bounds[6], const double center[3])
     radius = std::max(radius, std::sqrt(vtkMath::Distance2BetweenPoints(x, center)));
   }
   return radius;
+}
+}
+
+namespace
+{
+// Projector masks for the capture: a copy of the painted ones (checked
+// against the projectors), or room for the ones generated from the mesh
+// labels and the palette. Returns the problem in words, empty when ready.
+std::string PrepareProjectorMasks(vtkPolyData* mesh,
+  vtkImageData* painted,
+  vtkUnsignedCharArray* palette,
+  vtkCameraRig* projectors,
+  vtkImageData* masks,
+  vtkUnsignedCharArray*& maskArray)
+{
+  const int projectorCount = projectors->GetNumberOfViews();
+  const int projectorWidth = projectors->GetImageSize()[0];
+  const int projectorHeight = projectors->GetImageSize()[1];
+  if (painted)
+  {
+    const int* dims = painted->GetDimensions();
+    vtkDataArray* colours = painted->GetPointData()->GetArray("Mask");
+    colours = colours ? colours : painted->GetPointData()->GetScalars();
+    maskArray = vtkUnsignedCharArray::SafeDownCast(colours);
+    if (!maskArray || maskArray->GetNumberOfComponents() != 3 || dims[0] != projectorWidth ||
+      dims[1] != projectorHeight || dims[2] != projectorCount)
+    {
+      return "vtkLightFieldCapture: the projector masks are " + std::to_string(dims[0]) + "x" +
+        std::to_string(dims[1]) + "x" + std::to_string(dims[2]) +
+        (maskArray ? "" : " without RGB uint8 scalars") +
+        "; the projectors need RGB uint8 masks of " + std::to_string(projectorWidth) + "x" +
+        std::to_string(projectorHeight) + "x" + std::to_string(projectorCount);
+    }
+    masks->DeepCopy(painted);
+    maskArray =
+      vtkUnsignedCharArray::SafeDownCast(masks->GetPointData()->GetArray(maskArray->GetName()));
+    maskArray->SetName("Mask");
+    return std::string();
+  }
+  if (!palette || palette->GetNumberOfComponents() != 3 || palette->GetNumberOfTuples() < 2)
+  {
+    return "vtkLightFieldCapture: projectors without painted masks need a Palette (3 x uint8 per "
+           "label, entry 0 = unlabelled) to generate their masks from the mesh labels";
+  }
+  if (vtkDataArray* parts = mesh->GetCellData()->GetArray("Label"))
+  {
+    double range[2];
+    parts->GetRange(range, 0);
+    if (range[1] >= palette->GetNumberOfTuples())
+    {
+      return "vtkLightFieldCapture: the mesh has part label " +
+        std::to_string(static_cast<long long>(range[1])) + " but the palette colours only " +
+        std::to_string(palette->GetNumberOfTuples() - 1) +
+        " labels; give a palette with one colour per part";
+    }
+  }
+  masks->SetDimensions(projectorWidth, projectorHeight, projectorCount);
+  vtkNew<vtkUnsignedCharArray> generated;
+  generated->SetName("Mask");
+  generated->SetNumberOfComponents(3);
+  generated->SetNumberOfTuples(masks->GetNumberOfPoints());
+  masks->GetPointData()->SetScalars(generated);
+  maskArray = generated;
+  return std::string();
+}
+
+// The Label pass colour of every cell, (label, label, label), read back
+// exactly. Returns the problem in words, empty when every label is valid.
+std::string ColourLabels(vtkPolyData* mesh, vtkUnsignedCharArray* colours)
+{
+  colours->SetName("LabelColor");
+  colours->SetNumberOfComponents(3);
+  colours->SetNumberOfTuples(mesh->GetNumberOfCells());
+  vtkDataArray* labels = mesh->GetCellData()->GetArray("Label");
+  for (vtkIdType cell = 0; cell < mesh->GetNumberOfCells(); ++cell)
+  {
+    const double value = labels ? labels->GetComponent(cell, 0) : 1.0;
+    if (!(value >= 0.0 && value <= 255.0) || value != std::floor(value))
+    {
+      std::ostringstream problem;
+      problem << "Cell " << cell << " of the input mesh has Label " << value
+              << "; labels must be integers in [0, 255].";
+      return problem.str();
+    }
+    const auto byte = static_cast<unsigned char>(value);
+    const unsigned char color[3] = { byte, byte, byte };
+    colours->SetTypedTuple(cell, color);
+  }
+  return std::string();
+}
+
+// The output's passes, null when not captured.
+struct PassBuffers
+{
+  unsigned char* Coaxial = nullptr;
+  unsigned char* Label = nullptr;
+  float* Depth = nullptr;
+  unsigned char* Coded = nullptr;
+  unsigned char* Flood = nullptr;
+};
+
+/**
+ * The offscreen studio of a capture: one window for all views, the shaded
+ * actor (the Coaxial pass: albedo from the texture, the "RGB" array or
+ * white), the flat label actor (the Label pass) and the lamp, and the
+ * render of each pass of each view.
+ */
+class CaptureStudio
+{
+public:
+  CaptureStudio(vtkLightFieldCapture* capture,
+    vtkPolyData* mesh,
+    vtkImageData* textureImage,
+    vtkUnsignedCharArray* labelColours,
+    const double bounds[6])
+    : Capture(capture)
+    , Bounds(bounds)
+  {
+    this->SetUpShaded(mesh, textureImage);
+    this->SetUpFlat(mesh, labelColours);
+    // No multisampling, so every pixel of the Label pass belongs to exactly
+    // one cell.
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetAlphaBitPlanes(0);
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->Renderer->AutomaticLightCreationOff();
+    this->Renderer->TwoSidedLightingOn();
+    this->Renderer->UseFXAAOff();
+    this->Renderer->AddActor(this->Shaded);
+    this->Renderer->AddActor(this->Flat);
+    this->Window->AddRenderer(this->Renderer);
+    // A point light, not a spotlight, not attenuated (DESIGN.md section 5).
+    this->Lamp->SetLightTypeToSceneLight();
+    this->Lamp->SetPositional(true);
+    this->Lamp->SetConeAngle(180.0);
+    this->Lamp->SetAttenuationValues(1.0, 0.0, 0.0);
+    this->Lamp->SetColor(1.0, 1.0, 1.0);
+    this->Lamp->SetIntensity(1.0);
+    this->Renderer->AddLight(this->Lamp);
+    this->Camera = this->Renderer->GetActiveCamera();
+  }
+
+  /// Points the camera at view `view` of `rig`, clipped tightly to the bounds.
+  void View(vtkCameraRig* rig, int view)
+  {
+    rig->ApplyToCamera(view, this->Camera);
+    SetTightClippingRange(this->Camera, this->Bounds);
+  }
+
+  void SetSize(int width, int height) { this->Window->SetSize(width, height); }
+
+  /// Renders the shaded mesh lit from `lamp` and reads the RGB pixels
+  /// (bottom row first: vtkLightField's row order).
+  void RenderShaded(const double lamp[3], vtkUnsignedCharArray* rgb, int width, int height)
+  {
+    this->ShowShaded();
+    this->Lamp->SetPosition(lamp);
+    this->Lamp->SetFocalPoint(this->Camera->GetFocalPoint());
+    this->Window->Render();
+    this->Window->GetPixelData(0, 0, width - 1, height - 1, 0, rgb, 0);
+  }
+
+  /// Shows the shaded mesh only (the projector passes light it themselves).
+  void ShowShaded()
+  {
+    this->Shaded->VisibilityOn();
+    this->Flat->VisibilityOff();
+  }
+
+  /// Renders the flat label colours (the caller reads pixels or depth).
+  void RenderLabels()
+  {
+    this->Shaded->VisibilityOff();
+    this->Flat->VisibilityOn();
+    this->Window->Render();
+  }
+
+  /// Window depth d in [0, 1] back to the camera-space distance along the
+  /// optical axis of the perspective frustum [n, f]; 0 where nothing is seen.
+  void ReadDepth(int width, int height, float* z)
+  {
+    this->Window->GetZbufferData(0, 0, width - 1, height - 1, z);
+    double range[2];
+    this->Camera->GetClippingRange(range);
+    const double n = range[0];
+    const double f = range[1];
+    for (vtkIdType p = 0; p < static_cast<vtkIdType>(width) * height; ++p)
+    {
+      z[p] = z[p] >= 1.0f ? 0.0f : static_cast<float>(lfd::WindowDepthToDistance(z[p], n, f));
+    }
+  }
+
+  void ReadPixels(int width, int height, vtkUnsignedCharArray* rgb)
+  {
+    this->Window->GetPixelData(0, 0, width - 1, height - 1, 0, rgb, 0);
+  }
+
+  vtkCamera* GetCamera() const { return this->Camera; }
+  vtkLight* GetLamp() { return this->Lamp; }
+  vtkProperty* GetMaterial() { return this->Shaded->GetProperty(); }
+  void Render() { this->Window->Render(); }
+
+private:
+  void SetUpShaded(vtkPolyData* mesh, vtkImageData* textureImage);
+
+  void SetUpFlat(vtkPolyData* mesh, vtkUnsignedCharArray* labelColours);
+
+  vtkLightFieldCapture* Capture;
+  const double* Bounds;
+  vtkNew<vtkPolyDataMapper> ShadedMapper;
+  vtkNew<vtkActor> Shaded;
+  vtkNew<vtkTexture> Texture;
+  vtkNew<vtkPolyData> LabelMesh;
+  vtkNew<vtkPolyDataMapper> FlatMapper;
+  vtkNew<vtkActor> Flat;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkLight> Lamp;
+  vtkCamera* Camera = nullptr;
+};
+
+void CaptureStudio::SetUpFlat(vtkPolyData* mesh, vtkUnsignedCharArray* labelColours)
+{
+  this->LabelMesh->CopyStructure(mesh);
+  this->LabelMesh->GetCellData()->AddArray(labelColours);
+  this->FlatMapper->SetInputData(this->LabelMesh);
+  this->FlatMapper->ScalarVisibilityOn();
+  this->FlatMapper->SetScalarModeToUseCellFieldData();
+  this->FlatMapper->SelectColorArray("LabelColor");
+  this->FlatMapper->SetColorModeToDirectScalars();
+  this->FlatMapper->InterpolateScalarsBeforeMappingOff();
+  this->Flat->SetMapper(this->FlatMapper);
+  this->Flat->GetProperty()->LightingOff();
+  this->Flat->GetProperty()->SetInterpolationToFlat();
+  this->Flat->GetProperty()->SetAmbient(0.0);
+  this->Flat->GetProperty()->SetDiffuse(1.0);
+}
+
+void CaptureStudio::SetUpShaded(vtkPolyData* mesh, vtkImageData* textureImage)
+{
+  this->ShadedMapper->SetInputData(mesh);
+  this->ShadedMapper->ScalarVisibilityOff();
+  this->Shaded->SetMapper(this->ShadedMapper);
+  vtkProperty* material = this->Shaded->GetProperty();
+  material->SetColor(1.0, 1.0, 1.0);
+  material->SetAmbient(this->Capture->GetAmbient());
+  material->SetDiffuse(1.0 - this->Capture->GetAmbient());
+  material->SetSpecular(0.0);
+  if (textureImage && mesh->GetPointData()->GetTCoords())
+  {
+    vtkNew<vtkImageData> image;
+    image->ShallowCopy(textureImage);
+    this->Texture->SetInputData(image);
+    this->Texture->InterpolateOn();
+    this->Texture->RepeatOn();
+    this->Shaded->SetTexture(this->Texture);
+  }
+  else if (vtkDataArray* rgb = FindAlbedo(mesh->GetPointData()))
+  {
+    this->ShadedMapper->ScalarVisibilityOn();
+    this->ShadedMapper->SetScalarModeToUsePointFieldData();
+    this->ShadedMapper->SelectColorArray(rgb->GetName());
+    this->ShadedMapper->SetColorModeToDirectScalars();
+  }
+  else if (vtkDataArray* cellRgb = FindAlbedo(mesh->GetCellData()))
+  {
+    this->ShadedMapper->ScalarVisibilityOn();
+    this->ShadedMapper->SetScalarModeToUseCellFieldData();
+    this->ShadedMapper->SelectColorArray(cellRgb->GetName());
+    this->ShadedMapper->SetColorModeToDirectScalars();
+  }
+}
+
+/**
+ * The projector passes (Coded, Flood) of a capture: each projector's depth
+ * map (its visibility) and, without painted masks, its generated mask; then
+ * per view the Lambertian irradiance of each projector times its mask
+ * colour, masked by its visibility.
+ */
+class ProjectorSimulation
+{
+public:
+  ProjectorSimulation(vtkLightFieldCapture* capture,
+    vtkCameraRig* projectors,
+    vtkUnsignedCharArray* maskArray,
+    vtkIdType pixels)
+    : Capture(capture)
+    , Projectors(projectors)
+    , MaskArray(maskArray)
+    , Count(projectors->GetNumberOfViews())
+    , Width(projectors->GetImageSize()[0])
+    , Height(projectors->GetImageSize()[1])
+    , Pixels(static_cast<vtkIdType>(Width) * Height)
+    , Depth(Pixels * Count)
+    , Surface(pixels)
+    , CodedSum(3 * pixels)
+    , FloodSum(3 * pixels)
+    , Random(static_cast<unsigned int>(capture->GetNoiseSeed()))
+    , Noise(0.0, capture->GetProjectorNoise())
+  {
+  }
+
+  /// Each projector's depth map, and its generated mask: the palette colour
+  /// of the label it sees at each of its pixels.
+  void RenderDepthMaps(CaptureStudio& studio, int width, int height);
+
+  /// The Coded and Flood pixels of the view the studio's camera shows, whose
+  /// camera-z depth is `z`, into `coded` and `flood` (3 x `pixels` each).
+  void CaptureView(CaptureStudio& studio,
+    const lfd::PinholeCamera& camera,
+    int width,
+    int height,
+    const float* z,
+    unsigned char* coded,
+    unsigned char* flood)
+  {
+    const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+    // The albedo (unlit) for the room light, if any, then each projector.
+    studio.ShowShaded();
+    vtkProperty* material = studio.GetMaterial();
+    material->SetAmbient(0.0);
+    material->SetDiffuse(1.0);
+    const double room = this->Capture->GetProjectorAmbient();
+    if (room > 0.0)
+    {
+      material->LightingOff();
+      studio.Render();
+      studio.ReadPixels(width, height, this->Albedo);
+      material->LightingOn();
+    }
+    std::fill(this->CodedSum.begin(), this->CodedSum.end(), 0.0);
+    std::fill(this->FloodSum.begin(), this->FloodSum.end(), 0.0);
+    // The surface point each pixel sees, from the depth.
+    const lfd::PinholeCamera::Unprojection unproject = camera.GetUnprojection();
+    for (vtkIdType q = 0; q < pixels; ++q)
+    {
+      const glm::dvec2 pixel(
+        static_cast<double>(q % width), static_cast<double>(height - 1 - q / width));
+      this->Surface[q] = unproject(pixel, static_cast<double>(z[q]));
+    }
+    for (int p = 0; p < this->Count; ++p)
+    {
+      this->AddProjector(studio, p, width, height, z);
+    }
+    material->SetAmbient(this->Capture->GetAmbient());
+    material->SetDiffuse(1.0 - this->Capture->GetAmbient());
+    const bool noisy = this->Capture->GetProjectorNoise() > 0.0;
+    auto expose = [&](double value)
+    {
+      value += noisy ? this->Noise(this->Random) : 0.0;
+      return static_cast<unsigned char>(std::lround(std::min(255.0, std::max(0.0, value))));
+    };
+    for (vtkIdType i = 0; i < 3 * pixels; ++i)
+    {
+      const double ambient = room > 0.0 ? room * this->Albedo->GetValue(i) : 0.0;
+      coded[i] = expose(this->CodedSum[i] + ambient);
+      flood[i] = expose(this->FloodSum[i] + ambient);
+    }
+  }
+
+private:
+  /// Projector `p`'s irradiance x mask colour at every pixel whose surface
+  /// point it sees, added to the sums.
+  void AddProjector(CaptureStudio& studio, int p, int width, int height, const float* z);
+
+  vtkLightFieldCapture* Capture;
+  vtkCameraRig* Projectors;
+  vtkUnsignedCharArray* MaskArray;
+  const int Count;
+  const int Width;
+  const int Height;
+  const vtkIdType Pixels;
+  std::vector<float> Depth;
+  std::vector<glm::dvec3> Surface;
+  std::vector<double> CodedSum;
+  std::vector<double> FloodSum;
+  vtkNew<vtkUnsignedCharArray> Buffer;
+  vtkNew<vtkUnsignedCharArray> Albedo;
+  std::mt19937 Random;
+  std::normal_distribution<double> Noise;
+};
+
+void ProjectorSimulation::AddProjector(CaptureStudio& studio,
+  int p,
+  int width,
+  int height,
+  const float* z)
+{
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  const lfd::PinholeCamera& projector = this->Projectors->GetCamera(p);
+  const glm::dvec3 lampPosition = projector.Center();
+  const glm::dvec3 lampTarget = lampPosition + projector.Forward();
+  studio.GetLamp()->SetPosition(lampPosition.x, lampPosition.y, lampPosition.z);
+  studio.GetLamp()->SetFocalPoint(lampTarget.x, lampTarget.y, lampTarget.z);
+  studio.Render();
+  studio.ReadPixels(width, height, this->Buffer);
+  const float* mapDepth = this->Depth.data() + p * this->Pixels;
+  const double footprint = 1.0 / projector.K[0][0];
+  for (vtkIdType q = 0; q < pixels; ++q)
+  {
+    if (!(z[q] > 0.0f))
+    {
+      continue;
+    }
+    const glm::dvec3& X = this->Surface[q];
+    glm::dvec2 pixel;
+    if (!projector.Project(X, pixel))
+    {
+      continue;
+    }
+    const long u = std::lround(pixel.x);
+    const long v = std::lround(pixel.y);
+    if (u < 0 || v < 0 || u >= this->Width || v >= this->Height)
+    {
+      continue;
+    }
+    // Seen by the projector: no surface in front of X along its ray
+    // (tolerance: a few projector pixels of slope, plus 0.5 %).
+    const vtkIdType projected = (this->Height - 1 - v) * this->Width + u;
+    const double along = (projector.R * X + projector.t).z;
+    const double seen = mapDepth[projected];
+    if (!(seen > 0.0) || along > seen + along * (0.005 + 3.0 * footprint))
+    {
+      continue;
+    }
+    const unsigned char* colour = this->MaskArray->GetPointer(3 * (p * this->Pixels + projected));
+    for (int c = 0; c < 3; ++c)
+    {
+      const double irradiance = this->Buffer->GetValue(3 * q + c);
+      this->CodedSum[3 * q + c] += irradiance * colour[c] / 255.0;
+      this->FloodSum[3 * q + c] += irradiance;
+    }
+  }
+}
+
+void ProjectorSimulation::RenderDepthMaps(CaptureStudio& studio, int width, int height)
+{
+  studio.SetSize(this->Width, this->Height);
+  for (int p = 0; p < this->Count; ++p)
+  {
+    studio.View(this->Projectors, p);
+    studio.RenderLabels();
+    studio.ReadDepth(this->Width, this->Height, this->Depth.data() + p * this->Pixels);
+    if (!this->Capture->GetProjectorMasks())
+    {
+      studio.ReadPixels(this->Width, this->Height, this->Buffer);
+      vtkUnsignedCharArray* palette = this->Capture->GetPalette();
+      const vtkIdType colours = palette->GetNumberOfTuples();
+      for (vtkIdType q = 0; q < this->Pixels; ++q)
+      {
+        const vtkIdType part = this->Buffer->GetValue(3 * q);
+        for (int c = 0; c < 3; ++c)
+        {
+          this->MaskArray->SetTypedComponent(
+            p * this->Pixels + q, c, part < colours ? palette->GetTypedComponent(part, c) : 0);
+        }
+      }
+    }
+  }
+  studio.SetSize(width, height);
+}
+// The output's layout, rig, provenance, projectors, palette and passes.
+PassBuffers SetUpOutput(vtkLightFieldCapture* capture,
+  vtkLightField* output,
+  vtkCameraRig* rig,
+  vtkCameraRig* projectors,
+  vtkImageData* masks)
+{
+  output->SetLayout(rig->GetImageSize()[0], rig->GetImageSize()[1], rig->GetNumberOfViews());
+  output->SetRig(rig);
+  std::ostringstream provenance;
+  provenance << "{\"generator\": \"vtkLightFieldCapture\", \"light\": \""
+             << (capture->GetSceneFixedLight() ? "scene-fixed" : "coaxial")
+             << "\", \"ambient\": " << capture->GetAmbient() << "}";
+  output->SetProvenance(provenance.str().c_str());
+  auto bytes = [output](int pass)
+  { return static_cast<unsigned char*>(output->AllocatePass(pass)->GetVoidPointer(0)); };
+  PassBuffers passes;
+  passes.Coaxial = capture->GetCaptureCoaxial() ? bytes(vtkLightField::COAXIAL) : nullptr;
+  passes.Label = capture->GetCaptureLabel() ? bytes(vtkLightField::LABEL) : nullptr;
+  passes.Depth = capture->GetCaptureDepth()
+    ? static_cast<float*>(output->AllocatePass(vtkLightField::DEPTH)->GetVoidPointer(0))
+    : nullptr;
+  if (projectors)
+  {
+    output->SetProjectors(projectors);
+    output->SetProjectorMasks(masks);
+  }
+  if (capture->GetPalette())
+  {
+    vtkNew<vtkUnsignedCharArray> palette;
+    palette->DeepCopy(capture->GetPalette());
+    output->SetPalette(palette);
+  }
+  passes.Coded = projectors ? bytes(vtkLightField::CODED) : nullptr;
+  passes.Flood = projectors ? bytes(vtkLightField::FLOOD) : nullptr;
+  return passes;
+}
+
+// Renders every view of the rig into the passes.
+void CaptureViews(vtkLightFieldCapture* capture,
+  CaptureStudio& studio,
+  vtkCameraRig* rig,
+  const PassBuffers& passes,
+  ProjectorSimulation* simulation)
+{
+  const int width = rig->GetImageSize()[0];
+  const int height = rig->GetImageSize()[1];
+  const int views = rig->GetNumberOfViews();
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  double fixedLamp[3];
+  rig->GetCameraCenter(0, fixedLamp);
+  vtkNew<vtkUnsignedCharArray> rgbBuffer;
+  std::vector<float> viewDepth(simulation && !passes.Depth ? pixels : 0);
+  for (int view = 0; view < views && !capture->GetAbortExecute(); ++view)
+  {
+    studio.View(rig, view);
+    const vtkIdType slice = view * pixels;
+    if (passes.Coaxial)
+    {
+      studio.RenderShaded(
+        capture->GetSceneFixedLight() ? fixedLamp : studio.GetCamera()->GetPosition(),
+        rgbBuffer,
+        width,
+        height);
+      std::copy_n(rgbBuffer->GetPointer(0), 3 * pixels, passes.Coaxial + 3 * slice);
+    }
+    float* z = passes.Depth ? passes.Depth + slice : (simulation ? viewDepth.data() : nullptr);
+    if (passes.Label || z)
+    {
+      studio.RenderLabels();
+      if (passes.Label)
+      {
+        studio.ReadPixels(width, height, rgbBuffer);
+        const unsigned char* red = rgbBuffer->GetPointer(0);
+        for (vtkIdType p = 0; p < pixels; ++p)
+        {
+          passes.Label[slice + p] = red[3 * p];
+        }
+      }
+      if (z)
+      {
+        studio.ReadDepth(width, height, z);
+      }
+    }
+    if (simulation)
+    {
+      simulation->CaptureView(studio,
+        rig->GetCamera(view),
+        width,
+        height,
+        z,
+        passes.Coded + 3 * slice,
+        passes.Flood + 3 * slice);
+    }
+    capture->UpdateProgress(static_cast<double>(view + 1) / views);
+  }
 }
 }
 
@@ -428,403 +987,53 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
   {
     return 0;
   }
-  const int width = rig->GetImageSize()[0];
-  const int height = rig->GetImageSize()[1];
-  const int views = rig->GetNumberOfViews();
-  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  // The views are rendered by vtkCamera, an ideal pinhole: a distorted rig
+  // would get undistorted images that its own calibration then misreads.
+  if (rig->HasDistortion() || (this->Projectors && this->Projectors->HasDistortion()))
+  {
+    vtkErrorMacro("The " << (rig->HasDistortion() ? "rig" : "projector rig")
+                         << " has lens distortion; vtkLightFieldCapture renders ideal pinhole "
+                            "views only: give cameras without distortion.");
+    return 0;
+  }
 
-  // Projectors: their rig, masks (painted or generated) and passes.
+  // Projectors: their rig and masks (painted or generated).
   vtkNew<vtkCameraRig> projectors;
   const bool project = this->BuildProjectors(rig, projectors);
-  const int projectorCount = project ? projectors->GetNumberOfViews() : 0;
-  const int projectorWidth = project ? projectors->GetImageSize()[0] : 0;
-  const int projectorHeight = project ? projectors->GetImageSize()[1] : 0;
-  const vtkIdType projectorPixels = static_cast<vtkIdType>(projectorWidth) * projectorHeight;
   vtkNew<vtkImageData> masks;
   vtkUnsignedCharArray* maskArray = nullptr;
   if (project)
   {
-    if (this->ProjectorMasks)
+    const std::string problem = PrepareProjectorMasks(
+      input, this->ProjectorMasks, this->Palette, projectors, masks, maskArray);
+    if (!problem.empty())
     {
-      const int* dims = this->ProjectorMasks->GetDimensions();
-      vtkDataArray* painted = this->ProjectorMasks->GetPointData()->GetArray("Mask");
-      painted = painted ? painted : this->ProjectorMasks->GetPointData()->GetScalars();
-      maskArray = vtkUnsignedCharArray::SafeDownCast(painted);
-      if (!maskArray || maskArray->GetNumberOfComponents() != 3 || dims[0] != projectorWidth ||
-        dims[1] != projectorHeight || dims[2] != projectorCount)
-      {
-        this->Fail(output,
-          vtkErrorCode::UnknownError,
-          "vtkLightFieldCapture: the projector masks are " + std::to_string(dims[0]) + "x" +
-            std::to_string(dims[1]) + "x" + std::to_string(dims[2]) +
-            (maskArray ? "" : " without RGB uint8 scalars") +
-            "; the projectors need RGB uint8 masks of " + std::to_string(projectorWidth) + "x" +
-            std::to_string(projectorHeight) + "x" + std::to_string(projectorCount));
-        return 0;
-      }
-      masks->DeepCopy(this->ProjectorMasks);
-      maskArray =
-        vtkUnsignedCharArray::SafeDownCast(masks->GetPointData()->GetArray(maskArray->GetName()));
-      maskArray->SetName("Mask");
-    }
-    else if (!this->Palette || this->Palette->GetNumberOfComponents() != 3 ||
-      this->Palette->GetNumberOfTuples() < 2)
-    {
-      this->Fail(output,
-        vtkErrorCode::UnknownError,
-        "vtkLightFieldCapture: projectors without painted masks need a Palette (3 x uint8 per "
-        "label, entry 0 = unlabelled) to generate their masks from the mesh labels");
+      this->Fail(output, vtkErrorCode::UnknownError, problem);
       return 0;
     }
-    else
-    {
-      if (vtkDataArray* parts = input->GetCellData()->GetArray("Label"))
-      {
-        double range[2];
-        parts->GetRange(range, 0);
-        if (range[1] >= this->Palette->GetNumberOfTuples())
-        {
-          this->Fail(output,
-            vtkErrorCode::UnknownError,
-            "vtkLightFieldCapture: the mesh has part label " +
-              std::to_string(static_cast<long long>(range[1])) + " but the palette colours only " +
-              std::to_string(this->Palette->GetNumberOfTuples() - 1) +
-              " labels; give a palette with one colour per part");
-          return 0;
-        }
-      }
-      masks->SetDimensions(projectorWidth, projectorHeight, projectorCount);
-      vtkNew<vtkUnsignedCharArray> generated;
-      generated->SetName("Mask");
-      generated->SetNumberOfComponents(3);
-      generated->SetNumberOfTuples(masks->GetNumberOfPoints());
-      masks->GetPointData()->SetScalars(generated);
-      maskArray = generated;
-    }
   }
-  output->SetLayout(width, height, views);
-  output->SetRig(rig);
-  std::ostringstream provenance;
-  provenance << "{\"generator\": \"vtkLightFieldCapture\", \"light\": \""
-             << (this->SceneFixedLight ? "scene-fixed" : "coaxial")
-             << "\", \"ambient\": " << this->Ambient << "}";
-  output->SetProvenance(provenance.str().c_str());
-  auto* coaxial = this->CaptureCoaxial
-    ? static_cast<unsigned char*>(output->AllocatePass(vtkLightField::COAXIAL)->GetVoidPointer(0))
-    : nullptr;
-  auto* label = this->CaptureLabel
-    ? static_cast<unsigned char*>(output->AllocatePass(vtkLightField::LABEL)->GetVoidPointer(0))
-    : nullptr;
-  auto* depth = this->CaptureDepth
-    ? static_cast<float*>(output->AllocatePass(vtkLightField::DEPTH)->GetVoidPointer(0))
-    : nullptr;
+  const PassBuffers passes = SetUpOutput(this, output, rig, project ? projectors.GetPointer() : nullptr, masks);
 
-  if (project)
-  {
-    output->SetProjectors(projectors);
-    output->SetProjectorMasks(masks);
-  }
-  if (this->Palette)
-  {
-    vtkNew<vtkUnsignedCharArray> palette;
-    palette->DeepCopy(this->Palette);
-    output->SetPalette(palette);
-  }
-  auto* coded = project
-    ? static_cast<unsigned char*>(output->AllocatePass(vtkLightField::CODED)->GetVoidPointer(0))
-    : nullptr;
-  auto* flood = project
-    ? static_cast<unsigned char*>(output->AllocatePass(vtkLightField::FLOOD)->GetVoidPointer(0))
-    : nullptr;
-
-  // Coaxial pass: albedo from the texture, the "RGB" array or white.
   vtkNew<vtkPolyData> mesh;
   mesh->ShallowCopy(input);
-  vtkNew<vtkPolyDataMapper> shadedMapper;
-  shadedMapper->SetInputData(mesh);
-  shadedMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> shaded;
-  shaded->SetMapper(shadedMapper);
-  vtkProperty* material = shaded->GetProperty();
-  material->SetColor(1.0, 1.0, 1.0);
-  material->SetAmbient(this->Ambient);
-  material->SetDiffuse(1.0 - this->Ambient);
-  material->SetSpecular(0.0);
-  vtkNew<vtkTexture> texture;
-  if (textureImage && mesh->GetPointData()->GetTCoords())
+  vtkNew<vtkUnsignedCharArray> labelColours;
+  const std::string badLabel = ColourLabels(mesh, labelColours);
+  if (!badLabel.empty())
   {
-    vtkNew<vtkImageData> image;
-    image->ShallowCopy(textureImage);
-    texture->SetInputData(image);
-    texture->InterpolateOn();
-    texture->RepeatOn();
-    shaded->SetTexture(texture);
+    vtkErrorMacro(<< badLabel);
+    return 0;
   }
-  else if (vtkDataArray* rgb = FindAlbedo(mesh->GetPointData()))
-  {
-    shadedMapper->ScalarVisibilityOn();
-    shadedMapper->SetScalarModeToUsePointFieldData();
-    shadedMapper->SelectColorArray(rgb->GetName());
-    shadedMapper->SetColorModeToDirectScalars();
-  }
-  else if (vtkDataArray* cellRgb = FindAlbedo(mesh->GetCellData()))
-  {
-    shadedMapper->ScalarVisibilityOn();
-    shadedMapper->SetScalarModeToUseCellFieldData();
-    shadedMapper->SelectColorArray(cellRgb->GetName());
-    shadedMapper->SetColorModeToDirectScalars();
-  }
-
-  // Label pass: each cell coloured (label, label, label), read back exactly.
-  vtkNew<vtkUnsignedCharArray> labelColors;
-  labelColors->SetName("LabelColor");
-  labelColors->SetNumberOfComponents(3);
-  labelColors->SetNumberOfTuples(mesh->GetNumberOfCells());
-  vtkDataArray* labels = mesh->GetCellData()->GetArray("Label");
-  for (vtkIdType cell = 0; cell < mesh->GetNumberOfCells(); ++cell)
-  {
-    const double value = labels ? labels->GetComponent(cell, 0) : 1.0;
-    if (!(value >= 0.0 && value <= 255.0) || value != std::floor(value))
-    {
-      vtkErrorMacro("Cell " << cell << " of the input mesh has Label " << value
-                            << "; labels must be integers in [0, 255].");
-      return 0;
-    }
-    const auto byte = static_cast<unsigned char>(value);
-    const unsigned char color[3] = { byte, byte, byte };
-    labelColors->SetTypedTuple(cell, color);
-  }
-  vtkNew<vtkPolyData> labelMesh;
-  labelMesh->CopyStructure(mesh);
-  labelMesh->GetCellData()->AddArray(labelColors);
-  vtkNew<vtkPolyDataMapper> flatMapper;
-  flatMapper->SetInputData(labelMesh);
-  flatMapper->ScalarVisibilityOn();
-  flatMapper->SetScalarModeToUseCellFieldData();
-  flatMapper->SelectColorArray("LabelColor");
-  flatMapper->SetColorModeToDirectScalars();
-  flatMapper->InterpolateScalarsBeforeMappingOff();
-  vtkNew<vtkActor> flat;
-  flat->SetMapper(flatMapper);
-  flat->GetProperty()->LightingOff();
-  flat->GetProperty()->SetInterpolationToFlat();
-  flat->GetProperty()->SetAmbient(0.0);
-  flat->GetProperty()->SetDiffuse(1.0);
-
-  // One offscreen window for all views; no multisampling, so every pixel
-  // of the Label pass belongs to exactly one cell.
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetAlphaBitPlanes(0);
-  window->SetSize(width, height);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  renderer->AutomaticLightCreationOff();
-  renderer->TwoSidedLightingOn();
-  renderer->UseFXAAOff();
-  renderer->AddActor(shaded);
-  renderer->AddActor(flat);
-  window->AddRenderer(renderer);
-
-  // A point light, not a spotlight, not attenuated (DESIGN.md section 5).
-  vtkNew<vtkLight> lamp;
-  lamp->SetLightTypeToSceneLight();
-  lamp->SetPositional(true);
-  lamp->SetConeAngle(180.0);
-  lamp->SetAttenuationValues(1.0, 0.0, 0.0);
-  lamp->SetColor(1.0, 1.0, 1.0);
-  lamp->SetIntensity(1.0);
-  renderer->AddLight(lamp);
-  double fixedLamp[3];
-  rig->GetCameraCenter(0, fixedLamp);
-
-  vtkCamera* camera = renderer->GetActiveCamera();
-  vtkNew<vtkUnsignedCharArray> rgbBuffer;
-
-  // Window depth d in [0, 1] back to the camera-space distance along the
-  // optical axis of the perspective frustum [n, f]; 0 where nothing is seen.
-  auto readDepth = [&](int w, int h, float* z)
-  {
-    window->GetZbufferData(0, 0, w - 1, h - 1, z);
-    double range[2];
-    camera->GetClippingRange(range);
-    const double n = range[0];
-    const double f = range[1];
-    for (vtkIdType p = 0; p < static_cast<vtkIdType>(w) * h; ++p)
-    {
-      z[p] = z[p] >= 1.0f ? 0.0f : static_cast<float>(lfd::WindowDepthToDistance(z[p], n, f));
-    }
-  };
-
-  // Each projector's depth map (its visibility), and its generated mask:
-  // the palette colour of the label it sees at each of its pixels.
-  std::vector<float> projectorDepth(projectorPixels * projectorCount);
+  CaptureStudio studio(this, mesh, textureImage, labelColours, bounds);
+  const int width = rig->GetImageSize()[0];
+  const int height = rig->GetImageSize()[1];
+  studio.SetSize(width, height);
+  std::unique_ptr<ProjectorSimulation> simulation;
   if (project)
   {
-    window->SetSize(projectorWidth, projectorHeight);
-    shaded->VisibilityOff();
-    flat->VisibilityOn();
-    for (int p = 0; p < projectorCount; ++p)
-    {
-      projectors->ApplyToCamera(p, camera);
-      SetTightClippingRange(camera, bounds);
-      window->Render();
-      readDepth(projectorWidth, projectorHeight, projectorDepth.data() + p * projectorPixels);
-      if (!this->ProjectorMasks)
-      {
-        window->GetPixelData(0, 0, projectorWidth - 1, projectorHeight - 1, 0, rgbBuffer, 0);
-        const vtkIdType colours = this->Palette->GetNumberOfTuples();
-        for (vtkIdType q = 0; q < projectorPixels; ++q)
-        {
-          const vtkIdType part = rgbBuffer->GetValue(3 * q);
-          for (int c = 0; c < 3; ++c)
-          {
-            maskArray->SetTypedComponent(p * projectorPixels + q,
-              c,
-              part < colours ? this->Palette->GetTypedComponent(part, c) : 0);
-          }
-        }
-      }
-    }
-    window->SetSize(width, height);
+    simulation.reset(new ProjectorSimulation(this, projectors, maskArray, width * height));
+    simulation->RenderDepthMaps(studio, width, height);
   }
-  std::vector<float> viewDepth(project && !depth ? pixels : 0);
-  vtkNew<vtkUnsignedCharArray> albedo;
-  std::vector<glm::dvec3> surface(project ? pixels : 0);
-  std::vector<double> codedSum(project ? 3 * pixels : 0), floodSum(project ? 3 * pixels : 0);
-  std::mt19937 random(static_cast<unsigned int>(this->NoiseSeed));
-  std::normal_distribution<double> noise(0.0, this->ProjectorNoise);
-
-  for (int view = 0; view < views && !this->GetAbortExecute(); ++view)
-  {
-    rig->ApplyToCamera(view, camera);
-    SetTightClippingRange(camera, bounds);
-    const vtkIdType slice = view * pixels;
-
-    if (coaxial)
-    {
-      shaded->VisibilityOn();
-      flat->VisibilityOff();
-      lamp->SetPosition(this->SceneFixedLight ? fixedLamp : camera->GetPosition());
-      lamp->SetFocalPoint(camera->GetFocalPoint());
-      window->Render();
-      // Rows come back bottom row first: vtkLightField's row order.
-      window->GetPixelData(0, 0, width - 1, height - 1, 0, rgbBuffer, 0);
-      std::copy_n(rgbBuffer->GetPointer(0), 3 * pixels, coaxial + 3 * slice);
-    }
-
-    float* z = depth ? depth + slice : (project ? viewDepth.data() : nullptr);
-    if (label || z)
-    {
-      shaded->VisibilityOff();
-      flat->VisibilityOn();
-      window->Render();
-      if (label)
-      {
-        window->GetPixelData(0, 0, width - 1, height - 1, 0, rgbBuffer, 0);
-        const unsigned char* red = rgbBuffer->GetPointer(0);
-        for (vtkIdType p = 0; p < pixels; ++p)
-        {
-          label[slice + p] = red[3 * p];
-        }
-      }
-      if (z)
-      {
-        readDepth(width, height, z);
-      }
-    }
-
-    if (project)
-    {
-      // The albedo (unlit) for the room light, if any, then each
-      // projector's Lambertian irradiance x albedo, masked by its visibility.
-      shaded->VisibilityOn();
-      flat->VisibilityOff();
-      material->SetAmbient(0.0);
-      material->SetDiffuse(1.0);
-      if (this->ProjectorAmbient > 0.0)
-      {
-        material->LightingOff();
-        window->Render();
-        window->GetPixelData(0, 0, width - 1, height - 1, 0, albedo, 0);
-        material->LightingOn();
-      }
-      std::fill(codedSum.begin(), codedSum.end(), 0.0);
-      std::fill(floodSum.begin(), floodSum.end(), 0.0);
-      // The surface point each pixel sees, from the depth.
-      const lfd::PinholeCamera::Unprojection unproject = rig->GetCamera(view).GetUnprojection();
-      for (vtkIdType q = 0; q < pixels; ++q)
-      {
-        const glm::dvec2 pixel(
-          static_cast<double>(q % width), static_cast<double>(height - 1 - q / width));
-        surface[q] = unproject(pixel, static_cast<double>(z[q]));
-      }
-      for (int p = 0; p < projectorCount; ++p)
-      {
-        const lfd::PinholeCamera& projector = projectors->GetCamera(p);
-        const glm::dvec3 lampPosition = projector.Center();
-        const glm::dvec3 lampTarget = lampPosition + projector.Forward();
-        lamp->SetPosition(lampPosition.x, lampPosition.y, lampPosition.z);
-        lamp->SetFocalPoint(lampTarget.x, lampTarget.y, lampTarget.z);
-        window->Render();
-        window->GetPixelData(0, 0, width - 1, height - 1, 0, rgbBuffer, 0);
-        const float* mapDepth = projectorDepth.data() + p * projectorPixels;
-        const double footprint = 1.0 / projector.K[0][0];
-        for (vtkIdType q = 0; q < pixels; ++q)
-        {
-          if (!(z[q] > 0.0f))
-          {
-            continue;
-          }
-          const glm::dvec3& X = surface[q];
-          glm::dvec2 pixel;
-          if (!projector.Project(X, pixel))
-          {
-            continue;
-          }
-          const long u = std::lround(pixel.x);
-          const long v = std::lround(pixel.y);
-          if (u < 0 || v < 0 || u >= projectorWidth || v >= projectorHeight)
-          {
-            continue;
-          }
-          // Seen by the projector: no surface in front of X along its ray
-          // (tolerance: a few projector pixels of slope, plus 0.5 %).
-          const vtkIdType projected = (projectorHeight - 1 - v) * projectorWidth + u;
-          const double along = (projector.R * X + projector.t).z;
-          const double seen = mapDepth[projected];
-          if (!(seen > 0.0) || along > seen + along * (0.005 + 3.0 * footprint))
-          {
-            continue;
-          }
-          const unsigned char* colour =
-            maskArray->GetPointer(3 * (p * projectorPixels + projected));
-          for (int c = 0; c < 3; ++c)
-          {
-            const double irradiance = rgbBuffer->GetValue(3 * q + c);
-            codedSum[3 * q + c] += irradiance * colour[c] / 255.0;
-            floodSum[3 * q + c] += irradiance;
-          }
-        }
-      }
-      material->SetAmbient(this->Ambient);
-      material->SetDiffuse(1.0 - this->Ambient);
-      auto expose = [&](double value)
-      {
-        value += this->ProjectorNoise > 0.0 ? noise(random) : 0.0;
-        return static_cast<unsigned char>(std::lround(std::min(255.0, std::max(0.0, value))));
-      };
-      for (vtkIdType i = 0; i < 3 * pixels; ++i)
-      {
-        const double room =
-          this->ProjectorAmbient > 0.0 ? this->ProjectorAmbient * albedo->GetValue(i) : 0.0;
-        coded[3 * slice + i] = expose(codedSum[i] + room);
-        flood[3 * slice + i] = expose(floodSum[i] + room);
-      }
-    }
-    this->UpdateProgress(static_cast<double>(view + 1) / views);
-  }
+  CaptureViews(this, studio, rig, passes, simulation.get());
   return 1;
 }
 

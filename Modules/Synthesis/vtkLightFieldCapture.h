@@ -31,7 +31,9 @@
  * holds the bounds fills the narrower field of view with a 10 % margin.
  * Rows are symmetric about Center, RowSpacing apart (0 = 0.05 x radius).
  * Alternatively SetRig() captures from the views of a given rig (its image
- * size wins over Width and Height).
+ * size wins over Width and Height). The views are rendered as ideal
+ * pinholes (vtkCamera): a rig or projector rig with lens distortion is
+ * refused with an error.
  *
  *
  * **Projectors** (Chen et al. 2005, section 4.1). With NumberOfProjectors

@@ -1,6 +1,7 @@
 // Round trip of a light-field dataset through vtkLightFieldWriter and
 // vtkLightFieldReader: every pass with exact pixel values and the row
-// order checked against VTK's own PNG reader, the rig, names, palette,
+// order checked against VTK's own PNG reader, the rig (with a lens
+// distortion, written only where it is not zero), names, palette,
 // projectors with their masks and provenance; pass selection and progress events; atomic
 // replacement of an existing dataset.
 #include "lfdIOTestUtilities.h"
@@ -17,6 +18,8 @@
 #include "vtkPNGReader.h"
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -98,6 +101,8 @@ vtkSmartPointer<vtkLightField> MakeLightField()
   rig->GetTranslation(1, t);
   t[0] += std::sqrt(2.0) * 1e-5;
   rig->SetView(1, K, R, t);
+  const double lens[5] = { -0.2, 0.05 / 3.0, 1e-3, -5e-4, std::sqrt(2.0) * 1e-4 };
+  rig->SetDistortion(2, lens);
   rig->SetViewName(0, "front");
   rig->SetViewName(1, "side \"quoted\"");
   lightField->SetRig(rig);
@@ -157,15 +162,10 @@ int CountMismatches(vtkLightField* a, vtkLightField* b, int pass)
   }
   return mismatches;
 }
-}
-
-int TestLightFieldIO(int, char*[])
+// Writes the dataset: files, no temporary siblings, progress events.
+void CheckWrite(vtkLightFieldWriter* writer, vtkLightField* original, const std::string& folder)
 {
-  const std::string folder = lfdtest::ScratchFolder("TestLightFieldIO");
   const std::string dataset = folder + "/fish.lf";
-  vtkSmartPointer<vtkLightField> original = MakeLightField();
-
-  vtkNew<vtkLightFieldWriter> writer;
   vtkNew<ProgressCounter> writeProgress;
   writer->AddObserver(vtkCommand::ProgressEvent, writeProgress);
   writer->SetInputData(original);
@@ -179,10 +179,14 @@ int TestLightFieldIO(int, char*[])
   Check(writeProgress->Events >= Views * vtkLightField::NUMBER_OF_PASSES,
     "writer progress events: " + std::to_string(writeProgress->Events));
   CheckEqual(writeProgress->Last, 1.0, "last writer progress");
+  writer->RemoveObservers(vtkCommand::ProgressEvent);
+}
 
-  // Row order of the files, checked with VTK's PNG reader (which also puts
-  // the bottom row first): view 2 of the coaxial pass must be identical, and
-  // the top-left pixel of the file must be OpenCV (0, 0).
+// Row order of the files, checked with VTK's PNG reader (which also puts
+// the bottom row first): view 2 of the coaxial pass must be identical, and
+// the top-left pixel of the file must be OpenCV (0, 0).
+void CheckRowOrder(const std::string& dataset)
+{
   vtkNew<vtkPNGReader> png;
   png->SetFileName((dataset + "/coaxial/view_0002.png").c_str());
   png->Update();
@@ -200,46 +204,27 @@ int TestLightFieldIO(int, char*[])
     }
   }
   CheckEqual(pngMismatches, 0, "coaxial/view_0002.png vs. expected (file top row = y 0)");
+}
 
-  vtkNew<vtkLightFieldReader> reader;
-  vtkNew<ProgressCounter> readProgress;
-  reader->AddObserver(vtkCommand::ProgressEvent, readProgress);
-  reader->SetFileName(dataset.c_str());
-  reader->Update();
-  vtkLightField* read = reader->GetOutput();
-  CheckEqual(reader->GetErrorCode(), 0ul, "reader error code");
-  CheckEqual(read->GetWidth(), Width, "width");
-  CheckEqual(read->GetHeight(), Height, "height");
-  CheckEqual(read->GetNumberOfViews(), Views, "views");
-  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
-  {
-    CheckEqual(CountMismatches(original, read, pass),
-      0,
-      std::string("mismatching values in pass ") + vtkLightField::GetPassName(pass));
-  }
-  Check(readProgress->Events >= Views * vtkLightField::NUMBER_OF_PASSES,
-    "reader progress events: " + std::to_string(readProgress->Events));
-  const float depth =
-    read->GetPass(vtkLightField::DEPTH)->GetComponent(read->GetPointIndex(2, 6, 4), 0);
-  CheckEqual(depth,
-    static_cast<float>(PassValue(vtkLightField::DEPTH, 2, 6, 4, 0)),
-    "depth at view 2, (6, 4)");
-
-  vtkCameraRig* a = original->GetRig();
-  vtkCameraRig* b = read->GetRig();
+// The calibration, bit for bit, the lens distortion only where it was set,
+// and the view names.
+void CheckRig(vtkCameraRig* a, vtkCameraRig* b, const std::string& dataset)
+{
   CheckEqual(b->GetNumberOfViews(), Views, "rig views");
   CheckEqual(b->GetImageSize()[0], Width, "rig image width");
   CheckEqual(b->GetImageSize()[1], Height, "rig image height");
   int rigMismatches = 0;
   for (int i = 0; i < Views; ++i)
   {
-    double Ka[9], Kb[9], Ra[9], Rb[9], ta[3], tb[3];
+    double Ka[9], Kb[9], Ra[9], Rb[9], ta[3], tb[3], da[5], db[5];
     a->GetIntrinsics(i, Ka);
     b->GetIntrinsics(i, Kb);
     a->GetRotation(i, Ra);
     b->GetRotation(i, Rb);
     a->GetTranslation(i, ta);
     b->GetTranslation(i, tb);
+    a->GetDistortion(i, da);
+    b->GetDistortion(i, db);
     for (int k = 0; k < 9; ++k)
     {
       rigMismatches += (Ka[k] == Kb[k] ? 0 : 1) + (Ra[k] == Rb[k] ? 0 : 1);
@@ -248,10 +233,25 @@ int TestLightFieldIO(int, char*[])
     {
       rigMismatches += ta[k] == tb[k] ? 0 : 1;
     }
+    for (int k = 0; k < 5; ++k)
+    {
+      rigMismatches += da[k] == db[k] ? 0 : 1;
+    }
   }
   CheckEqual(rigMismatches, 0, "rig values differing (bitwise) after the round trip");
+  Check(b->HasDistortion(), "the read rig has the lens distortion");
+  const nlohmann::json views =
+    nlohmann::json::parse(lfdtest::ReadText(dataset + "/lightfield.json"))["views"];
+  Check(!views[0].contains("distortion") && !views[1].contains("distortion") &&
+      views[2]["distortion"].size() == 5,
+    "lightfield.json has \"distortion\" in view 2 only (none written when zero)");
   CheckEqual(std::string(b->GetViewName(0)), std::string("front"), "view 0 name");
   CheckEqual(std::string(b->GetViewName(1)), std::string("side \"quoted\""), "view 1 name");
+}
+
+// Provenance, palette, projectors and their masks.
+void CheckExtras(vtkLightField* original, vtkLightField* read)
+{
   CheckEqual(std::string(read->GetProvenance() ? read->GetProvenance() : ""),
     std::string("{\"generator\":\"TestLightFieldIO\",\"seed\":42}"),
     "provenance");
@@ -279,8 +279,41 @@ int TestLightFieldIO(int, char*[])
     CheckEqual(maskMismatches, 0, "mask values differing after the round trip");
     CheckEqual(masks->GetDimensions()[2], 2, "masks");
   }
+}
 
-  // Only the Label pass.
+// Reads the whole dataset back: every pass, the rig and the extras.
+void CheckRead(vtkLightFieldReader* reader, vtkLightField* original, const std::string& dataset)
+{
+  vtkNew<ProgressCounter> readProgress;
+  reader->AddObserver(vtkCommand::ProgressEvent, readProgress);
+  reader->SetFileName(dataset.c_str());
+  reader->Update();
+  vtkLightField* read = reader->GetOutput();
+  CheckEqual(reader->GetErrorCode(), 0ul, "reader error code");
+  CheckEqual(read->GetWidth(), Width, "width");
+  CheckEqual(read->GetHeight(), Height, "height");
+  CheckEqual(read->GetNumberOfViews(), Views, "views");
+  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+  {
+    CheckEqual(CountMismatches(original, read, pass),
+      0,
+      std::string("mismatching values in pass ") + vtkLightField::GetPassName(pass));
+  }
+  Check(readProgress->Events >= Views * vtkLightField::NUMBER_OF_PASSES,
+    "reader progress events: " + std::to_string(readProgress->Events));
+  reader->RemoveObservers(vtkCommand::ProgressEvent);
+  const float depth =
+    read->GetPass(vtkLightField::DEPTH)->GetComponent(read->GetPointIndex(2, 6, 4), 0);
+  CheckEqual(depth,
+    static_cast<float>(PassValue(vtkLightField::DEPTH, 2, 6, 4, 0)),
+    "depth at view 2, (6, 4)");
+  CheckRig(original->GetRig(), read->GetRig(), dataset);
+  CheckExtras(original, read);
+}
+
+// Only the Label pass.
+void CheckPassSelection(vtkLightField* original, const std::string& dataset)
+{
   vtkNew<vtkLightFieldReader> labelsOnly;
   labelsOnly->SetFileName((dataset + "/lightfield.json").c_str());
   labelsOnly->ReadNoPasses();
@@ -296,6 +329,20 @@ int TestLightFieldIO(int, char*[])
     0,
     "label mismatches (Label only)");
   CheckEqual(labelsOnly->GetOutput()->GetRig()->GetNumberOfViews(), Views, "rig (Label only)");
+}
+}
+
+int TestLightFieldIO(int, char*[])
+{
+  const std::string folder = lfdtest::ScratchFolder("TestLightFieldIO");
+  const std::string dataset = folder + "/fish.lf";
+  vtkSmartPointer<vtkLightField> original = MakeLightField();
+  vtkNew<vtkLightFieldWriter> writer;
+  CheckWrite(writer, original, folder);
+  CheckRowOrder(dataset);
+  vtkNew<vtkLightFieldReader> reader;
+  CheckRead(reader, original, dataset);
+  CheckPassSelection(original, dataset);
 
   // Replacing the dataset: a light field with only two passes replaces the
   // five-pass one completely.

@@ -87,138 +87,176 @@ void WritePng(const std::string& path, int width, int height, int components)
   writer->SetFileName(path.c_str());
   writer->Write();
 }
-}
-
-int TestLightFieldIOErrors(int, char*[])
+// Copies of a valid dataset whose manifest is edited, and the check that
+// each fails to read with one line naming the manifest and the field.
+struct Cases
 {
-  const std::string folder = lfdtest::ScratchFolder("TestLightFieldIOErrors");
-  const std::string valid = folder + "/valid.lf";
-  std::string message;
-  lfdtest::Check(Write(MakeLightField(10), valid, message), "write the valid dataset");
-  const Json manifest = Json::parse(lfdtest::ReadText(valid + "/lightfield.json"));
+  std::string Folder;
+  std::string Valid;
+  Json Manifest;
+  int Number = 0;
+  std::string Message;
 
   // A copy of the valid dataset whose manifest is edited by `edit` (or
   // replaced by `text` when given).
-  int caseNumber = 0;
-  auto variant = [&](const std::function<void(Json&)>& edit, const std::string& text = "")
+  std::string Variant(const std::function<void(Json&)>& edit, const std::string& text = "")
   {
-    const std::string directory = folder + "/case" + std::to_string(++caseNumber) + ".lf";
-    fs::copy(valid, directory, fs::copy_options::recursive);
-    Json edited = manifest;
+    const std::string directory = this->Folder + "/case" + std::to_string(++this->Number) + ".lf";
+    fs::copy(this->Valid, directory, fs::copy_options::recursive);
+    Json edited = this->Manifest;
     if (edit)
     {
       edit(edited);
     }
     lfdtest::WriteText(directory + "/lightfield.json", text.empty() ? edited.dump(2) : text);
     return directory;
-  };
-  auto expectFailure =
-    [&](const std::string& name, const std::string& directory, std::vector<std::string> parts)
-  {
-    const bool ok = Read(directory, message);
-    parts.insert(parts.begin(), directory + "/lightfield.json");
-    lfdtest::CheckFailure(name, !ok, message, parts);
-  };
-
-  lfdtest::Check(Read(valid, message), "the valid dataset reads");
-
-  lfdtest::CheckFailure("missing dataset",
-    !Read(folder + "/nothing.lf", message),
-    message,
-    { folder + "/nothing.lf", "file not found" });
-  {
-    std::string text = manifest.dump(2);
-    text.replace(text.find("\"height\""), 0, "\"oops\" ");
-    expectFailure("bad JSON", variant(nullptr, text), { "not valid JSON", "line 3" });
   }
-  expectFailure("wrong format",
-    variant([](Json& j) { j["format"] = "lfd-scene"; }),
+
+  void ExpectFailure(const std::string& name,
+    const std::string& directory,
+    std::vector<std::string> parts)
+  {
+    const bool ok = Read(directory, this->Message);
+    parts.insert(parts.begin(), directory + "/lightfield.json");
+    lfdtest::CheckFailure(name, !ok, this->Message, parts);
+  }
+};
+
+// The file, its JSON and the header fields.
+void CheckHeaderErrors(Cases& cases)
+{
+  lfdtest::CheckFailure("missing dataset",
+    !Read(cases.Folder + "/nothing.lf", cases.Message),
+    cases.Message,
+    { cases.Folder + "/nothing.lf", "file not found" });
+  {
+    std::string text = cases.Manifest.dump(2);
+    text.replace(text.find("\"height\""), 0, "\"oops\" ");
+    cases.ExpectFailure("bad JSON", cases.Variant(nullptr, text), { "not valid JSON", "line 3" });
+  }
+  cases.ExpectFailure("wrong format",
+    cases.Variant([](Json& j) { j["format"] = "lfd-scene"; }),
     { "\"format\"", "lfd-lightfield" });
-  expectFailure("unsupported version",
-    variant([](Json& j) { j["version"] = 2; }),
+  cases.ExpectFailure("unsupported version",
+    cases.Variant([](Json& j) { j["version"] = 2; }),
     { "\"version\"", "unsupported version 2" });
-  expectFailure(
-    "version as string", variant([](Json& j) { j["version"] = "1"; }), { "\"version\"", "number" });
-  expectFailure(
-    "missing width", variant([](Json& j) { j.erase("width"); }), { "\"width\"", "missing" });
-  expectFailure(
-    "zero height", variant([](Json& j) { j["height"] = 0; }), { "\"height\"", "integer" });
-  expectFailure(
-    "missing views", variant([](Json& j) { j.erase("views"); }), { "\"views\"", "missing" });
-  expectFailure("K of 8 numbers",
-    variant([](Json& j) { j["views"][1]["K"].erase(8); }),
+  cases.ExpectFailure("version as string",
+    cases.Variant([](Json& j) { j["version"] = "1"; }),
+    { "\"version\"", "number" });
+  cases.ExpectFailure(
+    "missing width", cases.Variant([](Json& j) { j.erase("width"); }), { "\"width\"", "missing" });
+  cases.ExpectFailure(
+    "zero height", cases.Variant([](Json& j) { j["height"] = 0; }), { "\"height\"", "integer" });
+}
+
+// The views: K, R, t and the lens distortion.
+void CheckViewErrors(Cases& cases)
+{
+  cases.ExpectFailure(
+    "missing views", cases.Variant([](Json& j) { j.erase("views"); }), { "\"views\"", "missing" });
+  cases.ExpectFailure("K of 8 numbers",
+    cases.Variant([](Json& j) { j["views"][1]["K"].erase(8); }),
     { "\"views[1].K\"", "9 numbers" });
-  expectFailure("missing t",
-    variant([](Json& j) { j["views"][2].erase("t"); }),
+  cases.ExpectFailure("missing t",
+    cases.Variant([](Json& j) { j["views"][2].erase("t"); }),
     { "\"views[2].t\"", "missing" });
-  expectFailure("overflowing number in R",
-    variant(nullptr,
-      [&]
+  cases.ExpectFailure("overflowing number in R",
+    cases.Variant(nullptr,
+      [&cases]
       {
-        Json j = manifest;
+        Json j = cases.Manifest;
         j["views"][0]["R"][2] = 12345.5;
         std::string text = j.dump(2);
         text.replace(text.find("12345.5"), 7, "1e999");
         return text;
       }()),
     { "not valid JSON", "1e999" });
-  expectFailure("NaN token in K",
-    variant(nullptr,
-      [&]
+  cases.ExpectFailure("NaN token in K",
+    cases.Variant(nullptr,
+      [&cases]
       {
-        Json j = manifest;
+        Json j = cases.Manifest;
         j["views"][0]["K"][0] = 12345.5;
         std::string text = j.dump(2);
         text.replace(text.find("12345.5"), 7, "NaN");
         return text;
       }()),
     { "not valid JSON", "line" });
-  expectFailure("R not a rotation",
-    variant([](Json& j) { j["views"][1]["R"][0] = 2.0; }),
+  cases.ExpectFailure("R not a rotation",
+    cases.Variant([](Json& j) { j["views"][1]["R"][0] = 2.0; }),
     { "\"views[1].R\"", "rotation" });
-  expectFailure("string in t",
-    variant([](Json& j) { j["views"][1]["t"][1] = "x"; }),
+  cases.ExpectFailure("string in t",
+    cases.Variant([](Json& j) { j["views"][1]["t"][1] = "x"; }),
     { "\"views[1].t[1]\"", "number" });
-  expectFailure("unknown pass",
-    variant([](Json& j) { j["passes"]["normals"] = j["passes"]["label"]; }),
+  cases.ExpectFailure("distortion of 4 numbers",
+    cases.Variant(
+      [](Json& j) {
+        j["views"][1]["distortion"] = Json::array({ -0.2, 0.05, 0.0, 0.0 });
+      }),
+    { "\"views[1].distortion\"", "array of 5 numbers" });
+  cases.ExpectFailure("string in the distortion",
+    cases.Variant(
+      [](Json& j) {
+        j["views"][0]["distortion"] = Json::array({ "k1", 0, 0, 0, 0 });
+      }),
+    { "\"views[0].distortion[0]\"", "number" });
+  // k1 = -3 folds the 6 x 4 image: r (1 - 3 r^2) turns back at distorted
+  // radius 0.22, the corners are at 0.48.
+  cases.ExpectFailure("folding distortion",
+    cases.Variant(
+      [](Json& j) {
+        j["views"][2]["distortion"] = Json::array({ -3.0, 0, 0, 0, 0 });
+      }),
+    { "\"views[2].distortion\"", "folds the image" });
+}
+
+// The passes, the palette and the image files.
+void CheckPassErrors(Cases& cases)
+{
+  cases.ExpectFailure("unknown pass",
+    cases.Variant([](Json& j) { j["passes"]["normals"] = j["passes"]["label"]; }),
     { "\"passes.normals\"", "unknown pass" });
-  expectFailure("pass list too short",
-    variant([](Json& j) { j["passes"]["label"].erase(2); }),
+  cases.ExpectFailure("pass list too short",
+    cases.Variant([](Json& j) { j["passes"]["label"].erase(2); }),
     { "\"passes.label\"", "array of 3" });
-  expectFailure("palette value out of range",
-    variant(
+  cases.ExpectFailure("palette value out of range",
+    cases.Variant(
       [](Json& j) {
         j["palette"] = Json::array({ Json::array({ 0, 300, 0 }) });
       }),
     { "\"palette[0][1]\"", "[0, 255]" });
   {
-    const std::string directory = variant(nullptr);
+    const std::string directory = cases.Variant(nullptr);
     fs::remove(directory + "/coaxial/view_0002.png");
-    expectFailure("missing image",
+    cases.ExpectFailure("missing image",
       directory,
       { "\"passes.coaxial[2]\"", "coaxial/view_0002.png", "not found" });
   }
   {
-    const std::string directory = variant(nullptr);
+    const std::string directory = cases.Variant(nullptr);
     WritePng(directory + "/coaxial/view_0001.png", Width + 1, Height, 3);
-    expectFailure("image of the wrong size",
+    cases.ExpectFailure("image of the wrong size",
       directory,
       { "\"passes.coaxial[1]\"", "view_0001.png", "7x4", "6x4" });
   }
   {
-    const std::string directory = variant(nullptr);
+    const std::string directory = cases.Variant(nullptr);
     WritePng(directory + "/label/view_0000.png", Width, Height, 3);
-    expectFailure("label image with 3 channels",
+    cases.ExpectFailure("label image with 3 channels",
       directory,
       { "\"passes.label[0]\"", "view_0000.png", "3 channels" });
   }
   {
-    const std::string directory = variant(nullptr);
+    const std::string directory = cases.Variant(nullptr);
     lfdtest::WriteText(directory + "/label/view_0001.png", "not a png");
-    expectFailure("corrupt image", directory, { "\"passes.label[1]\"", "view_0001.png" });
+    cases.ExpectFailure("corrupt image", directory, { "\"passes.label[1]\"", "view_0001.png" });
   }
+}
 
-  // Writer failures leave nothing that looks valid.
+// Writer failures leave nothing that looks valid.
+void CheckWriterErrors(const std::string& folder, const std::string& valid)
+{
+  std::string message;
   {
     const std::string notDataset = folder + "/documents";
     fs::create_directories(notDataset);
@@ -254,6 +292,33 @@ int TestLightFieldIOErrors(int, char*[])
     lfdtest::Check(message.find(".tmp-") == std::string::npos, "the message names the target");
     lfdtest::Check(!fs::exists(blocker + "/out.lf"), "nothing written");
   }
-  lfdtest::CheckEqual(lfdtest::CountEntries(folder, "valid.lf."), 0, "temporary siblings left");
+  {
+    vtkSmartPointer<vtkLightField> folded = MakeLightField(50);
+    const double lens[5] = { -3.0, 0.0, 0.0, 0.0, 0.0 };
+    folded->GetRig()->SetDistortion(1, lens);
+    const bool ok = Write(folded, folder + "/folded.lf", message);
+    lfdtest::CheckFailure("write a rig with a folding distortion",
+      !ok,
+      message,
+      { folder + "/folded.lf", "views[1].distortion", "folds the image" });
+    lfdtest::Check(!fs::exists(folder + "/folded.lf"), "nothing written for the folded rig");
+  }
+}
+}
+
+int TestLightFieldIOErrors(int, char*[])
+{
+  Cases cases;
+  cases.Folder = lfdtest::ScratchFolder("TestLightFieldIOErrors");
+  cases.Valid = cases.Folder + "/valid.lf";
+  lfdtest::Check(Write(MakeLightField(10), cases.Valid, cases.Message), "write the valid dataset");
+  cases.Manifest = Json::parse(lfdtest::ReadText(cases.Valid + "/lightfield.json"));
+  lfdtest::Check(Read(cases.Valid, cases.Message), "the valid dataset reads");
+  CheckHeaderErrors(cases);
+  CheckViewErrors(cases);
+  CheckPassErrors(cases);
+  CheckWriterErrors(cases.Folder, cases.Valid);
+  lfdtest::CheckEqual(
+    lfdtest::CountEntries(cases.Folder, "valid.lf."), 0, "temporary siblings left");
   return lfdtest::Result();
 }

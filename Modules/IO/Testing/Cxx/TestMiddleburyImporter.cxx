@@ -25,37 +25,11 @@ using lfdtest::Check;
 using lfdtest::CheckEqual;
 using lfdtest::CheckRange;
 
-// argv[1]: the folder holding templeR_par.txt and the 47 PNGs (ExternalData,
-// see CMake/lfdTestData.cmake).
-int TestMiddleburyImporter(int argc, char* argv[])
+namespace
 {
-  const std::string folder = argc > 1 ? argv[1] : "";
-  const std::string par = folder + "/templeR_par.txt";
-  if (!std::filesystem::is_regular_file(par))
-  {
-    std::cout << "skipped: " << par
-              << " not found (templeRing data: see the README's Tests section)\n";
-    return VTK_SKIP_RETURN_CODE;
-  }
-  vtkNew<vtkMiddleburyImporter> importer;
-  importer->SetFileName(par.c_str());
-  importer->Update();
-  vtkLightField* lightField = importer->GetOutput();
-  // Everything below reads the output: a failed import stops here.
-  vtkDataArray* coaxial = lightField->GetPass(vtkLightField::COAXIAL);
-  vtkCameraRig* rig = lightField->GetRig();
-  if (!CheckEqual(importer->GetErrorCode(), 0ul, "importer error code") ||
-    !CheckEqual(lightField->GetNumberOfViews(), 47, "views") ||
-    !CheckEqual(lightField->GetWidth(), 640, "width") ||
-    !CheckEqual(lightField->GetHeight(), 480, "height") ||
-    !Check(coaxial && coaxial->GetNumberOfComponents() == 3, "Coaxial pass, RGB") ||
-    !Check(rig && rig->GetNumberOfViews() == 47, "rig of 47 views"))
-  {
-    return EXIT_FAILURE;
-  }
-  CheckEqual(std::string(rig->GetViewName(3)), std::string("templeR0004.png"), "view 3 name");
-
-  // Pixels: view 10 against VTK's own PNG reader (both bottom row first).
+// Pixels: view 10 against VTK's own PNG reader (both bottom row first).
+void CheckPixels(const std::string& folder, vtkDataArray* coaxial, vtkCameraRig* rig)
+{
   vtkNew<vtkPNGReader> png;
   png->SetFileName((folder + "/" + rig->GetViewName(10)).c_str());
   png->Update();
@@ -74,19 +48,14 @@ int TestMiddleburyImporter(int argc, char* argv[])
   }
   CheckEqual(
     mismatches, 0, "pixels of view 10 differing from " + std::string(rig->GetViewName(10)));
+}
 
-  // Calibration as given: line 2 of the par file is templeR0001.png.
-  double K[9], t[3];
-  rig->GetIntrinsics(0, K);
-  rig->GetTranslation(0, t);
-  CheckEqual(K[0], 1520.4, "K[0] of view 0");
-  CheckEqual(K[5], 246.87, "K[5] of view 0");
-  CheckEqual(t[2], 0.52269561933, "t[2] of view 0");
-
-  // The ring (measured independently from the par file: the camera centres
-  // lie on a circle of radius 0.5626 in a plane whose normal is within 2.5
-  // degrees of world -y; templeR0030 repeats templeR0001's calibration
-  // exactly; the largest azimuth step is 34.1 degrees).
+// The ring (measured independently from the par file: the camera centres
+// lie on a circle of radius 0.5626 in a plane whose normal is within 2.5
+// degrees of world -y; templeR0030 repeats templeR0001's calibration
+// exactly; the largest azimuth step is 34.1 degrees).
+void CheckRing(vtkCameraRig* rig)
+{
   Check(rig->HasCylinder(), "the cylinder is fitted");
   const double* axis = rig->GetAxis();
   const double* center = rig->GetCenter();
@@ -123,13 +92,17 @@ int TestMiddleburyImporter(int argc, char* argv[])
     gap = std::max(gap, azimuths[i] - azimuths[i - 1]);
   }
   CheckRange(gap, 30.0, 36.0, "largest azimuth gap (degrees)");
+}
 
-  // In templeRing the image x axis runs along the ring axis; the views taken
-  // from the opposite latitude are rotated by 180 degrees, so their x axis
-  // points the other way. Their calibration includes the rotation: the
-  // temple's bounding-box centre (README.txt) projects inside every image,
-  // and a point moved along the ring axis moves along image x in the
-  // direction given by that view's own x axis.
+// In templeRing the image x axis runs along the ring axis; the views taken
+// from the opposite latitude are rotated by 180 degrees, so their x axis
+// points the other way. Their calibration includes the rotation: the
+// temple's bounding-box centre (README.txt) projects inside every image,
+// and a point moved along the ring axis moves along image x in the
+// direction given by that view's own x axis.
+void CheckOrientation(vtkCameraRig* rig)
+{
+  const double* axis = rig->GetAxis();
   const double temple[3] = {
     0.5 * (-0.023121 + 0.078626), 0.5 * (-0.038009 + 0.121636), 0.5 * (-0.091940 + -0.017395)
   };
@@ -177,5 +150,52 @@ int TestMiddleburyImporter(int argc, char* argv[])
     0.0,
     1e-9,
     "pixel distance of the temple centre in views 0 and 29");
+}
+}
+
+// argv[1]: the folder holding templeR_par.txt and the 47 PNGs (ExternalData,
+// see CMake/lfdTestData.cmake).
+int TestMiddleburyImporter(int argc, char* argv[])
+{
+  const std::string folder = argc > 1 ? argv[1] : "";
+  const std::string par = folder + "/templeR_par.txt";
+  if (!std::filesystem::is_regular_file(par))
+  {
+    std::cout << "skipped: " << par
+              << " not found (templeRing data: see the README's Tests section)\n";
+    return VTK_SKIP_RETURN_CODE;
+  }
+  vtkNew<vtkMiddleburyImporter> importer;
+  importer->SetFileName(par.c_str());
+  importer->Update();
+  vtkLightField* lightField = importer->GetOutput();
+  // Everything below reads the output: a failed import stops here.
+  vtkDataArray* coaxial = lightField->GetPass(vtkLightField::COAXIAL);
+  vtkCameraRig* rig = lightField->GetRig();
+  if (!CheckEqual(importer->GetErrorCode(), 0ul, "importer error code") ||
+    !CheckEqual(lightField->GetNumberOfViews(), 47, "views") ||
+    !CheckEqual(lightField->GetWidth(), 640, "width") ||
+    !CheckEqual(lightField->GetHeight(), 480, "height") ||
+    !Check(coaxial && coaxial->GetNumberOfComponents() == 3, "Coaxial pass, RGB") ||
+    !Check(rig && rig->GetNumberOfViews() == 47, "rig of 47 views"))
+  {
+    return EXIT_FAILURE;
+  }
+  CheckEqual(std::string(rig->GetViewName(3)), std::string("templeR0004.png"), "view 3 name");
+
+  CheckPixels(folder, coaxial, rig);
+
+  // Calibration as given: line 2 of the par file is templeR0001.png.
+  double K[9], t[3];
+  rig->GetIntrinsics(0, K);
+  rig->GetTranslation(0, t);
+  CheckEqual(K[0], 1520.4, "K[0] of view 0");
+  CheckEqual(K[5], 246.87, "K[5] of view 0");
+  CheckEqual(t[2], 0.52269561933, "t[2] of view 0");
+
+  // A Middlebury calibration has no lens distortion.
+  Check(!rig->HasDistortion(), "no lens distortion in the imported rig");
+  CheckRing(rig);
+  CheckOrientation(rig);
   return lfdtest::Result();
 }

@@ -1,5 +1,6 @@
 // The rig of vtkLightFieldCapture: layout, automatic framing and row
-// spacing, progress events, pass selection and capture from a given rig.
+// spacing, progress events, pass selection and capture from a given rig
+// (refused when it has lens distortion).
 #include "lfdSynthesisTestUtilities.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -121,6 +122,20 @@ int TestLightFieldCaptureRig(int, char*[])
     "camera 3 of the output rig is the given one",
     std::sqrt(vtkMath::Distance2BetweenPoints(c0, c1)),
     1e-12);
+
+  // A rig with lens distortion is refused: the views are rendered as ideal
+  // pinholes, which would not be the images its calibration describes.
+  const double lens[5] = { -0.2, 0.05, 1e-3, -5e-4, 0.0 };
+  given->SetDistortion(2, lens);
+  vtkNew<vtkTest::ErrorObserver> lensErrors;
+  capture->AddObserver(vtkCommand::ErrorEvent, lensErrors);
+  capture->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, lensErrors);
+  capture->Modified();
+  capture->Update();
+  const bool lensRefused = lensErrors->GetError() &&
+    lensErrors->GetErrorMessage().find("The rig has lens distortion; vtkLightFieldCapture renders "
+                                       "ideal pinhole views only") != std::string::npos;
+  lfdtest::Check(lensRefused, "rig with lens distortion refused", lensRefused, 1);
 
   // An empty mesh is refused with an error that says so.
   vtkNew<vtkLightFieldCapture> refusing;
