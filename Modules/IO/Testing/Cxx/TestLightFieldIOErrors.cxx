@@ -6,6 +6,7 @@
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldReader.h"
 #include "vtkLightFieldWriter.h"
 #include "vtkNew.h"
@@ -44,12 +45,12 @@ vtkSmartPointer<vtkLightField> MakeLightField(int fill)
 bool Write(vtkLightField* lightField, const std::string& directory, std::string& message)
 {
   vtkNew<vtkLightFieldWriter> writer;
-  vtkNew<lfdtest::ErrorCatcher> catcher;
+  vtkNew<vtkLightFieldErrorObserver> catcher;
   catcher->Observe(writer);
   writer->SetInputData(lightField);
   writer->SetDirectory(directory.c_str());
   const int ok = writer->Write();
-  message = writer->GetErrorMessage();
+  message = catcher->GetErrorMessage();
   return ok == 1 && writer->GetErrorCode() == 0;
 }
 
@@ -57,11 +58,11 @@ bool Write(vtkLightField* lightField, const std::string& directory, std::string&
 bool Read(const std::string& path, std::string& message, int* views = nullptr)
 {
   vtkNew<vtkLightFieldReader> reader;
-  vtkNew<lfdtest::ErrorCatcher> catcher;
+  vtkNew<vtkLightFieldErrorObserver> catcher;
   catcher->Observe(reader);
   reader->SetFileName(path.c_str());
   reader->Update();
-  message = reader->GetErrorMessage();
+  message = catcher->GetErrorMessage();
   const bool empty = reader->GetOutput()->GetNumberOfPoints() == 0 &&
     reader->GetOutput()->GetPointData()->GetNumberOfArrays() == 0;
   if (views)
