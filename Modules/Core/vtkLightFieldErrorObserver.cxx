@@ -38,15 +38,37 @@ vtkLightFieldErrorObserver::~vtkLightFieldErrorObserver() = default;
 //------------------------------------------------------------------------------
 void vtkLightFieldErrorObserver::Observe(vtkObject* object)
 {
-  if (!object)
+  // Observed twice, every message would be recorded twice.
+  if (!object || object->HasObserver(vtkCommand::ErrorEvent, this))
   {
     return;
   }
   object->AddObserver(vtkCommand::ErrorEvent, this);
   object->AddObserver(vtkCommand::WarningEvent, this);
+  this->Observed.emplace_back(object);
   if (auto* algorithm = vtkAlgorithm::SafeDownCast(object))
   {
-    algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this);
+    vtkExecutive* executive = algorithm->GetExecutive();
+    executive->AddObserver(vtkCommand::ErrorEvent, this);
+    this->Observed.emplace_back(executive);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldErrorObserver::ObservePipeline(vtkAlgorithm* algorithm)
+{
+  if (!algorithm || algorithm->HasObserver(vtkCommand::ErrorEvent, this))
+  {
+    return;
+  }
+  this->Observe(algorithm);
+  for (int port = 0; port < algorithm->GetNumberOfInputPorts(); ++port)
+  {
+    for (int connection = 0; connection < algorithm->GetNumberOfInputConnections(port);
+         ++connection)
+    {
+      this->ObservePipeline(algorithm->GetInputAlgorithm(port, connection));
+    }
   }
 }
 
@@ -62,6 +84,19 @@ void vtkLightFieldErrorObserver::StopObserving(vtkObject* object)
   {
     algorithm->GetExecutive()->RemoveObserver(this);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldErrorObserver::StopObserving()
+{
+  for (vtkObject* object : this->Observed)
+  {
+    if (object)
+    {
+      object->RemoveObserver(this);
+    }
+  }
+  this->Observed.clear();
 }
 
 //------------------------------------------------------------------------------

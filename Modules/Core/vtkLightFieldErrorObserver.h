@@ -34,10 +34,12 @@
 
 #include "lfdCoreModule.h" // For export macro
 #include "vtkCommand.h"
+#include "vtkWeakPointer.h" // For vtkWeakPointer
 
 #include <string> // For std::string
 #include <vector> // For std::vector
 
+class vtkAlgorithm;
 class vtkObject;
 
 class LFDCORE_EXPORT vtkLightFieldErrorObserver : public vtkCommand
@@ -49,15 +51,25 @@ public:
 
   /**
    * Records the ErrorEvents and WarningEvents of `object` (and, for an
-   * algorithm, the ErrorEvents of its executive) from now on. The object
-   * keeps a reference to this observer.
+   * algorithm, the ErrorEvents of its executive) from now on; an object
+   * already observed is left as it is. The object keeps a reference to this
+   * observer until StopObserving().
    */
   void Observe(vtkObject* object);
 
   /**
-   * Stops observing `object` (and its executive).
+   * Observe() `algorithm` and every algorithm upstream of it (as connected
+   * now): the errors of a whole pipeline that one Update() runs.
+   */
+  void ObservePipeline(vtkAlgorithm* algorithm);
+
+  ///@{
+  /**
+   * Stops observing `object` (and its executive), or every object observed.
    */
   void StopObserving(vtkObject* object);
+  void StopObserving();
+  ///@}
 
   ///@{
   /**
@@ -104,6 +116,7 @@ private:
 
   std::vector<std::string> Errors;
   std::vector<std::string> Warnings;
+  std::vector<vtkWeakPointer<vtkObject>> Observed;
 };
 
 #endif

@@ -2,7 +2,8 @@
 // failing vtkLightFieldAlgorithm gives exactly its one line (the executive's
 // "returned failure" repeat is not a second error), an algorithm that fails
 // without a message is "<class> failed", warnings are kept apart, Clear()
-// forgets, StopObserving() lets messages through again, and StripLocation()
+// forgets, ObservePipeline() hears what is upstream, StopObserving() lets
+// messages through again, and StripLocation()
 // removes VTK's prefix from both kinds of text.
 #include "vtkErrorCode.h"
 #include "vtkInformation.h"
@@ -57,6 +58,18 @@ protected:
   }
 };
 vtkStandardNewMacro(FailingSource);
+
+/// A filter downstream of a FailingSource: fails only for want of input.
+class Follower : public vtkLightFieldAlgorithm
+{
+public:
+  static Follower* New();
+  vtkTypeMacro(Follower, vtkLightFieldAlgorithm);
+
+protected:
+  Follower() { this->SetNumberOfInputPorts(1); }
+};
+vtkStandardNewMacro(Follower);
 }
 
 int TestErrorObserver(int, char*[])
@@ -91,6 +104,21 @@ int TestErrorObserver(int, char*[])
       std::string(errors->GetWarningMessage()) == "view 3 is a duplicate",
     "a warning is not an error",
     errors->GetWarningMessage());
+
+  errors->Clear();
+  vtkNew<Follower> follower;
+  follower->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkLightFieldErrorObserver> pipeline;
+  pipeline->ObservePipeline(follower);
+  pipeline->ObservePipeline(follower); // observing twice records once
+  source->Mode = 0;
+  source->Modified();
+  follower->Update();
+  Expect(pipeline->GetNumberOfErrors() == 1 &&
+      std::string(pipeline->GetErrorMessage()) == "scene.json: field \"cage\": expected an object",
+    "ObservePipeline hears the upstream source, once",
+    pipeline->GetErrorMessage());
+  pipeline->StopObserving();
 
   errors->Clear();
   errors->StopObserving(source);

@@ -1,5 +1,6 @@
 // Every malformed light-field dataset must fail with one line naming the
 // file and the field; failed writes must leave nothing that looks valid.
+#include "lfdFileUtilities.h"
 #include "lfdIOTestUtilities.h"
 
 #include "vtkCameraRig.h"
@@ -17,6 +18,9 @@
 
 #include <filesystem>
 #include <functional>
+#include <string>
+
+#include <unistd.h> // getpid
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
@@ -256,5 +260,16 @@ int TestLightFieldIOErrors(int, char*[])
     lfdtest::Check(!fs::exists(blocker + "/out.lf"), "nothing written");
   }
   lfdtest::CheckEqual(lfdtest::CountEntries(folder, "valid.lf."), 0, "temporary siblings left");
+
+  // A message about a staged output names the target (how `lfd` reports a
+  // failure inside a folder it builds under a temporary name).
+  const std::string staged = lfd::io::TemporaryDirectoryName(folder + "/frames");
+  const std::string image = lfd::io::TemporaryFileName(folder + "/view.png");
+  const std::string other = folder + "/x.tmp-" + std::to_string(::getpid()) + "7.png";
+  lfdtest::CheckEqual(lfd::io::NameTargets(staged + "/frame_0001.png: No space left on device; " +
+                        image + "; " + other),
+    folder + "/frames/frame_0001.png: No space left on device; " + folder + "/view.png; " + other,
+    "temporary names replaced by their targets");
+  lfd::io::RemoveQuietly(staged);
   return lfdtest::Result();
 }
