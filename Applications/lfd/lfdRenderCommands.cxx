@@ -1,7 +1,6 @@
 // `lfd render`, `lfd animate` and `lfd lattice`: a scene's views out.
 #include "lfdCommands.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
@@ -250,8 +249,8 @@ void Lattice(const LatticeOptions& options)
   lattice->SetSubdivision(options.Subdivision);
   Run(lattice.Get(), "sampling the lattice into boxes");
   vtkDeformationCage* cage = lattice->GetOutput();
-  vtkNew<vtkCallbackCommand> quiet; // the refusal is said once, below
-  cage->AddObserver(vtkCommand::ErrorEvent, quiet);
+  StepErrors refusal; // the refusal is said once, below
+  refusal->Observe(cage);
   if (!cage->Validate())
   {
     Fail(options.Out + ": the sampled cage is refused: " + cage->GetErrorMessage());

@@ -83,7 +83,7 @@ refusing.SetWidth(48)
 refusing.SetHeight(48)
 errors = t.error_observer(refusing)
 refusing.Update()
-t.check(refusing.GetErrorCode() != 0 and errors.GetErrorMessage() == NO_CYLINDER and
+t.check(errors.GetNumberOfErrors() == 1 and errors.GetErrorMessage() == NO_CYLINDER and
         not manual.HasCylinder() and manual.GetMTime() == manual_time,
         "an unfitted rig is refused, not fitted by the renderer",
         f"{errors.GetErrorMessage()!r}, fitted {manual.HasCylinder()}")
