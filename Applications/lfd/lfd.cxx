@@ -210,8 +210,9 @@ void ConfigureCommands(CLI::App* command)
   }
 }
 
-/// The commands, their options and what they run.
-int Main(int argc, char* argv[])
+/// The commands, their options and what they run; the run's errors go to
+/// `errors`.
+int Main(int argc, char* argv[], lfd::CommandErrors& errors)
 {
   CLI::App app{ "LightField Deform: capture, render and deform light fields.\n"
                 "Run 'lfd <command> --help' for the options of a command." };
@@ -230,7 +231,7 @@ int Main(int argc, char* argv[])
   const std::string unknown = CheckCommandWords(&app, argc, argv);
   if (!unknown.empty())
   {
-    lfd::ReportError(unknown);
+    lfd::PrintError(unknown);
     return 2;
   }
   try
@@ -244,13 +245,13 @@ int Main(int argc, char* argv[])
   catch (const CLI::ParseError& error)
   {
     const std::string extras = DescribeExtras(&app);
-    lfd::ReportError(extras.empty() ? DescribeParseError(&app, error) : extras);
+    lfd::PrintError(extras.empty() ? DescribeParseError(&app, error) : extras);
     return 2;
   }
   const std::string extras = DescribeExtras(&app);
   if (!extras.empty())
   {
-    lfd::ReportError(extras);
+    lfd::PrintError(extras);
     return 2;
   }
 
@@ -271,37 +272,34 @@ int Main(int argc, char* argv[])
   }
   catch (const Failure& failure)
   {
-    if (!failure.Message.empty())
-    {
-      lfd::ReportError(failure.Message);
-    }
+    errors.Refuse(failure.Message);
   }
   // Whatever reported an error, a refusal of ours or any VTK object's
-  // message, decides the exit status.
-  return lfd::ErrorReported() ? 1 : 0;
+  // message, decides the exit status; the first one is said.
+  return errors.Finish();
 }
 }
 }
 
 int main(int argc, char* argv[])
 {
-  lfd::InstallConsoleOutput();
+  lfd::CommandErrors errors;
   // No exception leaves lfd: whatever escapes a command is one error line.
   try
   {
-    return lfd::cli::Main(argc, argv);
+    return lfd::cli::Main(argc, argv, errors);
   }
   catch (const std::bad_alloc&)
   {
-    lfd::ReportError("out of memory");
+    errors.Refuse("out of memory");
   }
   catch (const std::exception& exception)
   {
-    lfd::ReportError(exception.what());
+    errors.Refuse(exception.what());
   }
   catch (...)
   {
-    lfd::ReportError("unexpected internal error");
+    errors.Refuse("unexpected internal error");
   }
-  return 1;
+  return errors.Finish();
 }

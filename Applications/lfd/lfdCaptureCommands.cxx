@@ -280,11 +280,7 @@ void ImportMiddlebury(const std::string& par, const std::string& out, const std:
   vtkNew<vtkMiddleburyImporter> importer;
   importer->SetFileName(par.c_str());
   lfd::ShowProgress(importer, "importing");
-  importer->Update();
-  if (importer->GetErrorCode() != 0)
-  {
-    Fail(importer->GetErrorMessage());
-  }
+  Run(importer.Get(), "importing " + par);
   WriteLightField(importer->GetOutput(), out);
   vtkCameraRig* rig = importer->GetOutput()->GetRig();
   std::cout << "imported " << rig->GetNumberOfViews() << " views (" << rig->GetNumberOfDuplicates()
@@ -320,7 +316,8 @@ void Info(const std::string& path)
               << projectors->GetImageSize()[0] << " x " << projectors->GetImageSize()[1]
               << (lightField->GetProjectorMasks() ? ", with masks" : "") << "\n";
   }
-  if (!rig->FitCylinder())
+  // The reader fitted the rig; one no cylinder fits is read unfitted.
+  if (!rig->HasCylinder())
   {
     Fail("no cylinder can be fitted to the cameras of '" + path + "'");
   }

@@ -29,14 +29,6 @@
 
 namespace lfd::cli
 {
-void CheckNoError()
-{
-  if (lfd::ErrorReported())
-  {
-    Fail("");
-  }
-}
-
 double Seconds(double start)
 {
   return vtkTimerLog::GetUniversalTime() - start;
@@ -121,10 +113,10 @@ vtkSmartPointer<vtkLightFieldScene> ReadScene(const std::string& path)
 {
   ExpectSceneFile(path);
   auto scene = vtkSmartPointer<vtkLightFieldScene>::New();
-  if (!scene->Read(path.c_str()))
-  {
-    Fail(scene->GetErrorMessage());
-  }
+  StepErrors errors;
+  errors->Observe(scene);
+  scene->Read(path.c_str());
+  errors.FailOnError();
   return scene;
 }
 
@@ -132,11 +124,7 @@ vtkSmartPointer<vtkImageData> ReadImage(const std::string& path)
 {
   vtkNew<vtkImageFileReader> reader;
   reader->SetFileName(path.c_str());
-  reader->Update();
-  if (reader->GetErrorCode() != 0)
-  {
-    Fail(reader->GetErrorMessage());
-  }
+  Run(reader.Get(), "reading " + path);
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->ShallowCopy(reader->GetOutput());
   return image;
@@ -147,11 +135,7 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
   vtkNew<vtkLightFieldReader> reader;
   reader->SetFileName(path.c_str());
   lfd::ShowProgress(reader, "reading");
-  reader->Update();
-  if (reader->GetErrorCode() != 0)
-  {
-    Fail(reader->GetErrorMessage());
-  }
+  Run(reader.Get(), "reading " + path);
   auto lightField = vtkSmartPointer<vtkLightField>::New();
   lightField->ShallowCopy(reader->GetOutput());
   return lightField;
@@ -159,10 +143,10 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
 
 vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldScene* scene)
 {
-  if (!scene->ConfigureReader(nullptr))
-  {
-    Fail(scene->GetErrorMessage());
-  }
+  StepErrors errors;
+  errors->Observe(scene);
+  scene->ConfigureReader(nullptr);
+  errors.FailOnError();
   return ReadLightField(scene->GetResolvedLightFieldPath());
 }
 
@@ -179,14 +163,12 @@ vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
   if (time && scene->GetNumberOfKeyframes() > 0)
   {
     vtkNew<vtkKeyframeInterpolator> keyframes;
-    ErrorCatcher refusal(keyframes);
+    StepErrors refusal;
+    refusal->Observe(keyframes);
     for (int k = 0; k < scene->GetNumberOfKeyframes(); ++k)
     {
       keyframes->AddKeyframe(scene->GetKeyframeTime(k), scene->GetKeyframePoints(k));
-      if (!refusal.GetMessage().empty())
-      {
-        Fail(std::string(scene->GetFileName()) + ": keyframes: " + refusal.GetMessage());
-      }
+      refusal.FailOnError(std::string(scene->GetFileName()) + ": keyframes: ");
     }
     vtkNew<vtkPoints> points;
     keyframes->InterpolatePoints(*time, points);
@@ -222,35 +204,26 @@ void ConfigureRenderer(vtkLightFieldRenderer* renderer,
 
 void WriteLightField(vtkLightField* lightField, const std::string& directory)
 {
-  CheckNoError();
   vtkNew<vtkLightFieldWriter> writer;
   writer->SetInputData(lightField);
   writer->SetDirectory(directory.c_str());
   lfd::ShowProgress(writer, "writing");
-  if (!writer->Write())
-  {
-    Fail(writer->GetErrorMessage());
-  }
+  Run(writer.Get(), "writing " + directory);
 }
 
 void WriteScene(vtkLightFieldScene* scene, const std::string& path)
 {
-  CheckNoError();
-  if (!scene->Write(path.c_str()))
-  {
-    Fail(scene->GetErrorMessage());
-  }
+  StepErrors errors;
+  errors->Observe(scene);
+  scene->Write(path.c_str());
+  errors.FailOnError();
 }
 
 void WriteImage(vtkImageData* image, const std::string& path)
 {
-  CheckNoError();
   vtkNew<vtkImageFileWriter> writer;
   writer->SetInputData(image);
   writer->SetFileName(path.c_str());
-  if (!writer->Write())
-  {
-    Fail(writer->GetErrorMessage());
-  }
+  Run(writer.Get(), "writing " + path);
 }
 }

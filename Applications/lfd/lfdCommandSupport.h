@@ -10,9 +10,11 @@
 #include "lfdConsole.h"
 #include "lfdFileUtilities.h"
 
-#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldScene.h"
 #include "vtkNew.h"
+#include "vtkOutputWindow.h"
 #include "vtkSmartPointer.h"
 
 #include <CLI/CLI.hpp>
@@ -54,8 +56,8 @@ struct Command
   bool NeedsDisplay;
 };
 
-/// Thrown by a subcommand to stop with exit status 1; an empty message
-/// means the error was already reported by VTK.
+/// Thrown by a subcommand to stop with exit status 1 and its one-line
+/// message (lfd::CommandErrors::Refuse()).
 struct Failure
 {
   std::string Message;
@@ -66,24 +68,60 @@ struct Failure
   throw Failure{ message };
 }
 
-/// Updates an algorithm and fails with its own error text when it reports one.
+/**
+ * The errors of the objects one step of a command uses, recorded (not
+ * printed) while the step runs: the step fails with the first one, said
+ * once, with the file it concerns. Their warnings are said when the step
+ * ends, and the objects are no longer observed.
+ */
+class StepErrors
+{
+public:
+  StepErrors() = default;
+  ~StepErrors()
+  {
+    lfd::PrintWarnings(this->Errors);
+    this->Errors->StopObserving();
+  }
+  StepErrors(const StepErrors&) = delete;
+  void operator=(const StepErrors&) = delete;
+
+  vtkLightFieldErrorObserver* Get() { return this->Errors; }
+  vtkLightFieldErrorObserver* operator->() { return this->Errors; }
+
+  /// Fails with the first error, after `context` (e.g. "scene.json: ").
+  void FailOnError(const std::string& context = std::string())
+  {
+    if (this->Errors->HasError())
+    {
+      Fail(context + this->Errors->GetErrorMessage());
+    }
+  }
+
+private:
+  vtkNew<vtkLightFieldErrorObserver> Errors;
+};
+
+/**
+ * Updates an algorithm and fails with the first error it or any algorithm
+ * upstream reports, or any object they use (which reaches VTK's output
+ * window), else with "<what> failed" when it sets an error code silently.
+ */
 template<typename Algorithm>
 void Run(Algorithm* algorithm, const std::string& what)
 {
-  const bool before = lfd::ErrorReported();
+  StepErrors errors;
+  errors->ObservePipeline(algorithm);
+  vtkOutputWindow* window = vtkOutputWindow::GetInstance();
+  const unsigned long tag = window->AddObserver(vtkCommand::ErrorEvent, errors.Get());
   algorithm->Update();
-  if (lfd::ErrorReported() != before)
-  {
-    Fail("");
-  }
+  window->RemoveObserver(tag);
+  errors.FailOnError();
   if (algorithm->GetErrorCode() != 0)
   {
     Fail(what + " failed");
   }
 }
-
-/// Stops before an output is written when any error was reported so far.
-void CheckNoError();
 
 /**
  * A multi-file output folder written under a temporary sibling name
@@ -130,7 +168,6 @@ public:
     {
       Fail("--out " + this->Target + ": cannot create " + this->Temporary + ": " + error.message());
     }
-    lfd::AliasPath(this->Temporary, this->Target);
   }
   ~StagedFolder()
   {
@@ -148,7 +185,6 @@ public:
   /// Replaces the target with the complete folder.
   void Commit()
   {
-    CheckNoError();
     std::string error;
     if (!lfd::io::CommitDirectory(this->Temporary, this->Target, error))
     {
@@ -333,29 +369,6 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path);
 /// The light field a scene names (an error naming the scene and its field
 /// "lightfield" when it names none or a missing one).
 vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldScene* scene);
-
-/// Records the last error an object reports instead of printing it, so that
-/// the caller says it once, with the file it came from.
-class ErrorCatcher
-{
-public:
-  explicit ErrorCatcher(vtkObject* object)
-  {
-    this->Callback->SetCallback(
-      [](vtkObject*, unsigned long, void* clientData, void* callData)
-      {
-        *static_cast<std::string*>(clientData) =
-          lfd::StripLocation(static_cast<const char*>(callData));
-      });
-    this->Callback->SetClientData(&this->Message);
-    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
-  }
-  const std::string& GetMessage() const { return this->Message; }
-
-private:
-  std::string Message;
-  vtkNew<vtkCallbackCommand> Callback;
-};
 
 /**
  * The scene's cage, validated (against the light field when given; nullptr

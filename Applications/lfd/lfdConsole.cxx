@@ -1,100 +1,24 @@
 #include "lfdConsole.h"
 
+#include "lfdFileUtilities.h"
+
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
-#include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
 
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <set>
 #include <unistd.h>
-#include <utility>
-#include <vector>
 
 // Last: Xlib's macros (Status, Bool, None) must not reach the VTK headers.
 #include <X11/Xlib.h>
 
 namespace
 {
-bool errorReported = false;
-std::set<std::string> reported;
-std::vector<std::pair<std::string, std::string>> aliases; // temporary, target
-
-std::string ApplyAliases(std::string message)
-{
-  for (const auto& alias : aliases)
-  {
-    for (std::size_t at = message.find(alias.first); at != std::string::npos;
-         at = message.find(alias.first, at + alias.second.size()))
-    {
-      message.replace(at, alias.first.size(), alias.second);
-    }
-  }
-  return message;
-}
-
-}
-
-namespace lfd
-{
-std::string StripLocation(const char* text)
-{
-  std::string message(text ? text : "");
-  const std::size_t address = message.find("): ");
-  if (message.rfind("ERROR: In ", 0) == 0 || message.rfind("Warning: In ", 0) == 0)
-  {
-    if (address != std::string::npos)
-    {
-      message = message.substr(address + 3);
-    }
-  }
-  while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-  {
-    message.pop_back();
-  }
-  return message;
-}
-}
-
-namespace
-{
-using lfd::StripLocation;
-
-class ConsoleOutputWindow : public vtkOutputWindow
-{
-public:
-  static ConsoleOutputWindow* New();
-  vtkTypeMacro(ConsoleOutputWindow, vtkOutputWindow);
-
-  void DisplayErrorText(const char* text) override
-  {
-    const std::string message = StripLocation(text);
-    // The executive follows an algorithm's own error with "Algorithm
-    // vtkX(0x...) returned failure for request: <information dump>": say
-    // only that it failed, and only when the algorithm itself said nothing.
-    if (message.rfind("Algorithm ", 0) == 0 &&
-      message.find(" returned failure for request") != std::string::npos)
-    {
-      if (!lfd::ErrorReported())
-      {
-        lfd::ReportError(message.substr(10, message.find('(') - 10) + " failed");
-      }
-      return;
-    }
-    lfd::ReportError(message);
-  }
-  void DisplayWarningText(const char* text) override { lfd::ReportWarning(StripLocation(text)); }
-  void DisplayGenericWarningText(const char* text) override { this->DisplayWarningText(text); }
-  void DisplayText(const char* text) override { std::cout << text; }
-  void DisplayDebugText(const char*) override {}
-};
-vtkStandardNewMacro(ConsoleOutputWindow);
-
 struct ProgressState
 {
   std::string What;
@@ -138,37 +62,69 @@ void OnProgress(vtkObject*, unsigned long event, void* clientData, void* callDat
 
 namespace lfd
 {
-void InstallConsoleOutput()
+CommandErrors::CommandErrors()
 {
-  vtkNew<ConsoleOutputWindow> window;
-  vtkOutputWindow::SetInstance(window);
+  vtkOutputWindow* window = vtkOutputWindow::GetInstance();
+  this->DisplayMode = window->GetDisplayMode();
+  window->SetDisplayModeToNever();
+  this->Errors->Observe(window);
+  // A warning is said when it comes, not kept for the end.
+  vtkNew<vtkCallbackCommand> warn;
+  warn->SetCallback(
+    [](vtkObject*, unsigned long, void*, void* callData)
+    {
+      PrintWarning(
+        vtkLightFieldErrorObserver::StripLocation(callData ? static_cast<char*>(callData) : ""));
+    });
+  this->WarningTag = window->AddObserver(vtkCommand::WarningEvent, warn, 1.0f);
   // vtkLogger would print every error a second time, with a timestamp.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 }
 
-bool ErrorReported()
+CommandErrors::~CommandErrors()
 {
-  return errorReported;
+  vtkOutputWindow* window = vtkOutputWindow::GetInstance();
+  window->RemoveObserver(this->WarningTag);
+  this->Errors->StopObserving();
+  window->SetDisplayMode(this->DisplayMode);
 }
 
-void ReportError(const std::string& message)
+void CommandErrors::Refuse(const std::string& message)
 {
-  errorReported = true;
-  const std::string text = ApplyAliases(message);
-  if (reported.insert(text).second) // an error a class logged and returned is said once
+  if (this->Refusal.empty())
   {
-    std::cerr << "lfd: error: " << text << std::endl;
+    this->Refusal = message;
   }
 }
 
-void ReportWarning(const std::string& message)
+int CommandErrors::Finish()
 {
-  std::cerr << "lfd: warning: " << ApplyAliases(message) << std::endl;
+  const std::string first =
+    this->Errors->HasError() ? this->Errors->GetErrorMessage() : this->Refusal;
+  if (first.empty())
+  {
+    return 0;
+  }
+  PrintError(first);
+  return 1;
 }
 
-void AliasPath(const std::string& temporary, const std::string& target)
+void PrintError(const std::string& message)
 {
-  aliases.emplace_back(temporary, target);
+  std::cerr << "lfd: error: " << lfd::io::NameTargets(message) << std::endl;
+}
+
+void PrintWarning(const std::string& message)
+{
+  std::cerr << "lfd: warning: " << lfd::io::NameTargets(message) << std::endl;
+}
+
+void PrintWarnings(vtkLightFieldErrorObserver* errors)
+{
+  for (int i = 0; i < errors->GetNumberOfWarnings(); ++i)
+  {
+    PrintWarning(errors->GetWarning(i));
+  }
 }
 
 bool DisplayAvailable()

@@ -1,10 +1,13 @@
 /**
  * @file   lfdConsole.h
- * @brief  How the `lfd` tool talks to a terminal: one readable line per VTK
- *         error, and progress bars for long algorithms.
+ * @brief  How the `lfd` tool talks to a terminal: the errors of a command
+ *         said as one line, warnings, and progress bars for long algorithms.
  */
 #ifndef lfdConsole_h
 #define lfdConsole_h
+
+#include "vtkLightFieldErrorObserver.h"
+#include "vtkNew.h"
 
 #include <string>
 
@@ -13,34 +16,50 @@ class vtkAlgorithm;
 namespace lfd
 {
 /**
- * Routes VTK's errors and warnings to stderr as single lines
- * ("lfd: error: <message>"), without VTK's source-file prefix, and
- * remembers whether an error was reported.
+ * The error channel of one `lfd` command run (main() owns one per run).
+ * While it exists VTK's output window displays nothing: every error or
+ * warning that no object observer took comes to this run's
+ * vtkLightFieldErrorObserver instead. Finish() says the run's first error
+ * as its one line, "lfd: error: <message>"; warnings are said as they come.
  */
-void InstallConsoleOutput();
+class CommandErrors
+{
+public:
+  CommandErrors();
+  ~CommandErrors();
+  CommandErrors(const CommandErrors&) = delete;
+  void operator=(const CommandErrors&) = delete;
+
+  /**
+   * A refusal of the tool's own (the message a command stopped with); it is
+   * the run's error unless VTK reported one first.
+   */
+  void Refuse(const std::string& message);
+
+  /**
+   * Says the first error, if any; returns the exit status: 1 after an error,
+   * 0 otherwise.
+   */
+  int Finish();
+
+private:
+  vtkNew<vtkLightFieldErrorObserver> Errors;
+  unsigned long WarningTag = 0;
+  int DisplayMode = 0;
+  std::string Refusal;
+};
 
 /**
- * The message of a VTK error or warning text without VTK's prefix
- * ("ERROR: In <file>, line <n>\n<class> (<address>): ") and trailing blank
- * lines: what an ErrorEvent observer receives, said in one line.
+ * Prints "lfd: error: <message>" on stderr, a temporary name replaced by
+ * the name the user gave (lfd::io::NameTargets()).
  */
-std::string StripLocation(const char* text);
+void PrintError(const std::string& message);
 
-/// True once any VTK error has been reported.
-bool ErrorReported();
+/// Prints "lfd: warning: <message>" on stderr, as PrintError().
+void PrintWarning(const std::string& message);
 
-/// Prints "lfd: error: <message>" on stderr, once per distinct message.
-void ReportError(const std::string& message);
-
-/// Prints "lfd: warning: <message>" on stderr.
-void ReportWarning(const std::string& message);
-
-/**
- * From now on, messages name `target` where they would name `temporary`: an
- * output staged under a temporary name is reported under the name the user
- * gave.
- */
-void AliasPath(const std::string& temporary, const std::string& target);
+/// Prints the warnings `errors` recorded.
+void PrintWarnings(vtkLightFieldErrorObserver* errors);
 
 /**
  * True when an X display can be opened (DISPLAY set and the server answers):

@@ -299,7 +299,7 @@ void DemoTemple(const std::string& dataDir, const std::string& out, int frames, 
     scene->AddKeyframe(k, pose->GetOutput()->GetPoints());
   }
   vtkCameraRig* rig = lightField->GetRig();
-  if (!rig->HasCylinder() && !rig->FitCylinder())
+  if (!rig->HasCylinder()) // the importer fits the rig it builds
   {
     Fail(par + ": no ring could be fitted to the cameras");
   }

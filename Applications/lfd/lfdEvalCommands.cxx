@@ -52,13 +52,13 @@ void EvalGroundTruth(const std::string& scenePath,
   std::printf("object pixels     %lld\n", static_cast<long long>(evaluator->GetObjectPixels()));
   if (!out.empty())
   {
-    // Both images or neither: each is written under a temporary name first.
+    // Both images or neither: each is written under a temporary name first
+    // (a message names the target, lfd::io::NameTargets()).
     const std::string names[2] = { out + "_lightfield.png", out + "_groundtruth.png" };
     std::string temporaries[2];
     for (int i = 0; i < 2; ++i)
     {
       temporaries[i] = lfd::io::TemporaryFileName(names[i]);
-      lfd::AliasPath(temporaries[i], names[i]);
     }
     try
     {

@@ -2,9 +2,7 @@
 #include "lfdCommands.h"
 
 #include "vtkBoxCoverageCheck.h"
-#include "vtkCallbackCommand.h"
 #include "vtkDeformationCage.h"
-#include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkLabelPropagation.h"
 #include "vtkLightField.h"
@@ -94,20 +92,16 @@ void ReportAccuracy(vtkLightField* split, const std::string& truthPath)
   }
 }
 
-/// Runs a splitter on `input` quietly (its error is reported once, here),
-/// prints the figures and writes the split light field.
+/// Runs a splitter on `input` (its error is said once, here, after the
+/// input's name), prints the figures and writes the split light field.
 void RunSplit(vtkLightFieldSplitter* splitter, vtkLightField* input, const SplitOptions& options)
 {
-  vtkNew<vtkCallbackCommand> quiet;
-  splitter->AddObserver(vtkCommand::ErrorEvent, quiet);
-  splitter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, quiet);
   splitter->SetInputData(input);
   lfd::ShowProgress(splitter, "splitting");
+  StepErrors errors;
+  errors->Observe(splitter);
   splitter->Update();
-  if (*splitter->GetErrorMessage())
-  {
-    Fail(options.In + ": " + splitter->GetErrorMessage());
-  }
+  errors.FailOnError(options.In + ": ");
   auto* label =
     vtkUnsignedCharArray::SafeDownCast(splitter->GetOutput()->GetPass(vtkLightField::LABEL));
   vtkIdType labelled = 0;
@@ -231,7 +225,7 @@ void SplitCheck(const SplitOptions& options)
     if (boxed != lightField->HasLabel(label))
     {
       mismatch = true;
-      lfd::ReportWarning(boxed
+      lfd::PrintWarning(boxed
           ? options.Scene + ": box label " + std::to_string(label) + " has no pixels in " +
             options.In
           : options.In + ": label " + std::to_string(label) + " has no box in " + options.Scene);

@@ -7,6 +7,7 @@
 #include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
+#include "vtkTimeStamp.h"
 
 #include <algorithm>
 #include <array>
@@ -74,6 +75,173 @@ glm::dvec3 ReferenceDirection(const glm::dvec3& axis)
   }
   return glm::normalize(ref - glm::dot(ref, axis) * axis);
 }
+
+/// The camera centres' mean and principal directions (scatter eigenvectors,
+/// by decreasing spread).
+struct CentreSpread
+{
+  glm::dvec3 Mean{ 0.0 };
+  double Values[3] = { 0.0, 0.0, 0.0 };
+  glm::dvec3 Vectors[3];
+};
+
+CentreSpread MeasureSpread(const std::vector<glm::dvec3>& centers)
+{
+  CentreSpread spread;
+  for (const glm::dvec3& c : centers)
+  {
+    spread.Mean += c;
+  }
+  spread.Mean /= static_cast<double>(centers.size());
+  glm::dmat3 scatter(0.0);
+  for (const glm::dvec3& c : centers)
+  {
+    scatter += glm::outerProduct(c - spread.Mean, c - spread.Mean);
+  }
+  SymmetricEigen(scatter, spread.Values, spread.Vectors);
+  return spread;
+}
+
+/// The cylinder axis: the principal direction whose spread stands apart
+/// from the other two, the smallest one for a ring (the normal of the plane
+/// fitted by SVD), the largest one for a stack of rings taller than wide
+/// (whose two other directions span the round cross-section). Oriented like
+/// most views' image "up" when they agree on one (views rolled by 180
+/// degrees vote against), otherwise towards +Y, VTK's usual view up.
+glm::dvec3 FitAxis(const CentreSpread& spread, const std::vector<lfd::PinholeCamera>& cameras)
+{
+  const double floor = 1e-300;
+  const double* values = spread.Values;
+  const double smallGap = std::log(std::max(values[1], floor) / std::max(values[2], floor));
+  const double largeGap = std::log(std::max(values[0], floor) / std::max(values[1], floor));
+  glm::dvec3 axis = glm::normalize(smallGap >= largeGap ? spread.Vectors[2] : spread.Vectors[0]);
+  double upVote = 0.0;
+  for (const lfd::PinholeCamera& camera : cameras)
+  {
+    upVote += glm::dot(camera.Up(), axis);
+  }
+  const bool upDecides = std::abs(upVote) > 0.1 * static_cast<double>(cameras.size());
+  if ((upDecides && upVote < 0.0) || (!upDecides && axis.y < 0.0))
+  {
+    axis = -axis;
+  }
+  return axis;
+}
+
+/// Circle fit of the centres in the plane orthogonal to `axis`: algebraic
+/// (Kasa) start, then Gauss-Newton on the geometric distance. Returns false
+/// when the centres are collinear or coincide.
+bool FitCircle(const std::vector<glm::dvec3>& centers,
+  const CentreSpread& spread,
+  const glm::dvec3& axis,
+  glm::dvec3& center,
+  double& radius)
+{
+  const double n = static_cast<double>(centers.size());
+  const glm::dvec3 refX = ReferenceDirection(axis);
+  const glm::dvec3 refY = glm::cross(axis, refX);
+  std::vector<glm::dvec2> planar;
+  planar.reserve(centers.size());
+  glm::dmat3 normal(0.0);
+  glm::dvec3 rhs(0.0);
+  for (const glm::dvec3& c : centers)
+  {
+    const glm::dvec3 v = c - spread.Mean;
+    const glm::dvec2 p(glm::dot(v, refX), glm::dot(v, refY));
+    planar.push_back(p);
+    const glm::dvec3 row(p.x, p.y, 1.0);
+    normal += glm::outerProduct(row, row);
+    rhs -= (p.x * p.x + p.y * p.y) * row;
+  }
+  // "<=": coinciding centres give a zero scatter, and a zero bound.
+  if (std::abs(glm::determinant(normal)) <= 1e-12 * std::pow(spread.Values[0] * n, 2.0) * n)
+  {
+    return false;
+  }
+  const glm::dvec3 def = glm::inverse(normal) * rhs;
+  glm::dvec2 c2(-0.5 * def.x, -0.5 * def.y);
+  radius = std::sqrt(std::max(glm::dot(c2, c2) - def.z, 0.0));
+  for (int iteration = 0; iteration < 20; ++iteration)
+  {
+    glm::dmat3 jtj(0.0);
+    glm::dvec3 jtr(0.0);
+    for (const glm::dvec2& p : planar)
+    {
+      const glm::dvec2 d = p - c2;
+      const double len = std::max(glm::length(d), 1e-300);
+      const glm::dvec3 j(-d.x / len, -d.y / len, -1.0);
+      jtj += glm::outerProduct(j, j);
+      jtr += (len - radius) * j;
+    }
+    const glm::dvec3 step = glm::inverse(jtj) * jtr;
+    c2 -= glm::dvec2(step.x, step.y);
+    radius -= step.z;
+    if (glm::length(step) < 1e-14 * radius)
+    {
+      break;
+    }
+  }
+  center = spread.Mean + c2.x * refX + c2.y * refY;
+  return true;
+}
+
+/// Near-duplicates: a view closer than `distance` to an earlier one that
+/// looks the same way within 5 degrees (roll is free: a view rotated by 180
+/// degrees in its image plane sees the same rays) duplicates the first such
+/// view; -1 for the others.
+std::vector<int> FindDuplicates(const std::vector<glm::dvec3>& centers,
+  const std::vector<lfd::PinholeCamera>& cameras,
+  double distance)
+{
+  const double cosLimit = std::cos(vtkMath::RadiansFromDegrees(5.0));
+  const int n = static_cast<int>(centers.size());
+  std::vector<int> duplicateOf(n, -1);
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < j; ++i)
+    {
+      if (duplicateOf[i] < 0 && glm::distance(centers[i], centers[j]) < distance &&
+        glm::dot(cameras[i].Forward(), cameras[j].Forward()) > cosLimit)
+      {
+        duplicateOf[j] = i;
+        break;
+      }
+    }
+  }
+  return duplicateOf;
+}
+
+/// Rows: heights sorted and split where two neighbours differ by more than
+/// `gap`; rows are numbered by increasing height, with their mean height.
+void ClusterRows(const std::vector<double>& heights,
+  double gap,
+  std::vector<int>& rows,
+  std::vector<double>& rowHeights)
+{
+  const int n = static_cast<int>(heights.size());
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return heights[a] < heights[b]; });
+  rows.assign(n, 0);
+  rowHeights.clear();
+  std::vector<int> rowCounts;
+  for (int k = 0; k < n; ++k)
+  {
+    const int v = order[k];
+    if (k == 0 || heights[v] - heights[order[k - 1]] > gap)
+    {
+      rowHeights.push_back(0.0);
+      rowCounts.push_back(0);
+    }
+    rows[v] = static_cast<int>(rowHeights.size()) - 1;
+    rowHeights.back() += heights[v];
+    rowCounts.back() += 1;
+  }
+  for (std::size_t r = 0; r < rowHeights.size(); ++r)
+  {
+    rowHeights[r] /= rowCounts[r];
+  }
+}
 }
 
 struct vtkCameraRig::Internals
@@ -82,6 +250,7 @@ struct vtkCameraRig::Internals
   std::vector<std::string> Names;
 
   bool Fitted = false;
+  vtkTimeStamp FitTime;
   glm::dvec3 RefX{ 1.0, 0.0, 0.0 };
   glm::dvec3 RefY{ 0.0, 0.0, 1.0 };
   std::vector<double> Azimuth;
@@ -110,7 +279,6 @@ void vtkCameraRig::SetNumberOfViews(int n)
   }
   this->Internal->Cameras.resize(n);
   this->Internal->Names.resize(n);
-  this->ClearFit();
   this->Modified();
 }
 
@@ -136,7 +304,6 @@ void vtkCameraRig::SetView(int i, const lfd::PinholeCamera& camera)
     return;
   }
   this->Internal->Cameras[i] = camera;
-  this->ClearFit();
   this->Modified();
 }
 
@@ -302,7 +469,7 @@ void vtkCameraRig::ApplyToCamera(int i, vtkCamera* camera) const
   const glm::dvec3 center = pinhole.Center();
   const glm::dvec3 forward = pinhole.Forward();
   double distance = 1.0;
-  if (this->Internal->Fitted)
+  if (this->HasCylinder())
   {
     const glm::dvec3 toAxis = ToVec(this->Center) - center;
     distance = std::max(glm::dot(toAxis, forward), 1e-6 * this->Radius);
@@ -385,120 +552,59 @@ void vtkCameraRig::MakeCylinder(const double center[3],
         lfd::PinholeCamera::LookAt(intrinsics, position, target - position, a));
     }
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkCameraRig::ClearFit()
-{
-  this->Internal->Fitted = false;
+  // Built, so fitted; rings of fewer than 3 views are not fitted.
+  std::string noCylinder;
+  if (viewsPerRing >= 3)
+  {
+    this->FitCylinder(noCylinder);
+  }
 }
 
 //------------------------------------------------------------------------------
 bool vtkCameraRig::HasCylinder() const
 {
-  return this->Internal->Fitted;
+  // The fit is a cache of the calibration: any later change (views, image
+  // size, tolerances) makes it stale.
+  return this->Internal->Fitted && this->Internal->FitTime.GetMTime() > this->MTime.GetMTime();
 }
 
 //------------------------------------------------------------------------------
 bool vtkCameraRig::FitCylinder()
 {
+  std::string problem;
+  if (!this->FitCylinder(problem))
+  {
+    vtkErrorMacro("FitCylinder: " << problem);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCameraRig::FitCylinder(std::string& problem)
+{
   Internals& in = *this->Internal;
+  in.Fitted = false;
   const int n = this->GetNumberOfViews();
   if (n < 3)
   {
-    vtkErrorMacro("FitCylinder: a cylinder needs at least 3 views, the rig has " << n << ".");
+    problem = "a cylinder needs at least 3 views, the rig has " + std::to_string(n) + ".";
     return false;
   }
   std::vector<glm::dvec3> centers(n);
-  glm::dvec3 mean(0.0);
   for (int i = 0; i < n; ++i)
   {
     centers[i] = in.Cameras[i].Center();
-    mean += centers[i];
   }
-  mean /= static_cast<double>(n);
-  glm::dmat3 scatter(0.0);
-  for (const glm::dvec3& c : centers)
+  const CentreSpread spread = MeasureSpread(centers);
+  const glm::dvec3 axis = FitAxis(spread, in.Cameras);
+  glm::dvec3 center;
+  double radius = 0.0;
+  if (!FitCircle(centers, spread, axis, center, radius))
   {
-    scatter += glm::outerProduct(c - mean, c - mean);
-  }
-
-  // The axis is the principal direction of the centres whose spread stands
-  // apart from the other two: the smallest one for a ring (the normal of the
-  // plane fitted by SVD), the largest one for a stack of rings taller than
-  // wide (whose two other directions span the round cross-section).
-  double values[3];
-  glm::dvec3 vectors[3];
-  SymmetricEigen(scatter, values, vectors); // decreasing
-  const double floor = 1e-300;
-  const double smallGap = std::log(std::max(values[1], floor) / std::max(values[2], floor));
-  const double largeGap = std::log(std::max(values[0], floor) / std::max(values[1], floor));
-  glm::dvec3 axis = glm::normalize(smallGap >= largeGap ? vectors[2] : vectors[0]);
-  // Orientation: like most views' image "up" when they agree on one (views
-  // rolled by 180 degrees vote against), otherwise towards +Y, VTK's usual
-  // view up.
-  double upVote = 0.0;
-  for (int i = 0; i < n; ++i)
-  {
-    upVote += glm::dot(in.Cameras[i].Up(), axis);
-  }
-  const bool upDecides = std::abs(upVote) > 0.1 * n;
-  if ((upDecides && upVote < 0.0) || (!upDecides && axis.y < 0.0))
-  {
-    axis = -axis;
-  }
-
-  // Circle fit in the plane orthogonal to the axis: algebraic (Kasa) start,
-  // then Gauss-Newton on the geometric distance.
-  const glm::dvec3 refX0 = ReferenceDirection(axis);
-  const glm::dvec3 refY0 = glm::cross(axis, refX0);
-  std::vector<glm::dvec2> planar(n);
-  for (int i = 0; i < n; ++i)
-  {
-    const glm::dvec3 v = centers[i] - mean;
-    planar[i] = glm::dvec2(glm::dot(v, refX0), glm::dot(v, refY0));
-  }
-  glm::dmat3 normal(0.0);
-  glm::dvec3 rhs(0.0);
-  for (const glm::dvec2& p : planar)
-  {
-    const glm::dvec3 row(p.x, p.y, 1.0);
-    normal += glm::outerProduct(row, row);
-    rhs -= (p.x * p.x + p.y * p.y) * row;
-  }
-  // "<=": coinciding centres give a zero scatter, and a zero bound.
-  if (std::abs(glm::determinant(normal)) <= 1e-12 * std::pow(values[0] * n, 2.0) * n)
-  {
-    vtkErrorMacro("FitCylinder: the camera centres are collinear or coincide; no ring can be "
-                  "fitted to them.");
+    problem = "the camera centres are collinear or coincide; no ring can be fitted to them.";
     return false;
   }
-  const glm::dvec3 def = glm::inverse(normal) * rhs;
-  glm::dvec2 c2(-0.5 * def.x, -0.5 * def.y);
-  double radius = std::sqrt(std::max(glm::dot(c2, c2) - def.z, 0.0));
-  for (int iteration = 0; iteration < 20; ++iteration)
-  {
-    glm::dmat3 jtj(0.0);
-    glm::dvec3 jtr(0.0);
-    for (const glm::dvec2& p : planar)
-    {
-      const glm::dvec2 d = p - c2;
-      const double len = std::max(glm::length(d), 1e-300);
-      const glm::dvec3 j(-d.x / len, -d.y / len, -1.0);
-      const double r = len - radius;
-      jtj += glm::outerProduct(j, j);
-      jtr += r * j;
-    }
-    const glm::dvec3 step = glm::inverse(jtj) * jtr;
-    c2 -= glm::dvec2(step.x, step.y);
-    radius -= step.z;
-    if (glm::length(step) < 1e-14 * radius)
-    {
-      break;
-    }
-  }
-  const glm::dvec3 center = mean + c2.x * refX0 + c2.y * refY0;
-
   FromVec(axis, this->Axis);
   FromVec(center, this->Center);
   this->Radius = radius;
@@ -506,9 +612,8 @@ bool vtkCameraRig::FitCylinder()
   // Azimuth 0 at the first view.
   glm::dvec3 first = centers[0] - center;
   first -= glm::dot(first, axis) * axis;
-  in.RefX = glm::length(first) > 0.0 ? glm::normalize(first) : refX0;
+  in.RefX = glm::length(first) > 0.0 ? glm::normalize(first) : ReferenceDirection(axis);
   in.RefY = glm::cross(axis, in.RefX);
-
   lfd::RingLayout frame;
   frame.Cyl = { center, axis, radius };
   frame.RefX = in.RefX;
@@ -525,55 +630,17 @@ bool vtkCameraRig::FitCylinder()
   }
   this->FitResidual = std::sqrt(residual2 / n);
 
-  // Near-duplicates: same place, same viewing direction (roll is free: a
-  // view rotated by 180 degrees in its image plane sees the same rays).
-  const double cosLimit = std::cos(vtkMath::RadiansFromDegrees(5.0));
-  in.DuplicateOf.assign(n, -1);
-  for (int j = 0; j < n; ++j)
-  {
-    for (int i = 0; i < j; ++i)
-    {
-      if (in.DuplicateOf[i] < 0 &&
-        glm::distance(centers[i], centers[j]) < this->DuplicateTolerance * radius &&
-        glm::dot(in.Cameras[i].Forward(), in.Cameras[j].Forward()) > cosLimit)
-      {
-        in.DuplicateOf[j] = i;
-        break;
-      }
-    }
-  }
-
-  // Rows: cluster the heights.
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return in.Height[a] < in.Height[b]; });
-  in.Row.assign(n, 0);
-  in.RowHeights.clear();
-  std::vector<int> rowCounts;
-  for (int k = 0; k < n; ++k)
-  {
-    const int v = order[k];
-    if (k == 0 || in.Height[v] - in.Height[order[k - 1]] > this->RowTolerance * radius)
-    {
-      in.RowHeights.push_back(0.0);
-      rowCounts.push_back(0);
-    }
-    in.Row[v] = static_cast<int>(in.RowHeights.size()) - 1;
-    in.RowHeights.back() += in.Height[v];
-    rowCounts.back() += 1;
-  }
-  for (std::size_t r = 0; r < in.RowHeights.size(); ++r)
-  {
-    in.RowHeights[r] /= rowCounts[r];
-  }
+  in.DuplicateOf = FindDuplicates(centers, in.Cameras, this->DuplicateTolerance * radius);
+  ClusterRows(in.Height, this->RowTolerance * radius, in.Row, in.RowHeights);
   in.Fitted = true;
+  in.FitTime.Modified();
   return true;
 }
 
 //------------------------------------------------------------------------------
 double vtkCameraRig::GetAzimuth(int i) const
 {
-  return (this->Internal->Fitted && i >= 0 && i < this->GetNumberOfViews())
+  return (this->HasCylinder() && i >= 0 && i < this->GetNumberOfViews())
     ? this->Internal->Azimuth[i]
     : 0.0;
 }
@@ -581,22 +648,21 @@ double vtkCameraRig::GetAzimuth(int i) const
 //------------------------------------------------------------------------------
 double vtkCameraRig::GetHeight(int i) const
 {
-  return (this->Internal->Fitted && i >= 0 && i < this->GetNumberOfViews())
-    ? this->Internal->Height[i]
-    : 0.0;
+  return (this->HasCylinder() && i >= 0 && i < this->GetNumberOfViews()) ? this->Internal->Height[i]
+                                                                         : 0.0;
 }
 
 //------------------------------------------------------------------------------
 int vtkCameraRig::GetRow(int i) const
 {
-  return (this->Internal->Fitted && i >= 0 && i < this->GetNumberOfViews()) ? this->Internal->Row[i]
-                                                                            : -1;
+  return (this->HasCylinder() && i >= 0 && i < this->GetNumberOfViews()) ? this->Internal->Row[i]
+                                                                         : -1;
 }
 
 //------------------------------------------------------------------------------
 int vtkCameraRig::GetDuplicateOf(int i) const
 {
-  return (this->Internal->Fitted && i >= 0 && i < this->GetNumberOfViews())
+  return (this->HasCylinder() && i >= 0 && i < this->GetNumberOfViews())
     ? this->Internal->DuplicateOf[i]
     : -1;
 }
@@ -611,7 +677,7 @@ void vtkCameraRig::GetAzimuthFrame(double zero[3], double quarter[3]) const
 //------------------------------------------------------------------------------
 int vtkCameraRig::GetNumberOfRows() const
 {
-  return this->Internal->Fitted ? static_cast<int>(this->Internal->RowHeights.size()) : 0;
+  return this->HasCylinder() ? static_cast<int>(this->Internal->RowHeights.size()) : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -623,7 +689,7 @@ double vtkCameraRig::GetRowHeight(int row) const
 //------------------------------------------------------------------------------
 int vtkCameraRig::GetNumberOfDuplicates() const
 {
-  if (!this->Internal->Fitted)
+  if (!this->HasCylinder())
   {
     return 0;
   }
@@ -639,7 +705,7 @@ void vtkCameraRig::GetSortedViews(vtkIdList* views) const
   const int n = this->GetNumberOfViews();
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
-  if (this->Internal->Fitted)
+  if (this->HasCylinder())
   {
     const Internals& in = *this->Internal;
     std::stable_sort(order.begin(),
@@ -654,10 +720,10 @@ void vtkCameraRig::GetSortedViews(vtkIdList* views) const
 }
 
 //------------------------------------------------------------------------------
-lfd::RingLayout vtkCameraRig::GetRingLayout(const std::vector<int>& excluded)
+lfd::RingLayout vtkCameraRig::GetRingLayout(const std::vector<int>& excluded) const
 {
   lfd::RingLayout layout;
-  if (!this->Internal->Fitted && !this->FitCylinder())
+  if (!this->HasCylinder())
   {
     return layout;
   }
@@ -712,6 +778,7 @@ void vtkCameraRig::DeepCopy(vtkCameraRig* source)
   {
     return;
   }
+  const bool fitted = source->HasCylinder();
   *this->Internal = *source->Internal;
   this->SetImageSize(source->ImageSize);
   this->DuplicateTolerance = source->DuplicateTolerance;
@@ -721,6 +788,9 @@ void vtkCameraRig::DeepCopy(vtkCameraRig* source)
   this->Radius = source->Radius;
   this->FitResidual = source->FitResidual;
   this->Modified();
+  // A current fit is copied as current: the copy need not be fitted again.
+  this->Internal->Fitted = fitted;
+  this->Internal->FitTime.Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -732,8 +802,8 @@ void vtkCameraRig::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DuplicateTolerance: " << this->DuplicateTolerance << "\n";
   os << indent << "RowTolerance: " << this->RowTolerance << "\n";
   os << indent << "Distortion: " << (this->HasDistortion() ? "yes" : "none") << "\n";
-  os << indent << "Cylinder fitted: " << (this->Internal->Fitted ? "yes" : "no") << "\n";
-  if (this->Internal->Fitted)
+  os << indent << "Cylinder fitted: " << (this->HasCylinder() ? "yes" : "no") << "\n";
+  if (this->HasCylinder())
   {
     os << indent << "Axis: (" << this->Axis[0] << ", " << this->Axis[1] << ", " << this->Axis[2]
        << ")\n";

@@ -7,7 +7,15 @@
  * down), all views sharing one image size. Matrices are passed as row-major
  * arrays of 9 doubles.
  *
- * FitCylinder() fits the ring (or stack of rings) the camera centres lie on:
+ * FitCylinder() fits the ring (or stack of rings) the camera centres lie on,
+ * once, explicitly, when the rig is built or read: MakeCylinder() ends with
+ * it, and so do vtkLightFieldReader, vtkMiddleburyImporter (FitRigCylinder)
+ * and vtkLightFieldCapture; a rig set up view by view calls it when done.
+ * The fit is cached by the rig's modification time: any later change (a
+ * view, the image size, a tolerance) makes HasCylinder() false until the
+ * next FitCylinder(). Nothing that reads a rig fits it (GetRingLayout() and
+ * the renderers only read the fit), so no filter modifies its input's rig.
+ *
  * the axis is the principal direction of the centres whose spread stands apart
  * from the other two (for a ring, the normal of the plane fitted by SVD; for a
  * stack of rings taller than wide, the long direction), oriented like most
@@ -57,7 +65,7 @@ public:
   ///@{
   /**
    * Number of views. Resizing keeps the first views and gives new ones an
-   * identity camera; it clears the cylinder fit.
+   * identity camera; the cylinder fit becomes stale.
    */
   void SetNumberOfViews(int n);
   int GetNumberOfViews() const;
@@ -73,7 +81,7 @@ public:
 
   /**
    * Sets view `i`: intrinsics K and rotation R (row-major 3x3) and the
-   * translation t. Clears the cylinder fit.
+   * translation t. The cylinder fit becomes stale.
    */
   void SetView(int i, const double K[9], const double R[9], const double t[3]);
 
@@ -156,6 +164,7 @@ public:
    * of view `viewAngle` degrees and the given image size. The first camera
    * of a ring sits at azimuth 0, on `center + radius * reference` where the
    * reference is the axis-orthogonal part of +Z (or +X when the axis is Z).
+   * Ends with FitCylinder() when a ring has at least 3 views.
    */
   void MakeCylinder(const double center[3],
     const double axis[3],
@@ -181,14 +190,18 @@ public:
   ///@}
 
   /**
-   * Fits the cylinder, azimuths, heights, rows and duplicates. Returns false
+   * Fits the cylinder, azimuths, heights, rows and duplicates: the axis (see
+   * above), a circle fit in the plane orthogonal to it (algebraic start,
+   * Gauss-Newton on the geometric distance), each view located on the
+   * cylinder, near-duplicates, then rows clustered by height. Returns false
    * (with an error) when there are fewer than 3 distinct camera centres or
    * they are collinear.
    */
   bool FitCylinder();
 
   /**
-   * True when the cylinder fit is current.
+   * True when the cylinder fit is current: FitCylinder() succeeded and the
+   * rig has not been modified since.
    */
   bool HasCylinder() const;
 
@@ -250,18 +263,26 @@ public:
 #ifndef __VTK_WRAP__
   ///@{
   /**
-   * The pinhole camera of view `i` (kernel type). Setting it clears the
-   * cylinder fit.
+   * The pinhole camera of view `i` (kernel type). Setting it makes the
+   * cylinder fit stale.
    */
   void SetView(int i, const lfd::PinholeCamera& camera);
   const lfd::PinholeCamera& GetCamera(int i) const;
   ///@}
 
   /**
-   * The sampling layout over the views that are not duplicates and not in
-   * `excluded` (used by leave-one-out). Fits the cylinder first when needed.
+   * FitCylinder() without reporting an error: on failure returns false with
+   * the reason in `problem` (for readers, to which a rig no cylinder fits is
+   * not an error).
    */
-  lfd::RingLayout GetRingLayout(const std::vector<int>& excluded = {});
+  bool FitCylinder(std::string& problem);
+
+  /**
+   * The sampling layout over the views that are not duplicates and not in
+   * `excluded` (used by leave-one-out), from the current fit; empty (no
+   * rows) when the rig has none (HasCylinder() is false).
+   */
+  lfd::RingLayout GetRingLayout(const std::vector<int>& excluded = {}) const;
 
   /**
    * The rig's validation, shared by every reader, importer and writer: each
@@ -288,8 +309,6 @@ protected:
 private:
   vtkCameraRig(const vtkCameraRig&) = delete;
   void operator=(const vtkCameraRig&) = delete;
-
-  void ClearFit();
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -167,7 +167,6 @@ void vtkLightFieldAlgorithm::Fail(vtkLightField* output,
     output->Initialize();
   }
   this->SetErrorCode(errorCode);
-  this->ErrorMessage = message;
   vtkErrorMacro(<< message);
 }
 
@@ -175,13 +174,10 @@ void vtkLightFieldAlgorithm::Fail(vtkLightField* output,
 void vtkLightFieldAlgorithm::ClearError()
 {
   this->SetErrorCode(vtkErrorCode::NoError);
-  this->ErrorMessage.clear();
 }
 
 //------------------------------------------------------------------------------
 void vtkLightFieldAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ErrorMessage: " << (this->ErrorMessage.empty() ? "(none)" : this->ErrorMessage)
-     << "\n";
 }

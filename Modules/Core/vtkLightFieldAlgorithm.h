@@ -9,7 +9,10 @@
  * RequestInformation, RequestUpdateExtent and RequestData, which subclasses
  * override. By default it has no input and one output.
  *
- * @sa vtkLightField
+ * A failure is reported once, by Fail(): GetErrorCode() tells its kind and a
+ * vtkLightFieldErrorObserver gets its one-line message.
+ *
+ * @sa vtkLightField vtkLightFieldErrorObserver
  */
 #ifndef vtkLightFieldAlgorithm_h
 #define vtkLightFieldAlgorithm_h
@@ -37,17 +40,10 @@ public:
   ///@}
 
   /**
-   * One line describing the last failure, naming the file and field (or
-   * line) that is wrong; empty after a successful update. GetErrorCode()
-   * tells the kind of failure.
-   */
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
-
-  /**
    * Dispatches the pipeline requests to the Request* methods below. A C++
    * exception thrown by any of them (std::bad_alloc, a parser's or the file
    * system's) is caught here and reported like any other failure: error
-   * code UnknownError, GetErrorMessage() = DescribeFailure(what).
+   * code UnknownError, message DescribeFailure(what).
    */
   vtkTypeBool ProcessRequest(vtkInformation* request,
     vtkInformationVector** inputVector,
@@ -97,17 +93,16 @@ protected:
 
   /**
    * Records a failure: empties `output` (no points, an empty rig, no
-   * provenance; may be null), sets the error code and message and reports
-   * the message with vtkErrorMacro.
+   * provenance; may be null), sets the error code and reports the one-line
+   * message (naming the file and field, or line, that is wrong) with
+   * vtkErrorMacro: a vtkLightFieldErrorObserver gets it back.
    */
   void Fail(vtkLightField* output, unsigned long errorCode, const std::string& message);
 
   /**
-   * Clears the error code and message at the start of a request.
+   * Clears the error code at the start of a request.
    */
   void ClearError();
-
-  std::string ErrorMessage;
 
 private:
   vtkTypeBool DispatchRequest(vtkInformation* request,

@@ -13,6 +13,7 @@
 #include "vtkLeaveOneOutEvaluator.h"
 #include "vtkLightField.h"
 #include "vtkLightFieldCapture.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldRenderer.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -26,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkGroundTruthEvaluator);
@@ -185,6 +187,9 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
   renderer->SetSubdivision(this->Subdivision);
   renderer->SetWidenedSearch(this->WidenedSearch);
   renderer->SetObjectThreshold(this->ObjectThreshold);
+  // The inner algorithms' errors are said once, as this evaluator's.
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(renderer);
 
   // The mesh through the same map, captured with the same light from the
   // same camera.
@@ -230,11 +235,13 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
   }
   capture->SetRig(rig);
   capture->CaptureDepthOff();
+  errors->Observe(capture);
   capture->Update();
   vtkLightField* truth = capture->GetOutput();
   if (renderer->GetErrorCode() || capture->GetErrorCode() || !truth->GetPass(vtkLightField::LABEL))
   {
-    vtkErrorMacro("Rendering the light field or the ground truth failed.");
+    vtkErrorMacro("Rendering the light field or the ground truth failed"
+      << (errors->HasError() ? std::string(": ") + errors->GetErrorMessage() : std::string(".")));
     return 0;
   }
 

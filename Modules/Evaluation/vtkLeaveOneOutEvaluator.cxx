@@ -9,6 +9,7 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldRenderer.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 vtkStandardNewMacro(vtkLeaveOneOutEvaluator);
 
@@ -127,6 +129,9 @@ int vtkLeaveOneOutEvaluator::RequestData(vtkInformation*,
   renderer->SetWidth(input->GetWidth());
   renderer->SetHeight(input->GetHeight());
   renderer->SetFocalDistance(this->FocalDistance);
+  // The renderer's error is said once, as this evaluator's.
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(renderer);
 
   const vtkIdType pixels = static_cast<vtkIdType>(input->GetWidth()) * input->GetHeight();
   std::vector<unsigned char> mask(pixels);
@@ -142,11 +147,14 @@ int vtkLeaveOneOutEvaluator::RequestData(vtkInformation*,
     renderer->SetPinhole(K, R, t);
     renderer->RemoveAllExcludedViews();
     renderer->AddExcludedView(v);
+    errors->Clear();
     renderer->Update();
     vtkImageData* rendered = renderer->GetOutput();
     if (rendered->GetNumberOfPoints() != pixels)
     {
-      vtkErrorMacro("Rendering view " << v << " failed.");
+      vtkErrorMacro("Rendering view "
+        << v << " failed"
+        << (errors->HasError() ? std::string(": ") + errors->GetErrorMessage() : std::string(".")));
       return 0;
     }
     const unsigned char* photo = photos->GetPointer(3 * pixels * v);

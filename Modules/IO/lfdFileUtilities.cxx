@@ -1,5 +1,6 @@
 #include "lfdFileUtilities.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -21,6 +22,13 @@ namespace
 std::string SystemError(int error)
 {
   return std::strerror(error);
+}
+
+// What this process's temporaries add to their target's name (before any
+// extension): ".tmp-<pid>".
+std::string TemporaryTag()
+{
+  return ".tmp-" + std::to_string(::getpid());
 }
 
 // True when the process `pid` still runs (or exists and we may not signal
@@ -141,7 +149,7 @@ std::string TemporaryFileName(const std::string& path)
   const std::string extension = target.extension().string();
   RemoveStaleTemporaries(target.parent_path(), stem, extension);
   fs::path temporary = target;
-  temporary.replace_filename(stem + std::to_string(::getpid()) + extension);
+  temporary.replace_filename(target.stem().string() + TemporaryTag() + extension);
   return temporary.string();
 }
 
@@ -150,7 +158,25 @@ std::string TemporaryDirectoryName(const std::string& path)
 {
   const fs::path target(TrimSeparators(path));
   RemoveStaleTemporaries(target.parent_path(), target.filename().string() + ".tmp-", "");
-  return target.string() + ".tmp-" + std::to_string(::getpid());
+  return target.string() + TemporaryTag();
+}
+
+//------------------------------------------------------------------------------
+std::string NameTargets(std::string text)
+{
+  const std::string tag = TemporaryTag();
+  for (std::size_t at = text.find(tag); at != std::string::npos; at = text.find(tag, at))
+  {
+    // ".tmp-12" is not a temporary of process 12 inside ".tmp-123".
+    const std::size_t end = at + tag.size();
+    if (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])))
+    {
+      at = end;
+      continue;
+    }
+    text.erase(at, tag.size());
+  }
+  return text;
 }
 
 //------------------------------------------------------------------------------

@@ -55,6 +55,14 @@ LFDIO_EXPORT std::string TemporaryFileName(const std::string& path);
 LFDIO_EXPORT std::string TemporaryDirectoryName(const std::string& path);
 
 /**
+ * `text` (a message) with every temporary name of this process
+ * (TemporaryFileName(), TemporaryDirectoryName()) replaced by its target's:
+ * an output staged under a temporary name is reported under the name the
+ * user gave.
+ */
+LFDIO_EXPORT std::string NameTargets(std::string text);
+
+/**
  * Creates or truncates `path` and writes `size` bytes, checking every write,
  * the fsync and the close. On failure removes `path`, returns false and sets
  * `error` (the system's reason, e.g. "No space left on device").

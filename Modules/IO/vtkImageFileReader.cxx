@@ -53,7 +53,6 @@ vtkTypeBool vtkImageFileReader::ProcessRequest(vtkInformation* request,
 int vtkImageFileReader::Fail(unsigned long errorCode, const std::string& message)
 {
   this->SetErrorCode(errorCode);
-  this->ErrorMessage = message;
   vtkErrorMacro(<< message);
   return 0;
 }
@@ -64,7 +63,6 @@ int vtkImageFileReader::RequestInformation(vtkInformation*,
   vtkInformationVector* outputs)
 {
   this->SetErrorCode(vtkErrorCode::NoError);
-  this->ErrorMessage.clear();
   if (!this->FileName || !*this->FileName)
   {
     return this->Fail(vtkErrorCode::NoFileNameError, "vtkImageFileReader: no FileName set");
@@ -89,7 +87,6 @@ int vtkImageFileReader::RequestData(vtkInformation*,
   vtkInformationVector* outputs)
 {
   this->SetErrorCode(vtkErrorCode::NoError);
-  this->ErrorMessage.clear();
   vtkImageData* output = vtkImageData::GetData(outputs);
   output->Initialize();
   if (!this->FileName || !*this->FileName)
@@ -125,6 +122,4 @@ void vtkImageFileReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
-  os << indent << "ErrorMessage: " << (this->ErrorMessage.empty() ? "(none)" : this->ErrorMessage)
-     << "\n";
 }

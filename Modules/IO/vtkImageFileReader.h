@@ -7,7 +7,8 @@
  * unsigned char for 8-bit files, unsigned short for 16-bit ones and float
  * for everything else (half, float, double). Rows are flipped so that the
  * bottom image row comes first, the VTK way. Errors (missing or unreadable
- * file) leave the output empty, set GetErrorCode() and GetErrorMessage().
+ * file) leave the output empty, set GetErrorCode() and report one line
+ * naming the file (vtkErrorMacro; a vtkLightFieldErrorObserver gets it).
  *
  * @sa vtkImageFileWriter vtkLightFieldReader
  */
@@ -35,13 +36,8 @@ public:
   ///@}
 
   /**
-   * The last error (one line naming the file), or "".
-   */
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
-
-  /**
    * Runs the pipeline request; a C++ exception thrown by it is caught and
-   * reported as an error (error code UnknownError, GetErrorMessage() naming
+   * reported as an error (error code UnknownError, a message naming
    * the file), never passed on to the caller.
    */
   vtkTypeBool ProcessRequest(vtkInformation* request,
@@ -66,8 +62,6 @@ private:
   void operator=(const vtkImageFileReader&) = delete;
 
   int Fail(unsigned long errorCode, const std::string& message);
-
-  std::string ErrorMessage;
 };
 
 #endif

@@ -60,14 +60,12 @@ vtkTypeBool vtkImageFileWriter::ProcessRequest(vtkInformation* request,
 void vtkImageFileWriter::Fail(unsigned long errorCode, const std::string& message)
 {
   this->SetErrorCode(errorCode);
-  this->ErrorMessage = message;
   vtkErrorMacro(<< message);
 }
 
 //------------------------------------------------------------------------------
 void vtkImageFileWriter::WriteData()
 {
-  this->ErrorMessage.clear();
   if (!this->FileName || !*this->FileName)
   {
     this->Fail(vtkErrorCode::NoFileNameError, "vtkImageFileWriter: no FileName set");
@@ -129,6 +127,4 @@ void vtkImageFileWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
-  os << indent << "ErrorMessage: " << (this->ErrorMessage.empty() ? "(none)" : this->ErrorMessage)
-     << "\n";
 }

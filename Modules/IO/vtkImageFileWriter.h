@@ -9,7 +9,8 @@
  * VTK's order (bottom first) to the file's (top first). The file is written
  * under a temporary name in the same folder and renamed onto FileName when
  * complete, so a reader never sees half an image. Errors set GetErrorCode()
- * and GetErrorMessage() (one line naming the file).
+ * and report one line naming the file (vtkErrorMacro; a
+ * vtkLightFieldErrorObserver gets it).
  *
  * @sa vtkImageFileReader vtkLightFieldWriter
  */
@@ -39,18 +40,13 @@ public:
   ///@}
 
   /**
-   * The last error (one line naming the file), or "".
-   */
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
-
-  /**
    * The input image.
    */
   vtkImageData* GetInput();
 
   /**
    * Runs the pipeline request; a C++ exception thrown by it is caught and
-   * reported as an error (error code UnknownError, GetErrorMessage() naming
+   * reported as an error (error code UnknownError, a message naming
    * the file), never passed on to the caller.
    */
   vtkTypeBool ProcessRequest(vtkInformation* request,
@@ -71,8 +67,6 @@ private:
   void operator=(const vtkImageFileWriter&) = delete;
 
   void Fail(unsigned long errorCode, const std::string& message);
-
-  std::string ErrorMessage;
 };
 
 #endif

@@ -495,6 +495,10 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
   output->SetLayout(manifest.Width, manifest.Height, views);
   vtkNew<vtkCameraRig> rig;
   FillRig(manifest.Views, manifest.Width, manifest.Height, rig);
+  // The rig is fitted once, as it is read; one no cylinder fits (fewer than 3
+  // views, collinear centres) is read as it is, unfitted.
+  std::string noCylinder;
+  rig->FitCylinder(noCylinder);
   vtkNew<vtkImageData> masks;
   vtkNew<vtkUnsignedCharArray> mask;
   if (!manifest.Masks.empty())

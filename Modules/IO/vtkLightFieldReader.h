@@ -25,11 +25,11 @@
  * bit depth or channel count differs from what the manifest and the pass
  * expect (checked for every image before any pass is allocated) are each
  * reported by one error that names the file and the field. A C++ exception
- * is reported the same way (vtkLightFieldAlgorithm::ProcessRequest). The output is then empty,
- * GetErrorCode() is not vtkErrorCode::NoError and GetErrorMessage() holds that one line. As for any
- * VTK algorithm, the pipeline's executive reports the failed request too;
- * observe vtkCommand::ErrorEvent on the reader and its executive to handle
- * errors quietly.
+ * is reported the same way (vtkLightFieldAlgorithm::ProcessRequest). The output is then empty
+ * and GetErrorCode() is not vtkErrorCode::NoError. As for any VTK algorithm,
+ * the pipeline's executive reports the failed request too; a
+ * vtkLightFieldErrorObserver observing the reader records both quietly and
+ * gives back the reader's one line.
  *
  * @sa vtkLightFieldWriter vtkLightField vtkMiddleburyImporter
  */

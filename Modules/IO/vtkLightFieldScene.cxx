@@ -362,7 +362,6 @@ struct vtkLightFieldScene::Internals
   std::vector<Keyframe> Keyframes;
   vtkSmartPointer<vtkCamera> Camera = vtkSmartPointer<vtkCamera>::New();
   std::string ResolvedPath;
-  std::string ErrorMessage;
 };
 
 //------------------------------------------------------------------------------
@@ -396,15 +395,8 @@ void vtkLightFieldScene::Initialize()
 }
 
 //------------------------------------------------------------------------------
-const char* vtkLightFieldScene::GetErrorMessage() const
-{
-  return this->Internal->ErrorMessage.c_str();
-}
-
-//------------------------------------------------------------------------------
 bool vtkLightFieldScene::Fail(const std::string& message)
 {
-  this->Internal->ErrorMessage = message;
   vtkErrorMacro(<< message);
   return false;
 }
@@ -427,7 +419,6 @@ const char* vtkLightFieldScene::GetResolvedLightFieldPath()
 //------------------------------------------------------------------------------
 bool vtkLightFieldScene::ConfigureReader(vtkLightFieldReader* reader)
 {
-  this->Internal->ErrorMessage.clear();
   const std::string scene = this->FileName ? this->FileName : "(scene)";
   if (!this->LightFieldPath || !*this->LightFieldPath)
   {
@@ -517,7 +508,6 @@ vtkCamera* vtkLightFieldScene::GetCamera()
 //------------------------------------------------------------------------------
 bool vtkLightFieldScene::Read(const char* fileName)
 {
-  this->Internal->ErrorMessage.clear();
   if (!fileName || !*fileName)
   {
     return this->Fail("vtkLightFieldScene::Read: no file name given");
@@ -588,7 +578,6 @@ bool vtkLightFieldScene::Read(const char* fileName)
 //------------------------------------------------------------------------------
 bool vtkLightFieldScene::Write(const char* fileName)
 {
-  this->Internal->ErrorMessage.clear();
   if (!fileName || !*fileName)
   {
     return this->Fail("vtkLightFieldScene::Write: no file name given");
@@ -768,6 +757,4 @@ void vtkLightFieldScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
   os << indent << "Background: (" << this->Background[0] << ", " << this->Background[1] << ", "
      << this->Background[2] << ")\n";
-  os << indent << "ErrorMessage: "
-     << (this->Internal->ErrorMessage.empty() ? "(none)" : this->Internal->ErrorMessage) << "\n";
 }

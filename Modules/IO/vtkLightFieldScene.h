@@ -27,7 +27,8 @@
  *   Background (RGB, each in [0, 1], default black).
  *
  * Read() validates the whole file before changing anything and returns false
- * with one line in GetErrorMessage() naming the file and the field: malformed
+ * with one error line (vtkErrorMacro; a vtkLightFieldErrorObserver gets it)
+ * naming the file and the field: malformed
  * JSON (line and column), wrong format, unknown version, missing fields, a
  * corner index out of range, a box without exactly 8 corners, `points` and
  * `rest_points` of different lengths, a keyframe whose point count differs
@@ -65,23 +66,18 @@ public:
 
   /**
    * Reads `fileName`. On failure returns false, keeps the current content and
-   * sets GetErrorMessage().
+   * reports the error.
    */
   bool Read(const char* fileName);
 
   /**
-   * Writes `fileName` atomically. On failure returns false and sets
-   * GetErrorMessage(); an existing file is left untouched. A relative
+   * Writes `fileName` atomically. On failure returns false and reports the
+   * error; an existing file is left untouched. A relative
    * light-field path of a scene read from (or written to) a file is
    * rewritten relative to `fileName`'s folder, so the new file names the
    * same light field.
    */
   bool Write(const char* fileName);
-
-  /**
-   * The last error (one line naming the file and field), or "".
-   */
-  const char* GetErrorMessage() const;
 
   /**
    * Resets everything to the defaults (no light field, no cage, no
@@ -114,7 +110,7 @@ public:
 
   /**
    * Points `reader` (may be null, to check only) at the scene's light field.
-   * Returns false, with GetErrorMessage() naming the scene file and its
+   * Returns false, with an error naming the scene file and its
    * field "lightfield", when the scene names no light field or the resolved
    * path does not exist.
    */

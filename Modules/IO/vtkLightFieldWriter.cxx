@@ -344,7 +344,6 @@ int vtkLightFieldWriter::FillInputPortInformation(int, vtkInformation* info)
 //------------------------------------------------------------------------------
 void vtkLightFieldWriter::WriteData()
 {
-  this->ErrorMessage.clear();
   vtkLightField* input = this->GetInput();
   if (!this->Directory || !*this->Directory)
   {
@@ -426,7 +425,6 @@ vtkTypeBool vtkLightFieldWriter::ProcessRequest(vtkInformation* request,
 void vtkLightFieldWriter::Fail(unsigned long errorCode, const std::string& message)
 {
   this->SetErrorCode(errorCode);
-  this->ErrorMessage = message;
   vtkErrorMacro(<< message);
 }
 
@@ -435,6 +433,4 @@ void vtkLightFieldWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Directory: " << (this->Directory ? this->Directory : "(none)") << "\n";
-  os << indent << "ErrorMessage: " << (this->ErrorMessage.empty() ? "(none)" : this->ErrorMessage)
-     << "\n";
 }

@@ -17,8 +17,9 @@
  * An existing Directory is replaced only after success, and only when it is
  * empty or a light-field dataset (it holds a lightfield.json), so a mistyped
  * path never deletes unrelated files. On failure the temporary directory is
- * removed, GetErrorCode() is set and GetErrorMessage() holds one line naming
- * the file and the problem. Progress is reported once per image.
+ * removed, GetErrorCode() is set and one line naming the file and the problem
+ * is reported (vtkErrorMacro; a vtkLightFieldErrorObserver gets it). Progress is reported once per
+ * image.
  *
  * @sa vtkLightFieldReader vtkLightField
  */
@@ -48,19 +49,13 @@ public:
   ///@}
 
   /**
-   * The text of the last error (one line), or an empty string after a
-   * successful write.
-   */
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
-
-  /**
    * The input light field.
    */
   vtkLightField* GetInput();
 
   /**
    * Runs the pipeline request; a C++ exception thrown by it is caught and
-   * reported as an error (error code UnknownError, GetErrorMessage() naming
+   * reported as an error (error code UnknownError, a message naming
    * the file), never passed on to the caller.
    */
   vtkTypeBool ProcessRequest(vtkInformation* request,
@@ -81,8 +76,6 @@ private:
   void operator=(const vtkLightFieldWriter&) = delete;
 
   void Fail(unsigned long errorCode, const std::string& message);
-
-  std::string ErrorMessage;
 };
 
 #endif

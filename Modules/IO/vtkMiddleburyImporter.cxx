@@ -345,7 +345,8 @@ int vtkMiddleburyImporter::RequestData(vtkInformation*,
     rig->SetView(i, v, v + 9, v + 18);
     rig->SetViewName(i, entries[i].Name.c_str());
   }
-  if (this->FitRigCylinder && views >= 3 && !rig->FitCylinder())
+  std::string noCylinder;
+  if (this->FitRigCylinder && views >= 3 && !rig->FitCylinder(noCylinder))
   {
     vtkWarningMacro(<< parFile << ": the camera centres do not determine a cylinder; "
                     << "the rig is imported without a cylinder fit.");

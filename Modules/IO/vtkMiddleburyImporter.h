@@ -30,8 +30,8 @@
  * image that is not a regular file, a missing or unreadable image, an image
  * whose size differs from the first one or that is not 8-bit grey or colour,
  * a light field above lfd::MaximumLightFieldBytes (all checked before the
- * pass is allocated). The output is then empty,
- * GetErrorCode() is set and GetErrorMessage() holds the one-line message.
+ * pass is allocated). The output is then empty, GetErrorCode() is set and
+ * the one-line message is reported (see vtkLightFieldErrorObserver).
  *
  * @sa vtkLightFieldReader vtkCameraRig
  */

@@ -7,6 +7,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldRenderer.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -53,6 +54,7 @@ void main()
 struct vtkLightFieldMapper::Internals
 {
   vtkNew<vtkLightFieldRenderer> Renderer;
+  vtkNew<vtkLightFieldErrorObserver> Errors;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   vtkNew<vtkTextureObject> Color;
   vtkNew<vtkTextureObject> Depth;
@@ -66,6 +68,7 @@ vtkLightFieldMapper::vtkLightFieldMapper()
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(0);
+  this->Internal->Errors->Observe(this->Internal->Renderer);
 }
 
 //------------------------------------------------------------------------------
@@ -116,10 +119,11 @@ double* vtkLightFieldMapper::GetBounds()
   {
     return this->Bounds;
   }
-  this->GetInputAlgorithm(0, 0)->Update();
+  // The inputs as they are: asking for bounds runs no pipeline and fits no
+  // rig (a vtkRenderer asks before every render).
   vtkLightField* lightField = vtkLightField::SafeDownCast(this->GetInputDataObject(0, 0));
   vtkCameraRig* rig = lightField ? lightField->GetRig() : nullptr;
-  if (!rig || (!rig->HasCylinder() && !rig->FitCylinder()))
+  if (!rig || !rig->HasCylinder())
   {
     return this->Bounds;
   }
@@ -132,7 +136,6 @@ double* vtkLightFieldMapper::GetBounds()
   }
   if (this->GetNumberOfInputConnections(1) > 0)
   {
-    this->GetInputAlgorithm(1, 0)->Update();
     if (auto* cage = vtkUnstructuredGrid::SafeDownCast(this->GetInputDataObject(1, 0)))
     {
       const double* cageBounds = cage->GetBounds();
@@ -172,6 +175,12 @@ void vtkLightFieldMapper::Render(vtkRenderer* renderer)
   view->SetWidth(width);
   view->SetHeight(height);
   view->Update();
+  if (in.Errors->HasError())
+  {
+    // The renderer's error is said once, as the mapper's own.
+    vtkErrorMacro(<< in.Errors->GetErrorMessage());
+    in.Errors->Clear();
+  }
   vtkImageData* image = view->GetOutput();
   auto* colors = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
   auto* depths = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("Depth"));

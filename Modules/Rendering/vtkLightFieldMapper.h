@@ -17,7 +17,8 @@
  * InteractiveUpdateRate, which vtkRenderWindowInteractor sets during
  * interaction) the image is computed at 1 / InteractiveSubsampling of the
  * resolution and magnified; the next still render is full resolution
- * (progressive refinement).
+ * (progressive refinement). An error of the view's computation is reported
+ * as the mapper's own (see vtkLightFieldErrorObserver).
  *
  * @sa vtkLightFieldActor vtkLightFieldRenderer
  */
@@ -85,7 +86,10 @@ public:
   ///@{
   /**
    * Bounds of what the light field can show: the deformed cage's bounds
-   * joined with a box of half the rig radius around the rig centre.
+   * joined with a box of half the rig radius around the rig centre (of its
+   * cylinder fit, vtkCameraRig::FitCylinder()). Computed from the inputs as
+   * they are, without updating the pipeline: update the inputs (or render
+   * once) before ResetCamera() if it must see them.
    */
   double* GetBounds() override;
   using vtkAbstractMapper3D::GetBounds;

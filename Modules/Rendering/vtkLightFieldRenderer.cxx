@@ -17,6 +17,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -525,10 +526,13 @@ vtkLightField* vtkLightFieldRenderer::OnePart(vtkLightField* input, int label)
   split->SetInputData(copy);
   split->SetBandLabel(0, label);
   split->SetThreshold(this->ObjectThreshold);
+  // The split's error is said once, as the renderer's own.
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(split);
   split->Update();
   if (split->GetErrorCode() != 0)
   {
-    vtkErrorMacro(<< split->GetErrorMessage());
+    vtkErrorMacro(<< errors->GetErrorMessage());
     this->Parts = nullptr;
     return nullptr;
   }

@@ -6,8 +6,8 @@
  * passes, rig, palette and projectors are shared, not copied) with a new
  * `Label` pass (0 = unlabelled or background, 1..N = parts) and, when the
  * splitter measures it, a `Confidence` pass (0..255). Subclasses implement
- * Split(); a failure is one readable line in GetErrorMessage() (see
- * vtkLightFieldAlgorithm) and an empty output. Progress is reported by the
+ * Split(); a failure is one readable error line (see vtkLightFieldAlgorithm
+ * and vtkLightFieldErrorObserver) and an empty output. Progress is reported by the
  * subclasses once per view.
  *
  * @sa vtkProjectorSegmentation vtkScanlineSplit vtkLabelPropagation

@@ -897,10 +897,6 @@ bool vtkLightFieldCapture::BuildRig(const double bounds[6], vtkCameraRig* rig)
     vtkErrorMacro("Building the cylinder rig failed.");
     return false;
   }
-  if (this->ViewsPerRing >= 3)
-  {
-    rig->FitCylinder();
-  }
   return true;
 }
 
@@ -982,6 +978,12 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
   if (this->Rig)
   {
     rig->DeepCopy(this->Rig);
+    // The output rig is fitted once, here (the given one is left as it is).
+    std::string noCylinder;
+    if (!rig->HasCylinder())
+    {
+      rig->FitCylinder(noCylinder);
+    }
   }
   else if (!this->BuildRig(bounds, rig))
   {

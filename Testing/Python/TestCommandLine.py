@@ -285,6 +285,7 @@ def check_demo_scene(folder, scene_file, light_field, frames_dir, boxes):
     """The scene validates against its light field, has 9 keyframes and its
     3 frames show the object."""
     scene = lfd_module.vtkLightFieldScene()
+    errors = t.error_observer(scene)
     read = scene.Read(os.path.join(folder, scene_file))
     reader = lfd_module.vtkLightFieldReader()
     reader.SetFileName(os.path.join(folder, light_field))
@@ -295,7 +296,7 @@ def check_demo_scene(folder, scene_file, light_field, frames_dir, boxes):
     t.check(read and cage.GetNumberOfBoxes() == boxes and scene.GetNumberOfKeyframes() == 9 and
             why == "",
             f"demo {scene_file}: {boxes} box(es), 9 keyframes, validates against {light_field}",
-            scene.GetErrorMessage() or why or cage.GetNumberOfBoxes())
+            errors.GetErrorMessage() or why or cage.GetNumberOfBoxes())
     files = sorted(os.listdir(os.path.join(folder, frames_dir)))
     t.check(files == sorted([f"frame_000{i}.png" for i in range(3)] + MOVIE),
             f"demo {scene_file}: {frames_dir} holds exactly 3 frames", files)

@@ -24,6 +24,9 @@ capture.SetViewsPerRing(60)
 capture.SetWidth(128)
 capture.SetHeight(128)
 capture.CaptureDepthOff()
+# The mapper's bounds come from its inputs as they are (GetBounds runs no
+# pipeline): update the capture before the clipping range is reset.
+capture.Update()
 parts = lfd.vtkPartCageSource()
 parts.SetInputConnection(fish.GetOutputPort())
 pose = t.pose(parts.GetOutputPort(), lfd.vtkCagePoseFilter.SWIM, 20.0, (0, 0, 1), 1.0)

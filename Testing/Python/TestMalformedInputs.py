@@ -28,16 +28,6 @@ def path(*parts):
     return os.path.join(WORK, *parts)
 
 
-def observe(obj, errors):
-    """Collects the ErrorEvents of `obj` (and its executive) instead of printing them."""
-    def on_error(_caller, _event, data=None):
-        errors.append(data)
-    on_error.CallDataType = "string0"
-    obj.AddObserver("ErrorEvent", on_error)
-    if hasattr(obj, "GetExecutive"):
-        obj.GetExecutive().AddObserver("ErrorEvent", on_error)
-
-
 class CapturedStderr:
     """File descriptor 2 redirected to a file: what libraries print there."""
     def __enter__(self):
@@ -73,32 +63,31 @@ def write_image(file, channels=3, scalar=VTK_UNSIGNED_CHAR, width=W, height=H, v
     writer = lfd.vtkImageFileWriter()
     writer.SetInputData(image)
     writer.SetFileName(file)
+    errors = t.error_observer(writer)
     writer.Write()
-    assert writer.GetErrorCode() == 0, writer.GetErrorMessage()
+    assert writer.GetErrorCode() == 0, errors.GetErrorMessage()
 
 
 def update_reader(reader, target):
-    """Runs a reader on `target`: (error code 0, its error events, its
-    message, what it printed on stderr)."""
-    errors = []
-    observe(reader, errors)
+    """Runs a reader on `target`: (error code 0, whether it reported an
+    error, its message, what it printed on stderr)."""
+    errors = t.error_observer(reader)
     reader.SetFileName(target)
     with CapturedStderr() as captured:
         reader.Update()
-    return reader.GetErrorCode() == 0, errors, reader.GetErrorMessage(), captured.text
+    return reader.GetErrorCode() == 0, errors.HasError(), errors.GetErrorMessage(), captured.text
 
 
 def read_dataset(target):
-    ok, errors, message, printed = update_reader(lfd.vtkLightFieldReader(), target)
-    return ok and not errors, message, printed
+    ok, reported, message, printed = update_reader(lfd.vtkLightFieldReader(), target)
+    return ok and not reported, message, printed
 
 
 def read_scene(target):
     scene = lfd.vtkLightFieldScene()
-    errors = []
-    observe(scene, errors)
+    errors = t.error_observer(scene)
     ok = scene.Read(target)
-    return ok, scene.GetErrorMessage(), scene
+    return ok, errors.GetErrorMessage(), scene
 
 
 def import_par(target):
@@ -133,8 +122,9 @@ writer = lfd.vtkLightFieldWriter()
 writer.SetInputData(light_field)
 valid = path("valid.lf")
 writer.SetDirectory(valid)
+errors = t.error_observer(writer)
 writer.Write()
-assert writer.GetErrorCode() == 0, writer.GetErrorMessage()
+assert writer.GetErrorCode() == 0, errors.GetErrorMessage()
 with open(os.path.join(valid, "lightfield.json")) as f:
     MANIFEST = json.load(f)
 ok, message, _ = read_dataset(valid)
@@ -352,23 +342,22 @@ scene_case("NUL in the light-field path", scene_file(nul_light_field), "lightfie
 
 no_light_field = scene_file(lambda s: s.pop("lightfield"))
 ok, message, scene = read_scene(no_light_field)
-errors = []
-observe(scene, errors)
+errors = t.error_observer(scene)
 configured = scene.ConfigureReader(lfd.vtkLightFieldReader())
-expect("scene.json: no lightfield", "" if configured else scene.GetErrorMessage(),
+expect("scene.json: no lightfield", "" if configured else errors.GetErrorMessage(),
        no_light_field, 'field "lightfield"', "missing")
 missing_light_field = scene_file(lambda s: s.update(lightfield="gone.lf"))
 read_scene(missing_light_field)
 ok, message, scene = read_scene(missing_light_field)
-observe(scene, errors)
+errors = t.error_observer(scene)
 configured = scene.ConfigureReader(None)
-expect("scene.json: lightfield not found", "" if configured else scene.GetErrorMessage(),
+expect("scene.json: lightfield not found", "" if configured else errors.GetErrorMessage(),
        missing_light_field, 'field "lightfield"', "gone.lf", "not found")
 writer_scene = read_scene(scene_file())[2]
 writer_scene.SetSubdivision(200)
-observe(writer_scene, errors)
+errors = t.error_observer(writer_scene)
 written = writer_scene.Write(path("written.json"))
-expect("scene Write refuses what Read refuses", "" if written else writer_scene.GetErrorMessage(),
+expect("scene Write refuses what Read refuses", "" if written else errors.GetErrorMessage(),
        "written.json", "render.subdivision")
 
 # ---------------------------------------------------------------- Middlebury par files

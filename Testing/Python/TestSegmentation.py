@@ -12,7 +12,7 @@ import sys
 import lfdtesting as t
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkCommand, vtkUnsignedCharArray
+from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkPNGReader
 
@@ -33,10 +33,9 @@ SPLIT_RENDER_PSNR = 40.0
 
 
 def quiet(algorithm):
-    """Keeps an algorithm's expected errors off the log (ctest fails on them);
-    the tests read them from GetErrorMessage()."""
-    for obj in (algorithm, algorithm.GetExecutive()):
-        obj.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: None)
+    """Keeps an algorithm's expected errors off the log (ctest fails on them):
+    they are recorded by an observer, kept as the algorithm's `errors`."""
+    algorithm.errors = t.error_observer(algorithm)
     return algorithm
 
 
@@ -309,12 +308,13 @@ no_flood = lfd.vtkLightField()
 no_flood.DeepCopy(fish_lf)
 no_flood.GetPointData().RemoveArray("Flood")
 seg = segment(no_flood)
-t.check("no Flood pass" in seg.GetErrorMessage(), "missing Flood pass", seg.GetErrorMessage())
+t.check("no Flood pass" in seg.errors.GetErrorMessage(), "missing Flood pass",
+        seg.errors.GetErrorMessage())
 no_palette = lfd.vtkLightField()
 no_palette.DeepCopy(fish_lf)
 no_palette.SetPalette(None)
 seg = segment(no_palette)
-t.check("palette" in seg.GetErrorMessage(), "missing palette", seg.GetErrorMessage())
+t.check("palette" in seg.errors.GetErrorMessage(), "missing palette", seg.errors.GetErrorMessage())
 masks = vtkImageData()
 masks.SetDimensions(10, 10, 4)
 masks.GetPointData().SetScalars(numpy_to_vtk(np.zeros((400, 3), np.uint8), deep=True))
@@ -331,7 +331,7 @@ def failed_capture(**settings):
     for name, value in settings.items():
         getattr(cap, "Set" + name)(value)
     cap.Update()
-    return cap.GetErrorMessage(), cap.GetOutput().GetNumberOfPoints() == 0
+    return cap.errors.GetErrorMessage(), cap.GetOutput().GetNumberOfPoints() == 0
 
 
 message, empty = failed_capture(NumberOfProjectors=4, ProjectorMasks=masks)
@@ -349,6 +349,7 @@ propagation = quiet(lfd.vtkLabelPropagation())
 propagation.SetPaintedView(0, wrong)
 propagation.SetInputData(fish_lf)
 propagation.Update()
-t.check("10x10" in propagation.GetErrorMessage() and "256x256" in propagation.GetErrorMessage(),
-        "painted label image of the wrong size", propagation.GetErrorMessage())
+message = propagation.errors.GetErrorMessage()
+t.check("10x10" in message and "256x256" in message, "painted label image of the wrong size",
+        message)
 t.finish()

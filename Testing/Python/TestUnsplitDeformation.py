@@ -15,8 +15,6 @@ import sys
 import numpy as np
 
 import lfdtesting as t
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkIntArray
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkRenderWindow, vtkRenderer,
@@ -30,18 +28,6 @@ TWIST_CHANGED = 10000  # measured 17351 pixels of 256^2 differ from the rest ren
 MAPPER_CHANGED = 5000  # measured 10645 pixels of 200^2
 TEMPLE_TOP_CHANGED = 4000  # measured 5701 pixels (above 32 levels) of 256^2
 TEMPLE_BASE_CHANGED = 500  # measured 256
-
-
-def error_messages(obj):
-    """The list the text of every ErrorEvent of `obj` is appended to."""
-    messages = []
-
-    @calldata_type(VTK_STRING)
-    def collect(caller, event, message):
-        messages.append(message)
-
-    obj.AddObserver("ErrorEvent", collect)
-    return messages
 
 
 def render(light_field, cage, camera, size=256, threshold=10.0):
@@ -163,7 +149,7 @@ why = two.Validate(unlabelled)
 t.check("move different parts" in why, "two labels on the unlabelled figure: the cage is refused",
         why)
 renderer = lfd.vtkLightFieldRenderer()
-errors = error_messages(renderer)
+errors = t.error_observer(renderer)
 renderer.SetInputData(unlabelled)
 renderer.SetCageData(two)
 renderer.SetCamera(camera)
@@ -173,8 +159,9 @@ renderer.Update()
 expected = ("cage: box 0 (label 1) and box 1 (label 2) move different parts, but the light field "
             "has no Label pass (it is one part): split it first (lfd split "
             "projector|scanline|propagate ...) or give every box the same label")
-t.check(errors and errors[-1].rstrip().endswith(expected),
-        "two labels on the unlabelled figure: the renderer says to split first", errors)
+t.check(errors.GetErrorMessage().endswith(expected),
+        "two labels on the unlabelled figure: the renderer says to split first",
+        errors.GetErrorMessage())
 
 # (b) Real: the templeRing ------------------------------------------------------
 importer = t.templering("(b) templeRing top twisted in one box")

@@ -1,17 +1,19 @@
 // Cylinder fit of vtkCameraRig: a noisy, tilted synthetic ring with a
-// near-duplicate and a view rolled by 180 degrees, a three-row rig, and the
-// refusal of a degenerate rig.
+// near-duplicate and a view rolled by 180 degrees, a three-row rig, the fit
+// made once and cached by the rig's modification time (reading the layout
+// neither fits nor modifies the rig), and the refusal of a degenerate rig.
 #include "lfdCylinderSampling.h"
 #include "vtkCameraRig.h"
 #include "vtkIdList.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
-#include "vtkTestErrorObserver.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <random>
+#include <string>
 
 namespace
 {
@@ -73,6 +75,14 @@ int TestCameraRig(int, char*[])
   const double down[3] = { -axis[0], -axis[1], -axis[2] };
   SetLookAt(rig, ring + 1, positions[20], center, down);
 
+  // Set up view by view: no fit until FitCylinder(), and reading the
+  // layout does not fit (or modify) the rig.
+  const vtkMTimeType unfittedTime = rig->GetMTime();
+  const bool noLayout = !rig->HasCylinder() && rig->GetRingLayout().Rows.empty();
+  Check(noLayout && rig->GetMTime() == unfittedTime && !rig->HasCylinder(),
+    "no fit, no layout, no modification before FitCylinder",
+    static_cast<double>(rig->GetMTime() - unfittedTime),
+    0);
   if (!rig->FitCylinder())
   {
     std::cout << "FAIL FitCylinder refused a valid ring\n";
@@ -118,13 +128,33 @@ int TestCameraRig(int, char*[])
     static_cast<double>(layout.Rows[0].View.size()),
     ring - 1);
 
+  // The fit is cached by the modification time: a copy keeps it, any change
+  // makes it stale until the next FitCylinder().
+  vtkNew<vtkCameraRig> copy;
+  copy->DeepCopy(rig);
+  Check(copy->HasCylinder() && copy->GetNumberOfDuplicates() == 2,
+    "a deep copy keeps the fit",
+    copy->GetNumberOfDuplicates(),
+    2);
+  copy->SetRowTolerance(0.1);
+  Check(!copy->HasCylinder() && copy->GetNumberOfRows() == 0 && copy->GetRingLayout().Rows.empty(),
+    "a changed tolerance makes the fit stale",
+    copy->GetNumberOfRows(),
+    0);
+  SetLookAt(rig, 3, positions[3], center, axis);
+  Check(!rig->HasCylinder(), "a changed view makes the fit stale", rig->HasCylinder(), 0);
+  Check(rig->FitCylinder() && rig->HasCylinder() && rig->GetNumberOfDuplicates() == 2,
+    "fitted again",
+    rig->GetNumberOfDuplicates(),
+    2);
+
   // Three rows from MakeCylinder.
   vtkNew<vtkCameraRig> rows;
   const double origin[3] = { 0.0, 0.0, 0.0 };
   const double yAxis[3] = { 0.0, 1.0, 0.0 };
   const double heights[3] = { -0.5, 0.0, 0.5 };
   rows->MakeCylinder(origin, yAxis, 3.0, 40, 3, heights, 64, 64, 30.0);
-  rows->FitCylinder();
+  Check(rows->HasCylinder(), "MakeCylinder fits what it builds", rows->HasCylinder(), 1);
   Check(rows->GetNumberOfViews() == 120, "views", rows->GetNumberOfViews(), 120);
   Check(rows->GetNumberOfRows() == 3, "rows", rows->GetNumberOfRows(), 3);
   Check(std::abs(rows->GetRadius() - 3.0) < 1e-9, "radius error", rows->GetRadius() - 3.0, 1e-9);
@@ -157,13 +187,17 @@ int TestCameraRig(int, char*[])
     const double target[3] = { static_cast<double>(i), 0.0, 1.0 };
     SetLookAt(line, i, p, target, yAxis);
   }
-  vtkNew<vtkTest::ErrorObserver> observer;
-  line->AddObserver(vtkCommand::ErrorEvent, observer);
-  const bool refused = !line->FitCylinder() && observer->GetError();
-  Check(refused, "collinear rig refused", refused, 1);
-  if (refused)
-  {
-    std::cout << "     message: " << observer->GetErrorMessage();
-  }
+  vtkNew<vtkLightFieldErrorObserver> observer;
+  observer->Observe(line);
+  const std::string expected = "FitCylinder: the camera centres are collinear or coincide; no "
+                               "ring can be fitted to them.";
+  const bool refused = !line->FitCylinder() && observer->GetNumberOfErrors() == 1 &&
+    observer->GetErrorMessage() == expected && !line->HasCylinder();
+  Check(refused, "collinear rig refused with one line", refused, 1);
+  std::cout << "     message: " << observer->GetErrorMessage() << "\n";
+  std::string problem;
+  const bool quiet = !line->FitCylinder(problem) && observer->GetNumberOfErrors() == 1 &&
+    "FitCylinder: " + problem == expected;
+  Check(quiet, "FitCylinder(problem) says why without reporting", quiet, 1);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

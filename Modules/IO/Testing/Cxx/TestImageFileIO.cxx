@@ -7,6 +7,7 @@
 #include "vtkImageData.h"
 #include "vtkImageFileReader.h"
 #include "vtkImageFileWriter.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
 #include "vtkPointData.h"
@@ -106,13 +107,13 @@ int TestImageFileIO(int, char*[])
     "vtkPNGReader: pixel (2, 0) green");
 
   vtkNew<vtkImageFileReader> reader;
-  vtkNew<lfdtest::ErrorCatcher> catcher;
+  vtkNew<vtkLightFieldErrorObserver> catcher;
   catcher->Observe(reader);
   reader->SetFileName((folder + "/absent.png").c_str());
   reader->Update();
   lfdtest::CheckFailure("read a missing file",
     reader->GetErrorCode() != 0,
-    reader->GetErrorMessage(),
+    catcher->GetErrorMessage(),
     { folder + "/absent.png", "not found" });
 
   vtkNew<vtkImageData> volume;
@@ -120,17 +121,19 @@ int TestImageFileIO(int, char*[])
   volume->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
   vtkNew<vtkImageFileWriter> writer;
   catcher->Observe(writer);
+  catcher->Clear();
   writer->SetInputData(volume);
   writer->SetFileName((folder + "/volume.png").c_str());
   bool failed = writer->Write() != 1;
   lfdtest::CheckFailure(
-    "write a 3D image", failed, writer->GetErrorMessage(), { folder + "/volume.png", "only 2D" });
+    "write a 3D image", failed, catcher->GetErrorMessage(), { folder + "/volume.png", "only 2D" });
   writer->SetInputData(MakeImage(VTK_UNSIGNED_CHAR, 3));
   writer->SetFileName((folder + "/image.unknownformat").c_str());
+  catcher->Clear();
   failed = writer->Write() != 1;
   lfdtest::CheckFailure("write an unknown extension",
     failed,
-    writer->GetErrorMessage(),
+    catcher->GetErrorMessage(),
     { folder + "/image.unknownformat" });
   CheckEqual(lfdtest::CountEntries(folder, "image"), 0, "files left by the failed writes");
   CheckEqual(lfdtest::CountEntries(folder, "volume"), 0, "volume files left");

@@ -1,11 +1,13 @@
 // Every malformed light-field dataset must fail with one line naming the
 // file and the field; failed writes must leave nothing that looks valid.
+#include "lfdFileUtilities.h"
 #include "lfdIOTestUtilities.h"
 
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldReader.h"
 #include "vtkLightFieldWriter.h"
 #include "vtkNew.h"
@@ -16,6 +18,9 @@
 
 #include <filesystem>
 #include <functional>
+#include <string>
+
+#include <unistd.h> // getpid
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
@@ -44,12 +49,12 @@ vtkSmartPointer<vtkLightField> MakeLightField(int fill)
 bool Write(vtkLightField* lightField, const std::string& directory, std::string& message)
 {
   vtkNew<vtkLightFieldWriter> writer;
-  vtkNew<lfdtest::ErrorCatcher> catcher;
+  vtkNew<vtkLightFieldErrorObserver> catcher;
   catcher->Observe(writer);
   writer->SetInputData(lightField);
   writer->SetDirectory(directory.c_str());
   const int ok = writer->Write();
-  message = writer->GetErrorMessage();
+  message = catcher->GetErrorMessage();
   return ok == 1 && writer->GetErrorCode() == 0;
 }
 
@@ -57,11 +62,11 @@ bool Write(vtkLightField* lightField, const std::string& directory, std::string&
 bool Read(const std::string& path, std::string& message, int* views = nullptr)
 {
   vtkNew<vtkLightFieldReader> reader;
-  vtkNew<lfdtest::ErrorCatcher> catcher;
+  vtkNew<vtkLightFieldErrorObserver> catcher;
   catcher->Observe(reader);
   reader->SetFileName(path.c_str());
   reader->Update();
-  message = reader->GetErrorMessage();
+  message = catcher->GetErrorMessage();
   const bool empty = reader->GetOutput()->GetNumberOfPoints() == 0 &&
     reader->GetOutput()->GetPointData()->GetNumberOfArrays() == 0;
   if (views)
@@ -304,6 +309,19 @@ void CheckWriterErrors(const std::string& folder, const std::string& valid)
     lfdtest::Check(!fs::exists(folder + "/folded.lf"), "nothing written for the folded rig");
   }
 }
+/// A message about a staged output names the target (how `lfd` reports a
+/// failure inside a folder it builds under a temporary name).
+void CheckStagedNames(const std::string& folder)
+{
+  const std::string staged = lfd::io::TemporaryDirectoryName(folder + "/frames");
+  const std::string image = lfd::io::TemporaryFileName(folder + "/view.png");
+  const std::string other = folder + "/x.tmp-" + std::to_string(::getpid()) + "7.png";
+  lfdtest::CheckEqual(lfd::io::NameTargets(staged + "/frame_0001.png: No space left on device; " +
+                        image + "; " + other),
+    folder + "/frames/frame_0001.png: No space left on device; " + folder + "/view.png; " + other,
+    "temporary names replaced by their targets");
+  lfd::io::RemoveQuietly(staged);
+}
 }
 
 int TestLightFieldIOErrors(int, char*[])
@@ -318,6 +336,7 @@ int TestLightFieldIOErrors(int, char*[])
   CheckViewErrors(cases);
   CheckPassErrors(cases);
   CheckWriterErrors(cases.Folder, cases.Valid);
+  CheckStagedNames(cases.Folder);
   lfdtest::CheckEqual(
     lfdtest::CountEntries(cases.Folder, "valid.lf."), 0, "temporary siblings left");
   return lfdtest::Result();

@@ -9,6 +9,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldScene.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -112,7 +113,9 @@ int TestLightFieldScene(int, char*[])
   CheckEqual(lfdtest::CountEntries(folder, "scene.tmp-"), 0, "temporary files left");
 
   vtkNew<vtkLightFieldScene> read;
-  Check(read->Read(file.c_str()), std::string("Read: ") + read->GetErrorMessage());
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(read);
+  Check(read->Read(file.c_str()), std::string("Read: ") + errors->GetErrorMessage());
   CheckEqual(std::string(read->GetLightFieldPath()), std::string("fish.lf"), "lightfield");
   CheckEqual(
     std::string(read->GetResolvedLightFieldPath()), folder + "/fish.lf", "resolved light field");
@@ -167,7 +170,8 @@ int TestLightFieldScene(int, char*[])
   lfdtest::WriteText(
     minimal, "{\"format\": \"lfd-scene\", \"version\": 1, \"lightfield\": \"/data/a.lf\"}");
   vtkNew<vtkLightFieldScene> plain;
-  Check(plain->Read(minimal.c_str()), std::string("minimal scene: ") + plain->GetErrorMessage());
+  errors->Observe(plain);
+  Check(plain->Read(minimal.c_str()), std::string("minimal scene: ") + errors->GetErrorMessage());
   Check(!plain->HasCage(), "no cage");
   CheckEqual(plain->GetNumberOfKeyframes(), 0, "no keyframes");
   CheckEqual(std::string(plain->GetResolvedLightFieldPath()),
@@ -187,8 +191,9 @@ int TestLightFieldScene(int, char*[])
     "[0,1,1]],\n \"boxes\": [{\"corners\": [0,1,2,3,4,5,6,7], \"label\": 4}]},\n"
     " \"render\": {\"subdivision\": \"auto\"}}");
   vtkNew<vtkLightFieldScene> undeformed;
+  errors->Observe(undeformed);
   Check(undeformed->Read(restOnly.c_str()),
-    std::string("undeformed scene: ") + undeformed->GetErrorMessage());
+    std::string("undeformed scene: ") + errors->GetErrorMessage());
   CheckEqual(DifferingValues(undeformed->GetCage()->GetPoints()->GetData(),
                undeformed->GetCage()->GetPointData()->GetArray("RestPosition")),
     0,

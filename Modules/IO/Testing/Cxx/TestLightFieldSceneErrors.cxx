@@ -5,6 +5,7 @@
 
 #include "vtkCellData.h"
 #include "vtkDeformationCage.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldScene.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -36,7 +37,7 @@ int TestLightFieldSceneErrors(int, char*[])
 {
   const std::string folder = lfdtest::ScratchFolder("TestLightFieldSceneErrors");
   vtkNew<vtkLightFieldScene> scene;
-  vtkNew<lfdtest::ErrorCatcher> catcher;
+  vtkNew<vtkLightFieldErrorObserver> catcher;
   catcher->Observe(scene);
   const std::string valid = folder + "/valid.json";
   lfdtest::WriteText(valid, Scene(Cage("", Box)));
@@ -48,9 +49,10 @@ int TestLightFieldSceneErrors(int, char*[])
   {
     const std::string file = folder + "/case" + std::to_string(++caseNumber) + ".json";
     lfdtest::WriteText(file, text);
+    catcher->Clear();
     const bool ok = scene->Read(file.c_str());
     parts.insert(parts.begin(), file);
-    lfdtest::CheckFailure(name, !ok, scene->GetErrorMessage(), parts);
+    lfdtest::CheckFailure(name, !ok, catcher->GetErrorMessage(), parts);
   };
 
   expectFailure(
@@ -124,17 +126,19 @@ int TestLightFieldSceneErrors(int, char*[])
   vtkNew<vtkPoints> three;
   three->SetNumberOfPoints(3);
   scene->AddKeyframe(1.0, three);
+  catcher->Clear();
   const bool ok = scene->Write(valid.c_str());
   lfdtest::CheckFailure("write a keyframe of 3 points",
     !ok,
-    scene->GetErrorMessage(),
+    catcher->GetErrorMessage(),
     { valid, "keyframe 0 has 3 points, the cage has 8" });
   lfdtest::Check(lfdtest::ReadText(valid) == before, "the existing file is unchanged");
   scene->RemoveAllKeyframes();
+  catcher->Clear();
   const bool blocked = scene->Write((folder + "/missing/dir/scene.json").c_str());
   lfdtest::CheckFailure("write into a missing folder",
     !blocked,
-    scene->GetErrorMessage(),
+    catcher->GetErrorMessage(),
     { folder + "/missing/dir/scene.json: cannot create the file" });
   lfdtest::CheckEqual(lfdtest::CountEntries(folder, "valid.tmp-"), 0, "temporary files left");
 
@@ -156,10 +160,11 @@ int TestLightFieldSceneErrors(int, char*[])
   plain->GetCellData()->RemoveArray("Label");
   scene->SetCage(plain);
   const std::string unlabelled = folder + "/unlabelled.json";
+  catcher->Clear();
   const bool unlabelledWritten = scene->Write(unlabelled.c_str());
   lfdtest::CheckFailure("write a cage without labels",
     !unlabelledWritten,
-    scene->GetErrorMessage(),
+    catcher->GetErrorMessage(),
     { unlabelled + ": the cage has no cell array \"Label\"" });
   return lfdtest::Result();
 }

@@ -6,6 +6,7 @@
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkMiddleburyImporter.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
@@ -44,11 +45,11 @@ int TestMiddleburyImporterErrors(int, char*[])
     parFile = folder + "/case" + std::to_string(++caseNumber) + "_par.txt";
     lfdtest::WriteText(parFile, text);
     vtkNew<vtkMiddleburyImporter> importer;
-    vtkNew<lfdtest::ErrorCatcher> catcher;
+    vtkNew<vtkLightFieldErrorObserver> catcher;
     catcher->Observe(importer);
     importer->SetFileName(parFile.c_str());
     importer->Update();
-    message = importer->GetErrorMessage();
+    message = catcher->GetErrorMessage();
     const bool ok = importer->GetErrorCode() == 0;
     if (!ok && importer->GetOutput()->GetNumberOfPoints() != 0)
     {
@@ -121,13 +122,13 @@ int TestMiddleburyImporterErrors(int, char*[])
     { "small.png", "4x4", "a.png", "8x6" });
   {
     vtkNew<vtkMiddleburyImporter> importer;
-    vtkNew<lfdtest::ErrorCatcher> catcher;
+    vtkNew<vtkLightFieldErrorObserver> catcher;
     catcher->Observe(importer);
     importer->SetFileName((folder + "/none_par.txt").c_str());
     importer->Update();
     lfdtest::CheckFailure("missing par file",
       importer->GetErrorCode() != 0,
-      importer->GetErrorMessage(),
+      catcher->GetErrorMessage(),
       { folder + "/none_par.txt", "file not found" });
   }
   // The dataset reader's camera validation (vtkCameraRig::FindInvalidView):

@@ -3,12 +3,6 @@
 #ifndef lfdIOTestUtilities_h
 #define lfdIOTestUtilities_h
 
-#include "vtkAlgorithm.h"
-#include "vtkCommand.h"
-#include "vtkExecutive.h"
-#include "vtkNew.h"
-#include "vtkObject.h"
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -49,30 +43,6 @@ inline bool CheckRange(double value, double low, double high, const std::string&
   Failures() += ok ? 0 : 1;
   return ok;
 }
-
-/**
- * Collects the vtkErrorEvent messages of the objects it observes, so that
- * expected errors do not reach the log (ctest fails on "ERROR: ").
- */
-class ErrorCatcher : public vtkCommand
-{
-public:
-  static ErrorCatcher* New() { return new ErrorCatcher; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    this->Messages.emplace_back(data ? static_cast<const char*>(data) : "");
-  }
-  void Observe(vtkObject* object)
-  {
-    object->AddObserver(vtkCommand::ErrorEvent, this);
-    object->AddObserver(vtkCommand::WarningEvent, this);
-    if (vtkAlgorithm* algorithm = vtkAlgorithm::SafeDownCast(object))
-    {
-      algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this);
-    }
-  }
-  std::vector<std::string> Messages;
-};
 
 /**
  * Checks an expected failure: `failed` must be true, `message` one line that

@@ -4,11 +4,10 @@
 #include "lfdSynthesisTestUtilities.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
-#include "vtkExecutive.h"
 #include "vtkLightFieldCapture.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkPolyData.h"
 #include "vtkProceduralObjectSource.h"
-#include "vtkTestErrorObserver.h"
 
 #include <string>
 
@@ -141,12 +140,10 @@ int TestLightFieldCaptureRig(int, char*[])
   vtkNew<vtkLightFieldCapture> refusing;
   vtkNew<vtkPolyData> empty;
   refusing->SetInputData(empty);
-  vtkNew<vtkTest::ErrorObserver> errors;
-  refusing->AddObserver(vtkCommand::ErrorEvent, errors);
-  refusing->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(refusing);
   refusing->Update();
-  const bool refused =
-    errors->GetError() && errors->GetErrorMessage().find("no cells") != std::string::npos;
+  const bool refused = std::string(errors->GetErrorMessage()) == "The input mesh has no cells.";
   lfdtest::Check(refused, "empty mesh refused with \"no cells\"", refused, 1);
   return lfdtest::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
