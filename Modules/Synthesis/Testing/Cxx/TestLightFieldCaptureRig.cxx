@@ -126,13 +126,12 @@ int TestLightFieldCaptureRig(int, char*[])
   // pinholes, which would not be the images its calibration describes.
   const double lens[5] = { -0.2, 0.05, 1e-3, -5e-4, 0.0 };
   given->SetDistortion(2, lens);
-  vtkNew<vtkTest::ErrorObserver> lensErrors;
-  capture->AddObserver(vtkCommand::ErrorEvent, lensErrors);
-  capture->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, lensErrors);
+  vtkNew<vtkLightFieldErrorObserver> lensErrors;
+  lensErrors->Observe(capture);
   capture->Modified();
   capture->Update();
-  const bool lensRefused = lensErrors->GetError() &&
-    lensErrors->GetErrorMessage().find("The rig has lens distortion; vtkLightFieldCapture renders "
+  const bool lensRefused = lensErrors->HasError() &&
+    std::string(lensErrors->GetErrorMessage()).find("The rig has lens distortion; vtkLightFieldCapture renders "
                                        "ideal pinhole views only") != std::string::npos;
   lfdtest::Check(lensRefused, "rig with lens distortion refused", lensRefused, 1);
 
