@@ -549,6 +549,24 @@ bool vtkLightFieldScene::Read(const char* fileName)
 }
 
 //------------------------------------------------------------------------------
+std::string vtkLightFieldScene::CheckSettings()
+{
+  try
+  {
+    ValidateSettings(this->Internal->Camera,
+      this->Width,
+      this->Height,
+      this->Subdivision,
+      this->Internal->Keyframes);
+  }
+  catch (const FieldError& e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightFieldScene::Write(const char* fileName)
 {
   this->Internal->ErrorMessage.clear();
