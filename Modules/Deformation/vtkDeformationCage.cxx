@@ -3,6 +3,7 @@
 #include "lfdTrilinear.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
 #include <sstream>
 #include <vector>
 
@@ -128,7 +130,6 @@ void vtkDeformationCage::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfBoxes: " << this->GetNumberOfBoxes() << "\n";
   os << indent << "Deformed: " << (this->IsDeformed() ? "yes" : "no") << "\n";
-  os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -199,7 +200,6 @@ void vtkDeformationCage::InitializeFromGrid(vtkUnstructuredGrid* grid)
   }
   this->GetOrCreateRestPositions();
   this->GetOrCreateLabels();
-  this->ErrorMessage.clear();
   this->Modified();
 }
 
@@ -374,132 +374,189 @@ bool vtkDeformationCage::IsDeformed()
 }
 
 //------------------------------------------------------------------------------
-bool vtkDeformationCage::Fail(const std::string& message)
+std::string vtkDeformationCage::ValidateArrays()
 {
-  this->ErrorMessage = message;
-  vtkErrorMacro(<< message);
-  return false;
-}
-
-//------------------------------------------------------------------------------
-bool vtkDeformationCage::Validate(vtkLightField* lightField)
-{
-  this->ErrorMessage.clear();
-  const vtkIdType numberOfPoints = this->GetNumberOfPoints();
-  const vtkIdType numberOfBoxes = this->GetNumberOfBoxes();
-
   vtkDataArray* positions = this->GetRestPositions();
   if (!positions || positions->GetNumberOfComponents() != 3 ||
-    positions->GetNumberOfTuples() != numberOfPoints)
+    positions->GetNumberOfTuples() != this->GetNumberOfPoints())
   {
-    return this->Fail("cage: the point array \"RestPosition\" is missing or does not hold 3 "
-                      "components per point");
+    return "cage: the point array \"RestPosition\" is missing or does not hold 3 components per "
+           "point";
   }
   vtkDataArray* labels = this->GetCellData()->GetArray(LabelName);
   if (!labels || labels->GetNumberOfComponents() != 1 ||
-    labels->GetNumberOfTuples() != numberOfBoxes)
+    labels->GetNumberOfTuples() != this->GetNumberOfBoxes())
   {
-    return this->Fail(
-      "cage: the cell array \"Label\" is missing or does not hold one value per box");
+    return "cage: the cell array \"Label\" is missing or does not hold one value per box";
   }
+  return std::string();
+}
 
-  std::vector<lfd::Hexahedron> restBoxes(numberOfBoxes);
-  for (vtkIdType b = 0; b < numberOfBoxes; ++b)
+//------------------------------------------------------------------------------
+std::string vtkDeformationCage::ValidateBox(vtkIdType b)
+{
+  const vtkIdType numberOfPoints = this->GetNumberOfPoints();
+  const int label = this->GetBoxLabel(b);
+  std::ostringstream nameText;
+  nameText << "cage: box " << b << " (label " << label << ")";
+  const std::string name = nameText.str();
+
+  if (this->GetCellType(b) != VTK_HEXAHEDRON)
   {
-    const int label = this->GetBoxLabel(b);
-    std::ostringstream name;
-    name << "cage: box " << b << " (label " << label << ")";
-
-    if (this->GetCellType(b) != VTK_HEXAHEDRON)
+    return name + " is not a hexahedron (VTK cell type " + std::to_string(this->GetCellType(b)) +
+      ", expected " + std::to_string(VTK_HEXAHEDRON) + ")";
+  }
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  this->GetCellPoints(b, count, ids);
+  if (count != 8)
+  {
+    return name + " has " + std::to_string(count) + " corners, expected 8";
+  }
+  for (int i = 0; i < 8; ++i)
+  {
+    if (ids[i] < 0 || ids[i] >= numberOfPoints)
     {
-      return this->Fail(name.str() + " is not a hexahedron (VTK cell type " +
-        std::to_string(this->GetCellType(b)) + ", expected " + std::to_string(VTK_HEXAHEDRON) +
-        ")");
-    }
-    vtkIdType count = 0;
-    const vtkIdType* ids = nullptr;
-    this->GetCellPoints(b, count, ids);
-    if (count != 8)
-    {
-      return this->Fail(name.str() + " has " + std::to_string(count) + " corners, expected 8");
-    }
-    for (int i = 0; i < 8; ++i)
-    {
-      if (ids[i] < 0 || ids[i] >= numberOfPoints)
-      {
-        return this->Fail(name.str() + ": corner " + std::to_string(i) + " is point " +
-          std::to_string(ids[i]) + ", out of range [0, " + std::to_string(numberOfPoints) + ")");
-      }
-    }
-    if (label < 1 || label > 255)
-    {
-      return this->Fail(name.str() + ": label out of range [1, 255]");
-    }
-
-    double corners[24];
-    this->GetRestCorners(b, corners);
-    restBoxes[b] = lfd::HexahedronFromArray(corners);
-    std::string fold = FindFold(restBoxes[b]);
-    if (!fold.empty())
-    {
-      return this->Fail(name.str() + ": the rest box " + fold);
-    }
-    this->GetDeformedCorners(b, corners);
-    fold = FindFold(lfd::HexahedronFromArray(corners));
-    if (!fold.empty())
-    {
-      return this->Fail(name.str() + ": the deformed box " + fold);
+      return name + ": corner " + std::to_string(i) + " is point " + std::to_string(ids[i]) +
+        ", out of range [0, " + std::to_string(numberOfPoints) + ")";
     }
   }
-
-  if (lightField && !this->ValidateLabels(lightField))
+  if (label < 1 || label > 255)
   {
-    return false;
+    return name + ": label out of range [1, 255]";
   }
 
+  double corners[24];
+  this->GetRestCorners(b, corners);
+  std::string fold = FindFold(lfd::HexahedronFromArray(corners));
+  if (!fold.empty())
+  {
+    return name + ": the rest box " + fold;
+  }
+  this->GetDeformedCorners(b, corners);
+  fold = FindFold(lfd::HexahedronFromArray(corners));
+  if (!fold.empty())
+  {
+    return name + ": the deformed box " + fold;
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkDeformationCage::ValidateOverlaps(const std::vector<vtkIdType>& boxes)
+{
   // Rest boxes must not overlap: a rest-space point belongs to one part.
+  // Each listed box is tested against every box not tested with it yet, so
+  // a full validation tests every pair once, in the order (a, b), a < b.
+  const vtkIdType numberOfBoxes = this->GetNumberOfBoxes();
+  std::vector<lfd::Hexahedron> rest(numberOfBoxes);
   std::vector<lfd::AxisBounds> bounds(numberOfBoxes);
-  std::vector<std::vector<glm::dvec3>> samples(numberOfBoxes);
+  std::vector<bool> known(numberOfBoxes, false);
   for (vtkIdType b = 0; b < numberOfBoxes; ++b)
   {
-    bounds[b] = lfd::BoxBounds(restBoxes[b]);
-    samples[b] = InteriorSamples(restBoxes[b]);
-  }
-  for (vtkIdType a = 0; a < numberOfBoxes; ++a)
-  {
-    for (vtkIdType b = a + 1; b < numberOfBoxes; ++b)
+    // Boxes not listed were not checked: one that is not a box is skipped.
+    double corners[24];
+    known[b] = this->GetRestCorners(b, corners);
+    if (known[b])
     {
-      if (!BoundsOverlap(bounds[a], bounds[b]))
+      rest[b] = lfd::HexahedronFromArray(corners);
+      bounds[b] = lfd::BoxBounds(rest[b]);
+    }
+  }
+  std::vector<std::vector<glm::dvec3>> samples(numberOfBoxes);
+  const auto samplesOf = [&](vtkIdType b) -> const std::vector<glm::dvec3>&
+  {
+    if (samples[b].empty())
+    {
+      samples[b] = InteriorSamples(rest[b]);
+    }
+    return samples[b];
+  };
+  std::vector<bool> done(numberOfBoxes, false);
+  for (vtkIdType listed : boxes)
+  {
+    for (vtkIdType other = 0; other < numberOfBoxes; ++other)
+    {
+      if (other == listed || done[other] || !known[other] ||
+        !BoundsOverlap(bounds[listed], bounds[other]))
       {
         continue;
       }
+      const vtkIdType a = std::min(listed, other), b = std::max(listed, other);
       for (int pass = 0; pass < 2; ++pass)
       {
         const vtkIdType inner = pass ? b : a;
         const vtkIdType outer = pass ? a : b;
-        for (const glm::dvec3& p : samples[inner])
+        for (const glm::dvec3& p : samplesOf(inner))
         {
           glm::dvec3 uvw;
           // A negative slack: touching faces do not count, only interiors.
-          if (lfd::Contains(restBoxes[outer], p, uvw, -1e-9))
+          if (lfd::Contains(rest[outer], p, uvw, -1e-9))
           {
             std::ostringstream message;
             message << "cage: box " << b << " (label " << this->GetBoxLabel(b) << ") overlaps box "
                     << a << " (label " << this->GetBoxLabel(a) << ") in rest space: the point "
                     << FormatPoint(p) << " of box " << inner << " lies inside box " << outer;
-            return this->Fail(message.str());
+            return message.str();
           }
         }
       }
     }
+    done[listed] = true;
   }
-  return true;
+  return std::string();
 }
 
 //------------------------------------------------------------------------------
-bool vtkDeformationCage::ValidateLabels(vtkLightField* lightField)
+std::string vtkDeformationCage::ValidateListed(const std::vector<vtkIdType>& boxes,
+  vtkLightField* lightField)
 {
-  this->ErrorMessage.clear();
+  std::string why = this->ValidateArrays();
+  for (auto b = boxes.begin(); b != boxes.end() && why.empty(); ++b)
+  {
+    why = this->ValidateBox(*b);
+  }
+  if (why.empty() && lightField)
+  {
+    why = this->ValidateLabels(lightField);
+  }
+  return why.empty() ? this->ValidateOverlaps(boxes) : why;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkDeformationCage::Validate(vtkLightField* lightField)
+{
+  std::vector<vtkIdType> all(this->GetNumberOfBoxes());
+  std::iota(all.begin(), all.end(), 0);
+  return this->ValidateListed(all, lightField);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkDeformationCage::ValidateBoxes(vtkIdList* boxes)
+{
+  const vtkIdType numberOfBoxes = this->GetNumberOfBoxes();
+  std::vector<vtkIdType> listed;
+  std::vector<bool> seen(numberOfBoxes, false);
+  for (vtkIdType i = 0; boxes && i < boxes->GetNumberOfIds(); ++i)
+  {
+    const vtkIdType b = boxes->GetId(i);
+    if (b < 0 || b >= numberOfBoxes)
+    {
+      return "cage: box " + std::to_string(b) + " does not exist (the cage has " +
+        std::to_string(numberOfBoxes) + " boxes)";
+    }
+    if (!seen[b])
+    {
+      seen[b] = true;
+      listed.push_back(b);
+    }
+  }
+  return this->ValidateListed(listed, nullptr);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkDeformationCage::ValidateLabels(vtkLightField* lightField)
+{
   const vtkIdType numberOfBoxes = this->GetNumberOfBoxes();
   if (lightField->GetPass(vtkLightField::LABEL))
   {
@@ -510,11 +567,11 @@ bool vtkDeformationCage::ValidateLabels(vtkLightField* lightField)
       const int label = this->GetBoxLabel(b);
       if (!lightField->HasLabel(label))
       {
-        return this->Fail("cage: box " + std::to_string(b) + " (label " + std::to_string(label) +
-          "): the light field's Label pass has no sub-light field " + std::to_string(label));
+        return "cage: box " + std::to_string(b) + " (label " + std::to_string(label) +
+          "): the light field's Label pass has no sub-light field " + std::to_string(label);
       }
     }
-    return true;
+    return std::string();
   }
   // Unsplit: one part, so one label (boxes of a lattice or a tessellation
   // share it). Which rays two labels would move needs a split.
@@ -522,13 +579,13 @@ bool vtkDeformationCage::ValidateLabels(vtkLightField* lightField)
   {
     if (this->GetBoxLabel(b) != this->GetBoxLabel(0))
     {
-      return this->Fail("cage: box 0 (label " + std::to_string(this->GetBoxLabel(0)) +
-        ") and box " + std::to_string(b) + " (label " + std::to_string(this->GetBoxLabel(b)) +
+      return "cage: box 0 (label " + std::to_string(this->GetBoxLabel(0)) + ") and box " +
+        std::to_string(b) + " (label " + std::to_string(this->GetBoxLabel(b)) +
         ") move different parts, but the light field has no Label pass (it is one part): split "
-        "it first (lfd split projector|scanline|propagate ...) or give every box the same label");
+        "it first (lfd split projector|scanline|propagate ...) or give every box the same label";
     }
   }
-  return true;
+  return std::string();
 }
 
 //------------------------------------------------------------------------------

@@ -31,8 +31,10 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkDataArray;
+class vtkIdList;
 class vtkInformation;
 class vtkInformationVector;
 class vtkLightField;
@@ -114,9 +116,9 @@ public:
   bool IsDeformed();
 
   /**
-   * Checks that the cage can be rendered and used as a map. Returns false,
-   * sets GetErrorMessage() to one line naming the first bad box (index and
-   * label) and reports it with vtkErrorMacro when:
+   * Checks that the cage can be rendered and used as a map. Returns "" when
+   * it can, else one line naming the first bad box (index and label). The
+   * cage holds no error state and reports nothing: the caller does. Refused:
    * - the "RestPosition" or "Label" array is missing or of the wrong size;
    * - a cell is not a VTK_HEXAHEDRON or names a point that does not exist;
    * - a label is not in 1..255;
@@ -129,10 +131,22 @@ public:
    *   interior points at 1/4, 1/2, 3/4, and the edge and face points);
    * - two rest boxes overlap: a point of one box's interior (a 5 x 5 x 5
    *   lattice whose outer layer lies 1e-3 inside the faces) is inside the
-   *   other's interior (lfd::Contains with a negative slack). Boxes that only share faces, edges or
-   * corners pass; an overlap thinner than 1e-3 of a box may go unnoticed.
+   *   other's interior (lfd::Contains with a negative slack). Boxes that only
+   *   share faces, edges or corners pass; an overlap thinner than 1e-3 of a
+   *   box may go unnoticed.
    */
-  bool Validate(vtkLightField* lightField = nullptr);
+  std::string Validate(vtkLightField* lightField = nullptr);
+
+  /**
+   * The checks of Validate() that one edit can break, for the boxes in
+   * `boxes` only: the arrays, each listed box's cell, corners, label and rest
+   * and deformed Jacobians, and the rest overlap of each listed box with
+   * every other box. An interactive drag validates the boxes it moved at a
+   * cost that does not grow with the other boxes' checks. Returns "" or the
+   * same line Validate() would give for the first bad listed box; a box
+   * index out of range is refused.
+   */
+  std::string ValidateBoxes(vtkIdList* boxes);
 
   /**
    * The label part of Validate(), which the renderer also runs: with a Label
@@ -140,14 +154,9 @@ public:
    * sub-light field); without one, the light field is a single part whose
    * object pixels all belong to the boxes' one label, so boxes of two
    * different labels are refused with a message that says to split the
-   * light field first. Same error channel as Validate().
+   * light field first. Returns "" or the one-line reason, as Validate().
    */
-  bool ValidateLabels(vtkLightField* lightField);
-
-  /**
-   * The reason of the last failed Validate(), or "".
-   */
-  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+  std::string ValidateLabels(vtkLightField* lightField);
 
   /**
    * The "RestPosition" point array, or nullptr.
@@ -170,12 +179,13 @@ private:
   vtkDeformationCage(const vtkDeformationCage&) = delete;
   void operator=(const vtkDeformationCage&) = delete;
 
-  bool Fail(const std::string& message);
+  std::string ValidateArrays();
+  std::string ValidateBox(vtkIdType box);
+  std::string ValidateOverlaps(const std::vector<vtkIdType>& boxes);
+  std::string ValidateListed(const std::vector<vtkIdType>& boxes, vtkLightField* lightField);
   bool GetCorners(vtkIdType box, bool rest, double corners[24]);
   vtkDataArray* GetOrCreateRestPositions();
   vtkDataArray* GetOrCreateLabels();
-
-  std::string ErrorMessage;
 };
 
 #endif

@@ -8,7 +8,6 @@
 #include "lfdRayWarp.h"
 #include "lfdTrilinear.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkCellData.h"
@@ -600,15 +599,10 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     }
     if (this->UseLabels && !boxes.empty() && !input->GetPass(vtkLightField::LABEL))
     {
-      // The cage's own error event would repeat the message: it is said
-      // once, by the renderer.
-      vtkNew<vtkCallbackCommand> quiet;
-      const unsigned long tag = cage->AddObserver(vtkCommand::ErrorEvent, quiet);
-      const bool onePart = cage->ValidateLabels(input);
-      cage->RemoveObserver(tag);
-      if (!onePart)
+      const std::string why = cage->ValidateLabels(input);
+      if (!why.empty())
       {
-        vtkErrorMacro(<< cage->GetErrorMessage());
+        vtkErrorMacro(<< why);
         return 0;
       }
       lightField = this->OnePart(input, boxes.front().Label);

@@ -291,10 +291,11 @@ def check_demo_scene(folder, scene_file, light_field, frames_dir, boxes):
     reader.Update()
     cage = lfd_module.vtkDeformationCage()
     cage.InitializeFromGrid(scene.GetCage())
+    why = cage.Validate(reader.GetOutput())
     t.check(read and cage.GetNumberOfBoxes() == boxes and scene.GetNumberOfKeyframes() == 9 and
-            cage.Validate(reader.GetOutput()),
+            why == "",
             f"demo {scene_file}: {boxes} box(es), 9 keyframes, validates against {light_field}",
-            scene.GetErrorMessage() or cage.GetErrorMessage() or cage.GetNumberOfBoxes())
+            scene.GetErrorMessage() or why or cage.GetNumberOfBoxes())
     files = sorted(os.listdir(os.path.join(folder, frames_dir)))
     t.check(files == sorted([f"frame_000{i}.png" for i in range(3)] + MOVIE),
             f"demo {scene_file}: {frames_dir} holds exactly 3 frames", files)

@@ -13,12 +13,15 @@
 
 #include <cstdlib>
 
-int TestDeformationCage(int, char*[])
+namespace
 {
-  using lfdtest::Check;
-  bool ok = true;
+using lfdtest::Check;
 
-  // Two unit boxes side by side along x sharing the face x = 1: 12 points.
+/// Two unit boxes side by side along x sharing the face x = 1 (12 points):
+/// the accessors, then a move of a shared corner and back to rest.
+bool TestSharedCorners()
+{
+  bool ok = true;
   vtkNew<vtkDeformationCage> cage;
   vtkIdType a[8];
   const double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 1 };
@@ -56,7 +59,7 @@ int TestDeformationCage(int, char*[])
   ok &= Check(!cage->GetRestCorners(2, rest) && !cage->GetDeformedCorners(-1, deformed),
     "no corners for a missing box");
   ok &= Check(!cage->IsDeformed(), "a new cage is at rest");
-  ok &= Check(cage->Validate(), cage->GetErrorMessage());
+  ok &= lfdtest::CheckValid(cage, "two boxes at rest validate");
 
   // Move the shared corner a[6] = (1,1,1): both boxes see it.
   const double moved[3] = { 1.25, 1.5, 1.75 };
@@ -82,21 +85,27 @@ int TestDeformationCage(int, char*[])
     rest[20]);
   ok &= Check(inFirst && inSecond, "the shared corner moves in both boxes");
   ok &= Check(rest[18] == 1 && rest[19] == 1 && rest[20] == 1, "the rest corner stays");
-  ok &= Check(cage->Validate(), cage->GetErrorMessage());
+  ok &= lfdtest::CheckValid(cage, "the moved shared corner validates");
   cage->SetPointsToRest();
   ok &= Check(!cage->IsDeformed(), "SetPointsToRest undoes the deformation");
   double p[3];
   cage->GetDeformedPoint(a[6], p);
   ok &= Check(p[0] == 1 && p[1] == 1 && p[2] == 1, "point back at rest");
+  return ok;
+}
 
+/// InitializeFromGrid() on the grids a scene holds: without RestPosition
+/// (undeformed), with a byte Label and a float RestPosition, copied, emptied.
+bool TestFromGrid()
+{
+  bool ok = true;
   // A scene grid without RestPosition is undeformed; its Label may be any type.
   vtkNew<vtkUnstructuredGrid> grid;
   vtkNew<vtkPoints> points;
+  const vtkIdType a[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
   for (vtkIdType i = 0; i < 8; ++i)
   {
-    double x[3];
-    cage->GetDeformedPoint(i, x);
-    points->InsertNextPoint(x);
+    points->InsertNextPoint(lfd::HexCorner[i][0], lfd::HexCorner[i][1], lfd::HexCorner[i][2]);
   }
   grid->SetPoints(points);
   grid->AllocateEstimate(1, 8);
@@ -121,7 +130,7 @@ int TestDeformationCage(int, char*[])
   ok &= Check(!fromGrid->IsDeformed() && fromGrid->GetRestPositions() &&
       fromGrid->GetRestPositions()->GetNumberOfTuples() == 8,
     "missing RestPosition: rest = points");
-  ok &= Check(fromGrid->Validate(), fromGrid->GetErrorMessage());
+  ok &= lfdtest::CheckValid(fromGrid, "a grid without RestPosition validates");
 
   // With a float RestPosition different from the points: deformed, stored as doubles.
   vtkNew<vtkFloatArray> restPositions;
@@ -136,6 +145,7 @@ int TestDeformationCage(int, char*[])
   }
   grid->GetPointData()->AddArray(restPositions);
   fromGrid->InitializeFromGrid(grid);
+  double rest[24], deformed[24];
   fromGrid->GetRestCorners(0, rest);
   fromGrid->GetDeformedCorners(0, deformed);
   std::printf("from grid with RestPosition: rest z %g %g, deformed z %g %g\n",
@@ -153,17 +163,25 @@ int TestDeformationCage(int, char*[])
 
   // The grid given is copied, not shared.
   points->SetPoint(0, 9, 9, 9);
+  double p[3];
   fromGrid->GetDeformedPoint(0, p);
   ok &= Check(p[0] == 0, "InitializeFromGrid copies");
 
   fromGrid->InitializeFromGrid(nullptr);
   ok &= Check(fromGrid->GetNumberOfBoxes() == 0 && fromGrid->GetNumberOfPoints() == 0,
     "a null grid empties the cage");
-  const double o[3] = { 0, 0, 0 };
+  const double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 1 };
   vtkIdType ids[8];
-  lfdtest::AddBoxPoints(fromGrid, o, hi, ids);
-  ok &=
-    Check(fromGrid->AddBox(ids, 1) == 0 && fromGrid->Validate(), "an emptied cage takes new boxes");
+  lfdtest::AddBoxPoints(fromGrid, lo, hi, ids);
+  ok &= Check(fromGrid->AddBox(ids, 1) == 0, "an emptied cage takes new boxes");
+  ok &= lfdtest::CheckValid(fromGrid, "the new box validates");
+  return ok;
+}
+} // namespace
 
+int TestDeformationCage(int, char*[])
+{
+  bool ok = TestSharedCorners();
+  ok &= TestFromGrid();
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

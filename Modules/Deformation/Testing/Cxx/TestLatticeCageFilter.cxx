@@ -131,7 +131,7 @@ bool TestIdentity()
     0.0,
     0.0);
   ok &= Near("k = 3: label of the last sub-box", out->GetBoxLabel(53), 2, 0);
-  ok &= Check(out->Validate(), "k = 3 at rest validates");
+  ok &= lfdtest::CheckValid(out, "k = 3 at rest validates");
   return ok;
 }
 
@@ -231,7 +231,7 @@ bool TestBend()
     lattice->SetSubdivision(k);
     lattice->Update();
     const std::string what = "bend, k = " + std::to_string(k) + " validates";
-    ok &= Check(lattice->GetOutput()->Validate(), what.c_str());
+    ok &= lfdtest::CheckValid(lattice->GetOutput(), what.c_str());
     errors.push_back(CentreError(lattice));
     std::printf("bend, k = %d: %lld boxes, largest error at box centres %.3g\n",
       k,

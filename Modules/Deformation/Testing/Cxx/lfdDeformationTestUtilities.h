@@ -102,6 +102,17 @@ inline bool Check(bool condition, const char* what)
   return condition;
 }
 
+/// Checks that `cage` validates (against `lightField` when given); prints
+/// the refusal otherwise.
+inline bool CheckValid(vtkDeformationCage* cage,
+  const char* what,
+  vtkLightField* lightField = nullptr)
+{
+  const std::string why = cage->Validate(lightField);
+  std::printf("%s: %s\n", what, why.empty() ? "valid" : why.c_str());
+  return Check(why.empty(), what);
+}
+
 } // namespace lfdtest
 
 #endif
