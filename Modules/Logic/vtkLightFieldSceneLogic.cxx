@@ -3,15 +3,19 @@
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
+#include "vtkGroundTruthEvaluator.h"
 #include "vtkIdList.h"
 #include "vtkKeyframeInterpolator.h"
+#include "vtkLabelCellsByBoxes.h"
 #include "vtkLatticeCageFilter.h"
 #include "vtkLightField.h"
 #include "vtkLightFieldReader.h"
+#include "vtkLightFieldRenderer.h"
 #include "vtkLightFieldScene.h"
 #include "vtkObjectFactory.h"
 #include "vtkPartCageSource.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
@@ -649,7 +653,27 @@ bool vtkLightFieldSceneLogic::Validate()
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightFieldSceneLogic::HasCage()
+{
+  return this->Internal->Scene->HasCage();
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightFieldSceneLogic::GetCageAtTime(double time,
+  vtkLightField* lightField,
+  vtkDeformationCage* cage)
+{
+  return this->FillCage(&time, lightField, cage);
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldSceneLogic::GetCurrentCage(vtkLightField* lightField, vtkDeformationCage* cage)
+{
+  return this->FillCage(nullptr, lightField, cage);
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldSceneLogic::FillCage(const double* time,
   vtkLightField* lightField,
   vtkDeformationCage* cage)
 {
@@ -659,7 +683,7 @@ bool vtkLightFieldSceneLogic::GetCageAtTime(double time,
     return false;
   }
   cage->InitializeFromGrid(this->Internal->Cage);
-  if (scene->GetNumberOfKeyframes() > 0)
+  if (time && scene->GetNumberOfKeyframes() > 0)
   {
     vtkNew<vtkKeyframeInterpolator> keyframes;
     for (int k = 0; k < scene->GetNumberOfKeyframes(); ++k)
@@ -673,11 +697,103 @@ bool vtkLightFieldSceneLogic::GetCageAtTime(double time,
     // Single precision, as the animation frames of `lfd animate` always
     // were: their measured figures stay as they are.
     vtkNew<vtkPoints> points;
-    keyframes->InterpolatePoints(time, points);
+    keyframes->InterpolatePoints(*time, points);
     cage->SetPoints(points);
   }
   const std::string why = cage->Validate(lightField);
   return why.empty() || this->Refuse(this->Where() + why);
+}
+
+//------------------------------------------------------------------------------
+double vtkLightFieldSceneLogic::GetAnimationTime(int frame, int frames)
+{
+  vtkLightFieldScene* scene = this->Internal->Scene;
+  const int keyframes = scene->GetNumberOfKeyframes();
+  if (keyframes == 0)
+  {
+    return 0.0;
+  }
+  const double t0 = scene->GetKeyframeTime(0);
+  const double t1 = scene->GetKeyframeTime(keyframes - 1);
+  return t0 + (t1 - t0) * frame / std::max(frames - 1, 1);
+}
+
+namespace
+{
+/// The view settings a renderer and a ground-truth evaluator share.
+template<typename Target>
+void ApplySceneView(Target* target, vtkLightFieldScene* scene)
+{
+  target->SetCamera(scene->GetCamera());
+  target->SetWidth(scene->GetWidth());
+  target->SetHeight(scene->GetHeight());
+  target->SetFocalDistance(scene->GetFocalDistance());
+  target->SetSubdivision(scene->GetSubdivision()); // 0 = "auto" in all three
+  target->SetWidenedSearch(scene->GetWidenedSearch());
+  target->SetObjectThreshold(scene->GetObjectThreshold());
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldSceneLogic::ApplyView(vtkLightFieldRenderer* renderer)
+{
+  ApplySceneView(renderer, this->Internal->Scene.Get());
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldSceneLogic::ApplyView(vtkGroundTruthEvaluator* evaluator)
+{
+  ApplySceneView(evaluator, this->Internal->Scene.Get());
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldSceneLogic::ConfigureRenderer(vtkLightFieldRenderer* renderer,
+  vtkLightField* lightField,
+  vtkDeformationCage* cage)
+{
+  renderer->SetInputData(lightField);
+  renderer->SetCageData(cage);
+  this->ApplyView(renderer);
+  renderer->SetBackground(this->Internal->Scene->GetBackground());
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldSceneLogic::LabelMesh(vtkPolyData* mesh, vtkPolyData* labelled)
+{
+  vtkNew<vtkLabelCellsByBoxes> labeler;
+  labeler->SetInputData(mesh);
+  labeler->SetBoxesData(this->Internal->Cage);
+  labeler->Update();
+  if (labeler->GetErrorCode() != 0 || !labelled)
+  {
+    return this->Refuse(this->Where() + "the mesh could not be labelled by the scene's boxes");
+  }
+  labelled->ShallowCopy(labeler->GetOutput());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldSceneLogic::OrbitCamera(vtkCameraRig* rig,
+  double phi,
+  double scale,
+  double height,
+  double viewAngle,
+  vtkCamera* camera)
+{
+  const double* axis = rig->GetAxis();
+  const double* center = rig->GetCenter();
+  double x[3], y[3];
+  rig->GetAzimuthFrame(x, y);
+  const double r = scale * rig->GetRadius();
+  double position[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    position[c] = center[c] + height * axis[c] + r * (std::cos(phi) * x[c] + std::sin(phi) * y[c]);
+  }
+  camera->SetPosition(position);
+  camera->SetFocalPoint(center[0], center[1], center[2]);
+  camera->SetViewUp(axis[0], axis[1], axis[2]);
+  camera->SetViewAngle(viewAngle);
 }
 
 //------------------------------------------------------------------------------

@@ -62,13 +62,17 @@
 #include <string> // For std::string
 
 class vtkCamera;
+class vtkCameraRig;
 class vtkDataSet;
 class vtkDeformationCage;
+class vtkGroundTruthEvaluator;
 class vtkIdList;
 class vtkLatticeCageFilter;
 class vtkLightField;
+class vtkLightFieldRenderer;
 class vtkLightFieldScene;
 class vtkPoints;
+class vtkPolyData;
 
 class LFDLOGIC_EXPORT vtkLightFieldSceneLogic : public vtkObject
 {
@@ -144,6 +148,59 @@ public:
    * cage is refused; false without one when the scene has no cage.
    */
   bool GetCageAtTime(double time, vtkLightField* lightField, vtkDeformationCage* cage);
+
+  /**
+   * Fills `cage` with the scene's cage as it stands (the current points),
+   * validated against `lightField` (may be null), as GetCageAtTime().
+   */
+  bool GetCurrentCage(vtkLightField* lightField, vtkDeformationCage* cage);
+
+  /**
+   * True when the scene has a cage (at least one point).
+   */
+  bool HasCage();
+
+  /**
+   * The time of frame `frame` of an animation of `frames` frames spread
+   * evenly from the first to the last keyframe time (0 without keyframes).
+   */
+  double GetAnimationTime(int frame, int frames);
+
+  ///@{
+  /**
+   * The scene's view on a renderer or a ground-truth evaluator: camera,
+   * image size, focal distance, subdivision (0 = "auto" in all three),
+   * widened search and object threshold. ConfigureRenderer() also gives the
+   * renderer `lightField`, `cage` (null: no deformation) and the background.
+   */
+  void ApplyView(vtkLightFieldRenderer* renderer);
+  void ApplyView(vtkGroundTruthEvaluator* evaluator);
+  void ConfigureRenderer(vtkLightFieldRenderer* renderer,
+    vtkLightField* lightField,
+    vtkDeformationCage* cage);
+  ///@}
+
+  /**
+   * Labels the cells of `mesh` by the scene's rest boxes (a triangle takes
+   * the box holding its centroid, vtkLabelCellsByBoxes) into `labelled`: how
+   * a mesh gets the parts the scene's light field was split into. False
+   * with an ErrorEvent when the labelling fails.
+   */
+  bool LabelMesh(vtkPolyData* mesh, vtkPolyData* labelled);
+
+  /**
+   * Places `camera` on a circle `scale` times the rig radius around the rig
+   * axis, at azimuth `phi` (radians from view 0's frame, see
+   * vtkCameraRig::GetAzimuthFrame) and `height` along the axis, looking at
+   * the rig centre with view up along the axis and `viewAngle` degrees:
+   * novel views around a ring. The rig must have a fitted cylinder.
+   */
+  static void OrbitCamera(vtkCameraRig* rig,
+    double phi,
+    double scale,
+    double height,
+    double viewAngle,
+    vtkCamera* camera);
 
   ///@{
   /**
@@ -286,6 +343,7 @@ private:
   bool Refuse(const std::string& reason);
   std::string Where() const;
   bool CheckCage(vtkIdList* boxes);
+  bool FillCage(const double* time, vtkLightField* lightField, vtkDeformationCage* cage);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
