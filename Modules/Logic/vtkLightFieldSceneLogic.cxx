@@ -43,6 +43,14 @@ struct CageState
 
   vtkIdType GetNumberOfPoints() const { return static_cast<vtkIdType>(this->Rest.size() / 3); }
 
+  /// "" when box `box` exists, else why the edit `edit` cannot be made.
+  std::string CheckBox(const char* edit, vtkIdType box) const
+  {
+    return box >= 0 && box < static_cast<vtkIdType>(this->Boxes.size())
+      ? std::string()
+      : std::string(edit) + ": box " + std::to_string(box) + " does not exist";
+  }
+
   /// Appends a point (rest = deformed = `rest`), also to every keyframe.
   vtkIdType AddPoint(const double rest[3])
   {
@@ -488,6 +496,24 @@ struct vtkLightFieldSceneLogic::Internals
     command->Name = name;
     command->Events = { SettingsModifiedEvent };
     return this->Push(logic, std::move(command));
+  }
+
+  /// EditCage() of an edit of box `box`, refused (naming `method`) when
+  /// the box does not exist.
+  template<typename Edit>
+  bool EditBox(vtkLightFieldSceneLogic* logic,
+    const char* method,
+    const std::string& name,
+    vtkIdType box,
+    Edit&& edit)
+  {
+    return this->EditCage(logic,
+      name,
+      [method, box, &edit](CageState& state, CageCheck& check)
+      {
+        const std::string missing = state.CheckBox(method, box);
+        return missing.empty() ? edit(state, check) : missing;
+      });
   }
 
   /// Replaces the cage by `built` (dropping the keyframes) as command `name`.
@@ -990,14 +1016,12 @@ vtkIdType vtkLightFieldSceneLogic::AddBox(const double bounds[6], int label)
 //------------------------------------------------------------------------------
 bool vtkLightFieldSceneLogic::RemoveBox(vtkIdType box)
 {
-  return this->Internal->EditCage(this,
+  return this->Internal->EditBox(this,
+    "RemoveBox",
     "Remove box",
+    box,
     [box](CageState& state, CageCheck&)
     {
-      if (box < 0 || box >= static_cast<vtkIdType>(state.Boxes.size()))
-      {
-        return "RemoveBox: box " + std::to_string(box) + " does not exist";
-      }
       RemoveBoxState(state, box);
       return std::string();
     });
@@ -1006,14 +1030,12 @@ bool vtkLightFieldSceneLogic::RemoveBox(vtkIdType box)
 //------------------------------------------------------------------------------
 bool vtkLightFieldSceneLogic::SplitBox(vtkIdType box, int axis)
 {
-  return this->Internal->EditCage(this,
+  return this->Internal->EditBox(this,
+    "SplitBox",
     "Split box",
+    box,
     [box, axis](CageState& state, CageCheck& check)
     {
-      if (box < 0 || box >= static_cast<vtkIdType>(state.Boxes.size()))
-      {
-        return "SplitBox: box " + std::to_string(box) + " does not exist";
-      }
       if (axis < 0 || axis > 2)
       {
         return "SplitBox: the axis is 0 (u), 1 (v) or 2 (w), found " + std::to_string(axis);
@@ -1027,14 +1049,12 @@ bool vtkLightFieldSceneLogic::SplitBox(vtkIdType box, int axis)
 //------------------------------------------------------------------------------
 bool vtkLightFieldSceneLogic::SetBoxLabel(vtkIdType box, int label)
 {
-  return this->Internal->EditCage(this,
+  return this->Internal->EditBox(this,
+    "SetBoxLabel",
     "Set box label",
+    box,
     [box, label](CageState& state, CageCheck& check)
     {
-      if (box < 0 || box >= static_cast<vtkIdType>(state.Boxes.size()))
-      {
-        return "SetBoxLabel: box " + std::to_string(box) + " does not exist";
-      }
       state.Labels[box] = label;
       check.Boxes = { box };
       return std::string();
