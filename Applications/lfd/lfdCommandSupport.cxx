@@ -1,0 +1,260 @@
+// What every `lfd` subcommand shares (see lfdCommandSupport.h).
+#include "lfdCommandSupport.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkDeformationCage.h"
+#include "vtkImageData.h"
+#include "vtkImageFileReader.h"
+#include "vtkImageFileWriter.h"
+#include "vtkKeyframeInterpolator.h"
+#include "vtkLabelCellsByBoxes.h"
+#include "vtkLightField.h"
+#include "vtkLightFieldReader.h"
+#include "vtkLightFieldRenderer.h"
+#include "vtkLightFieldScene.h"
+#include "vtkLightFieldWriter.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkTimerLog.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <filesystem>
+#include <string>
+
+namespace lfd::cli
+{
+void CheckNoError()
+{
+  if (lfd::ErrorReported())
+  {
+    Fail("");
+  }
+}
+
+double Seconds(double start)
+{
+  return vtkTimerLog::GetUniversalTime() - start;
+}
+
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
+{
+  if (!vtksys::SystemTools::FileExists(path, true))
+  {
+    Fail("mesh '" + path + "' does not exist");
+  }
+  const std::string ext =
+    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".ply")
+  {
+    auto ply = vtkSmartPointer<vtkPLYReader>::New();
+    ply->SetFileName(path.c_str());
+    reader = ply;
+  }
+  else if (ext == ".obj")
+  {
+    auto obj = vtkSmartPointer<vtkOBJReader>::New();
+    obj->SetFileName(path.c_str());
+    reader = obj;
+  }
+  else if (ext == ".stl")
+  {
+    auto stl = vtkSmartPointer<vtkSTLReader>::New();
+    stl->SetFileName(path.c_str());
+    reader = stl;
+  }
+  else if (ext == ".vtp")
+  {
+    auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    vtp->SetFileName(path.c_str());
+    reader = vtp;
+  }
+  else if (ext == ".vtk")
+  {
+    auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
+    legacy->SetFileName(path.c_str());
+    reader = legacy;
+  }
+  else
+  {
+    Fail("mesh '" + path + "': unknown format '" + ext +
+      "' (expected .ply, .obj, .stl, .vtp or .vtk)");
+  }
+  Run(reader.Get(), "reading mesh '" + path + "'");
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(reader->GetOutputDataObject(0));
+  if (mesh->GetNumberOfCells() == 0)
+  {
+    Fail("mesh '" + path + "' has no cells");
+  }
+  return mesh;
+}
+
+void ExpectSceneFile(const std::string& path)
+{
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (fs::is_directory(status))
+  {
+    if (fs::is_regular_file(fs::path(path) / "lightfield.json", error))
+    {
+      Fail(path +
+        ": is a light-field dataset, not a scene file; write a scene.json whose "
+        "\"lightfield\" names it (see Data/README.md), or try 'lfd demo'");
+    }
+    Fail(path + ": is a folder, not a scene file (scene.json)");
+  }
+  if (fs::exists(status) && !fs::is_regular_file(status))
+  {
+    Fail(path + ": is not a regular file; a scene file (scene.json) was expected");
+  }
+}
+
+vtkSmartPointer<vtkLightFieldScene> ReadScene(const std::string& path)
+{
+  ExpectSceneFile(path);
+  auto scene = vtkSmartPointer<vtkLightFieldScene>::New();
+  if (!scene->Read(path.c_str()))
+  {
+    Fail(scene->GetErrorMessage());
+  }
+  return scene;
+}
+
+vtkSmartPointer<vtkImageData> ReadImage(const std::string& path)
+{
+  vtkNew<vtkImageFileReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (reader->GetErrorCode() != 0)
+  {
+    Fail(reader->GetErrorMessage());
+  }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->ShallowCopy(reader->GetOutput());
+  return image;
+}
+
+vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
+{
+  vtkNew<vtkLightFieldReader> reader;
+  reader->SetFileName(path.c_str());
+  lfd::ShowProgress(reader, "reading");
+  reader->Update();
+  if (reader->GetErrorCode() != 0)
+  {
+    Fail(reader->GetErrorMessage());
+  }
+  auto lightField = vtkSmartPointer<vtkLightField>::New();
+  lightField->ShallowCopy(reader->GetOutput());
+  return lightField;
+}
+
+vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldScene* scene)
+{
+  if (!scene->ConfigureReader(nullptr))
+  {
+    Fail(scene->GetErrorMessage());
+  }
+  return ReadLightField(scene->GetResolvedLightFieldPath());
+}
+
+vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
+  vtkLightField* lightField,
+  const double* time)
+{
+  if (!scene->HasCage())
+  {
+    return nullptr;
+  }
+  auto cage = vtkSmartPointer<vtkDeformationCage>::New();
+  cage->InitializeFromGrid(scene->GetCage());
+  if (time && scene->GetNumberOfKeyframes() > 0)
+  {
+    vtkNew<vtkKeyframeInterpolator> keyframes;
+    ErrorCatcher refusal(keyframes);
+    for (int k = 0; k < scene->GetNumberOfKeyframes(); ++k)
+    {
+      keyframes->AddKeyframe(scene->GetKeyframeTime(k), scene->GetKeyframePoints(k));
+      if (!refusal.GetMessage().empty())
+      {
+        Fail(std::string(scene->GetFileName()) + ": keyframes: " + refusal.GetMessage());
+      }
+    }
+    vtkNew<vtkPoints> points;
+    keyframes->InterpolatePoints(*time, points);
+    cage->SetPoints(points);
+  }
+  // The refusal is said once, with the scene's file name: the observer keeps
+  // the cage's own error event from the console.
+  vtkNew<vtkCallbackCommand> quiet;
+  cage->AddObserver(vtkCommand::ErrorEvent, quiet);
+  if (!cage->Validate(lightField))
+  {
+    Fail(std::string(scene->GetFileName()) + ": " + cage->GetErrorMessage());
+  }
+  return cage;
+}
+
+vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldScene* scene)
+{
+  vtkNew<vtkLabelCellsByBoxes> labeler;
+  labeler->SetInputData(mesh);
+  labeler->SetBoxesData(scene->GetCage());
+  Run(labeler.Get(), "labelling the mesh by the scene's boxes");
+  return labeler->GetOutput();
+}
+
+void ConfigureRenderer(vtkLightFieldRenderer* renderer,
+  vtkLightFieldScene* scene,
+  vtkLightField* lightField,
+  vtkDeformationCage* cage)
+{
+  renderer->SetInputData(lightField);
+  renderer->SetCageData(cage);
+  ApplySceneView(renderer, scene);
+  renderer->SetBackground(scene->GetBackground());
+}
+
+void WriteLightField(vtkLightField* lightField, const std::string& directory)
+{
+  CheckNoError();
+  vtkNew<vtkLightFieldWriter> writer;
+  writer->SetInputData(lightField);
+  writer->SetDirectory(directory.c_str());
+  lfd::ShowProgress(writer, "writing");
+  if (!writer->Write())
+  {
+    Fail(writer->GetErrorMessage());
+  }
+}
+
+void WriteScene(vtkLightFieldScene* scene, const std::string& path)
+{
+  CheckNoError();
+  if (!scene->Write(path.c_str()))
+  {
+    Fail(scene->GetErrorMessage());
+  }
+}
+
+void WriteImage(vtkImageData* image, const std::string& path)
+{
+  CheckNoError();
+  vtkNew<vtkImageFileWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  if (!writer->Write())
+  {
+    Fail(writer->GetErrorMessage());
+  }
+}
+}

@@ -1,0 +1,404 @@
+/**
+ * @file   lfdCommandSupport.h
+ * @brief  What every `lfd` subcommand shares: refusals (Fail), numeric
+ *         options with ranges, staged output folders, and reading/writing
+ *         light fields, scenes and images with one error line naming the file.
+ */
+#ifndef lfdCommandSupport_h
+#define lfdCommandSupport_h
+
+#include "lfdConsole.h"
+#include "lfdFileUtilities.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkLightFieldScene.h"
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <fnmatch.h>
+
+class vtkCamera;
+class vtkCameraRig;
+class vtkDeformationCage;
+class vtkImageData;
+class vtkLightField;
+class vtkLightFieldRenderer;
+class vtkPolyData;
+
+namespace lfd::cli
+{
+/// Frames of `lfd animate` and `lfd demo`: an hour at 24 frames/s is plenty.
+constexpr int MaximumFrames = 100000;
+
+/// A (leaf) subcommand and what runs it once its options are parsed.
+struct Command
+{
+  CLI::App* App;
+  std::function<void()> Run;
+  /// It opens an OpenGL window (captures or renders meshes): RequireDisplay() first.
+  bool NeedsDisplay;
+};
+
+/// Thrown by a subcommand to stop with exit status 1; an empty message
+/// means the error was already reported by VTK.
+struct Failure
+{
+  std::string Message;
+};
+
+[[noreturn]] inline void Fail(const std::string& message)
+{
+  throw Failure{ message };
+}
+
+/// Updates an algorithm and fails with its own error text when it reports one.
+template<typename Algorithm>
+void Run(Algorithm* algorithm, const std::string& what)
+{
+  const bool before = lfd::ErrorReported();
+  algorithm->Update();
+  if (lfd::ErrorReported() != before)
+  {
+    Fail("");
+  }
+  if (algorithm->GetErrorCode() != 0)
+  {
+    Fail(what + " failed");
+  }
+}
+
+/// Stops before an output is written when any error was reported so far.
+void CheckNoError();
+
+/**
+ * A multi-file output folder written under a temporary sibling name
+ * (lfd::io::TemporaryDirectoryName) and renamed onto its target by Commit()
+ * only when complete: a command that fails leaves neither a partial folder
+ * nor the temporary, and an existing target is replaced only on success.
+ * Since the whole target is replaced, an existing one must hold nothing but
+ * files the command writes (`patterns`, fnmatch globs): a folder of the
+ * user's is never swept away.
+ */
+class StagedFolder
+{
+public:
+  StagedFolder(const std::string& target,
+    const std::string& command,
+    const std::vector<std::string>& patterns)
+    : Target(lfd::io::TrimSeparators(target))
+    , Temporary(lfd::io::TemporaryDirectoryName(target))
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::file_status status = fs::status(this->Target, error);
+    if (fs::exists(status) && !fs::is_directory(status))
+    {
+      Fail("--out " + this->Target + ": exists and is not a folder");
+    }
+    if (fs::is_directory(status))
+    {
+      for (const fs::directory_entry& entry : fs::directory_iterator(this->Target, error))
+      {
+        const std::string name = entry.path().filename().string();
+        if (std::none_of(patterns.begin(),
+              patterns.end(),
+              [&name](const std::string& pattern)
+              { return fnmatch(pattern.c_str(), name.c_str(), 0) == 0; }))
+        {
+          Fail("--out " + this->Target + ": holds '" + name + "', which " + command +
+            " does not write; it replaces the whole folder, so choose a new or empty one");
+        }
+      }
+    }
+    lfd::io::RemoveQuietly(this->Temporary);
+    if (!fs::create_directories(this->Temporary, error))
+    {
+      Fail("--out " + this->Target + ": cannot create " + this->Temporary + ": " + error.message());
+    }
+    lfd::AliasPath(this->Temporary, this->Target);
+  }
+  ~StagedFolder()
+  {
+    if (!this->Committed)
+    {
+      lfd::io::RemoveQuietly(this->Temporary);
+    }
+  }
+  StagedFolder(const StagedFolder&) = delete;
+  void operator=(const StagedFolder&) = delete;
+
+  /// Where the command writes.
+  const std::string& GetPath() const { return this->Temporary; }
+
+  /// Replaces the target with the complete folder.
+  void Commit()
+  {
+    CheckNoError();
+    std::string error;
+    if (!lfd::io::CommitDirectory(this->Temporary, this->Target, error))
+    {
+      Fail(error);
+    }
+    this->Committed = true;
+  }
+
+private:
+  std::string Target;
+  std::string Temporary;
+  bool Committed = false;
+};
+
+/**
+ * The numeric options of every subcommand. CLI11 stores their text; after
+ * parsing, Convert() turns each given one into its variable and refuses a
+ * value that is not a number or outside its range the same way as any other
+ * refused input (one line naming the option, exit status 1). The ranges are
+ * the ones the receiving classes accept (their vtkSetClampMacro limits)
+ * where there is such a class.
+ */
+class NumericOptions
+{
+public:
+  /// A single value in [lowest, highest].
+  template<typename T>
+  CLI::Option* Add(CLI::App* command,
+    const std::string& name,
+    T& value,
+    T lowest,
+    T highest,
+    const std::string& description)
+  {
+    Entry* entry = this->NewEntry();
+    entry->Assign = [&value, name, lowest, highest](const std::vector<std::string>& text)
+    { value = Parse(name, text.back(), lowest, highest); };
+    return command->add_option(name, entry->Text, description + " (" + Range(lowest, highest) + ")")
+      ->type_name(std::is_integral<T>::value ? "INT" : "FLOAT")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast)
+      ->default_str(Format(value));
+  }
+
+  /// A list of values, each in [lowest, highest].
+  template<typename T>
+  CLI::Option* Add(CLI::App* command,
+    const std::string& name,
+    std::vector<T>& values,
+    T lowest,
+    T highest,
+    const std::string& description)
+  {
+    Entry* entry = this->NewEntry();
+    entry->Assign = [&values, name, lowest, highest](const std::vector<std::string>& text)
+    {
+      values.clear();
+      for (const std::string& item : text)
+      {
+        values.push_back(Parse(name, item, lowest, highest));
+      }
+    };
+    std::string defaults;
+    for (const T& value : values)
+    {
+      defaults += (defaults.empty() ? "" : " ") + Format(value);
+    }
+    return command
+      ->add_option(name, entry->Text, description + " (each " + Range(lowest, highest) + ")")
+      ->type_name(std::is_integral<T>::value ? "INT" : "FLOAT")
+      ->default_str(defaults);
+  }
+
+  /// A finite real number (no other bound).
+  CLI::Option* AddReal(CLI::App* command,
+    const std::string& name,
+    double& value,
+    const std::string& description)
+  {
+    return this->Add(command, name, value, -Huge, Huge, description);
+  }
+  CLI::Option* AddReal(CLI::App* command,
+    const std::string& name,
+    std::vector<double>& values,
+    const std::string& description)
+  {
+    return this->Add(command, name, values, -Huge, Huge, description);
+  }
+
+  /// Converts every numeric option given on the command line.
+  void Convert()
+  {
+    for (const auto& entry : this->Entries)
+    {
+      if (!entry->Text.empty())
+      {
+        entry->Assign(entry->Text);
+      }
+    }
+  }
+
+private:
+  static constexpr double Huge = std::numeric_limits<double>::max();
+
+  struct Entry
+  {
+    std::vector<std::string> Text;
+    std::function<void(const std::vector<std::string>&)> Assign;
+  };
+
+  Entry* NewEntry()
+  {
+    this->Entries.push_back(std::make_unique<Entry>());
+    return this->Entries.back().get();
+  }
+
+  template<typename T>
+  static std::string Format(T value)
+  {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+  }
+
+  template<typename T>
+  static std::string Range(T lowest, T highest)
+  {
+    const char* kind = std::is_integral<T>::value ? "an integer" : "a number";
+    if (static_cast<double>(highest) >= static_cast<double>(std::numeric_limits<int>::max()))
+    {
+      return static_cast<double>(lowest) <= -Huge ? std::string(kind)
+                                                  : std::string(kind) + " >= " + Format(lowest);
+    }
+    return std::string(kind) + " from " + Format(lowest) + " to " + Format(highest);
+  }
+
+  template<typename T>
+  static T Parse(const std::string& name, const std::string& text, T lowest, T highest)
+  {
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    errno = 0;
+    double number = 0.0;
+    if (std::is_integral<T>::value)
+    {
+      number = static_cast<double>(std::strtoll(begin, &end, 10));
+    }
+    else
+    {
+      number = std::strtod(begin, &end);
+    }
+    // !(a <= b) also refuses NaN.
+    if (end == begin || *end != '\0' || errno != 0 || !std::isfinite(number) ||
+      !(number >= static_cast<double>(lowest) && number <= static_cast<double>(highest)))
+    {
+      Fail(name + " " + text + ": expected " + Range(lowest, highest));
+    }
+    return static_cast<T>(number);
+  }
+
+  std::vector<std::unique_ptr<Entry>> Entries;
+};
+
+double Seconds(double start);
+
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
+
+/**
+ * A scene is a JSON file: a folder (a light-field dataset given where its
+ * scene is expected, a common slip) or a device is refused with a line that
+ * says what was expected.
+ */
+void ExpectSceneFile(const std::string& path);
+
+vtkSmartPointer<vtkLightFieldScene> ReadScene(const std::string& path);
+
+/// An image file (PNG, EXR, ... through OpenImageIO), rows bottom first.
+vtkSmartPointer<vtkImageData> ReadImage(const std::string& path);
+
+vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path);
+
+/// The light field a scene names (an error naming the scene and its field
+/// "lightfield" when it names none or a missing one).
+vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldScene* scene);
+
+/// Records the last error an object reports instead of printing it, so that
+/// the caller says it once, with the file it came from.
+class ErrorCatcher
+{
+public:
+  explicit ErrorCatcher(vtkObject* object)
+  {
+    this->Callback->SetCallback(
+      [](vtkObject*, unsigned long, void* clientData, void* callData)
+      {
+        *static_cast<std::string*>(clientData) =
+          lfd::StripLocation(static_cast<const char*>(callData));
+      });
+    this->Callback->SetClientData(&this->Message);
+    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+  }
+  const std::string& GetMessage() const { return this->Message; }
+
+private:
+  std::string Message;
+  vtkNew<vtkCallbackCommand> Callback;
+};
+
+/**
+ * The scene's cage, validated (against the light field when given; nullptr
+ * when the scene has none): the one check of a scene's boxes for every
+ * command. With keyframes and a time, the cage points are the keyframes'
+ * Catmull-Rom interpolation at that time.
+ */
+vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
+  vtkLightField* lightField,
+  const double* time = nullptr);
+
+/**
+ * The mesh with its cells labelled by the scene's rest boxes (a triangle
+ * takes the box holding its centroid), after the boxes passed SceneCage():
+ * how `synth --scene` splits a mesh into parts and how `eval groundtruth`
+ * gives the ground truth the parts the light field was split into.
+ */
+vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldScene* scene);
+
+/// The scene's view and render settings on a renderer or an evaluator.
+template<typename Target>
+void ApplySceneView(Target* target, vtkLightFieldScene* scene)
+{
+  target->SetCamera(scene->GetCamera());
+  target->SetWidth(scene->GetWidth());
+  target->SetHeight(scene->GetHeight());
+  target->SetFocalDistance(scene->GetFocalDistance());
+  target->SetSubdivision(scene->GetSubdivision()); // 0 = "auto" in all three
+  target->SetWidenedSearch(scene->GetWidenedSearch());
+  target->SetObjectThreshold(scene->GetObjectThreshold());
+}
+
+/// A renderer of the scene's light field from the scene's camera.
+void ConfigureRenderer(vtkLightFieldRenderer* renderer,
+  vtkLightFieldScene* scene,
+  vtkLightField* lightField,
+  vtkDeformationCage* cage);
+
+void WriteLightField(vtkLightField* lightField, const std::string& directory);
+
+void WriteScene(vtkLightFieldScene* scene, const std::string& path);
+
+void WriteImage(vtkImageData* image, const std::string& path);
+}
+
+#endif

@@ -1,0 +1,110 @@
+/**
+ * @file   lfdCommands.h
+ * @brief  The subcommands of the `lfd` tool, one source file per group
+ *         (lfdCaptureCommands.cxx, lfdRenderCommands.cxx, ...), and what one
+ *         group reuses of another.
+ *
+ * Each Add*Command(s)() function declares its subcommands' options on the
+ * CLI11 application and appends what runs each of them to `commands`; main()
+ * parses the command line and runs the one selected.
+ */
+#ifndef lfdCommands_h
+#define lfdCommands_h
+
+#include "lfdCommandSupport.h"
+
+namespace lfd::cli
+{
+/// `lfd synth`, `lfd import middlebury`, `lfd info` (lfdCaptureCommands.cxx).
+void AddCaptureCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd render`, `lfd animate`, `lfd lattice` (lfdRenderCommands.cxx).
+void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd eval groundtruth`, `lfd eval loo` (lfdEvalCommands.cxx).
+void AddEvalCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd split projector|scanline|propagate|check` (lfdSplitCommands.cxx).
+void AddSplitCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd bench` (lfdBenchCommand.cxx).
+void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd demo` (lfdDemoCommand.cxx).
+void AddDemoCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+
+//------------------------------------------------------------------------------
+// Capture (lfdCaptureCommands.cxx), also used by bench, demo and eval.
+
+/// The options of a synthetic capture (`lfd synth`, and the demos' captures).
+struct SynthOptions
+{
+  std::string Object = "fish";
+  std::string Mesh;
+  std::string Texture;
+  std::string Scene;
+  std::string Out;
+  int Views = 120;
+  int Rows = 3;
+  int Width = 256;
+  int Height = 256;
+  double Radius = 0.0;
+  double ViewAngle = 0.0;
+  std::vector<double> Axis = { 0.0, 1.0, 0.0 };
+  bool SceneFixedLight = false;
+  bool NoDepth = false;
+  int Projectors = 0;
+  double ProjectorNoise = 0.0;
+  double ProjectorAmbient = 0.0;
+  std::vector<std::string> ProjectorMasks;
+};
+
+/// The source mesh (and texture) of a capture or a ground-truth comparison: a
+/// built-in object by name, or a mesh file.
+vtkSmartPointer<vtkPolyData> SourceMesh(const std::string& name,
+  vtkSmartPointer<vtkImageData>& texture);
+
+/// Captures a light field of `mesh` (with `texture`, optional) with the options' rig and light.
+vtkSmartPointer<vtkLightField> Capture(vtkPolyData* mesh,
+  vtkImageData* texture,
+  const SynthOptions& options);
+
+/// Captures a light field of a mesh (or a built-in object) with the options.
+vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options);
+
+/// Imports a Middlebury set into `out`; `shownAs`: the name the report gives
+/// `out` (a staged folder's target).
+void ImportMiddlebury(const std::string& par, const std::string& out, const std::string& shownAs);
+
+//------------------------------------------------------------------------------
+// Novel views and animations (lfdRenderCommands.cxx), also used by bench and demo.
+
+/// A camera on a circle `scale` x the rig radius around the rig axis, at
+/// azimuth `phi` (radians from view 0) and `height` along the axis, looking
+/// at the rig centre.
+void OrbitCamera(vtkCameraRig* rig,
+  double phi,
+  double scale,
+  double height,
+  double viewAngle,
+  vtkCamera* camera);
+
+/// A grid of thumbnails of the frames.
+vtkSmartPointer<vtkImageData> ContactSheet(const std::vector<vtkSmartPointer<vtkImageData>>& frames,
+  int columns,
+  int thumb);
+
+/**
+ * Renders `frames` frames of a scene's keyframes (evenly from the first to
+ * the last keyframe time) into out/frame_%04d.png, and an MP4 when ffmpeg is
+ * installed. Returns the frames.
+ */
+std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldScene* scene,
+  vtkLightField* lightField,
+  int frames,
+  const std::string& out);
+
+/// The report of an animation written into `folder`, to be known as `out`.
+void PrintAnimation(vtkLightFieldScene* scene,
+  int frames,
+  double seconds,
+  const std::string& folder,
+  const std::string& out);
+}
+
+#endif

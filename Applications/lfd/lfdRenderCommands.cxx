@@ -1,0 +1,358 @@
+// `lfd render`, `lfd animate` and `lfd lattice`: a scene's views out.
+#include "lfdCommands.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCameraRig.h"
+#include "vtkDeformationCage.h"
+#include "vtkImageData.h"
+#include "vtkImageResize.h"
+#include "vtkLatticeCageFilter.h"
+#include "vtkLightField.h"
+#include "vtkLightFieldRenderer.h"
+#include "vtkLightFieldScene.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+#include "vtkTimerLog.h"
+#include "vtksys/SystemTools.hxx"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lfd::cli
+{
+void OrbitCamera(vtkCameraRig* rig,
+  double phi,
+  double scale,
+  double height,
+  double viewAngle,
+  vtkCamera* camera)
+{
+  const double* axis = rig->GetAxis();
+  const double* center = rig->GetCenter();
+  double x[3], y[3];
+  rig->GetAzimuthFrame(x, y);
+  const double r = scale * rig->GetRadius();
+  double position[3], focal[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    focal[c] = center[c];
+    position[c] = center[c] + height * axis[c] + r * (std::cos(phi) * x[c] + std::sin(phi) * y[c]);
+  }
+  camera->SetPosition(position);
+  camera->SetFocalPoint(focal);
+  camera->SetViewUp(axis[0], axis[1], axis[2]);
+  camera->SetViewAngle(viewAngle);
+}
+
+vtkSmartPointer<vtkImageData> ContactSheet(const std::vector<vtkSmartPointer<vtkImageData>>& frames,
+  int columns,
+  int thumb)
+{
+  const int rows = (static_cast<int>(frames.size()) + columns - 1) / columns;
+  auto sheet = vtkSmartPointer<vtkImageData>::New();
+  sheet->SetDimensions(columns * thumb, rows * thumb, 1);
+  sheet->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(sheet->GetScalarPointer());
+  std::fill(out, out + 3 * columns * thumb * rows * thumb, 0);
+  for (std::size_t f = 0; f < frames.size(); ++f)
+  {
+    vtkNew<vtkImageResize> resize;
+    resize->SetInputData(frames[f]);
+    resize->SetOutputDimensions(thumb, thumb, 1);
+    resize->Update();
+    const auto* in = static_cast<unsigned char*>(resize->GetOutput()->GetScalarPointer());
+    const int col = static_cast<int>(f) % columns;
+    const int row = rows - 1 - static_cast<int>(f) / columns; // first frame top-left
+    for (int j = 0; j < thumb; ++j)
+    {
+      std::copy(in + 3 * j * thumb,
+        in + 3 * (j + 1) * thumb,
+        out + 3 * ((row * thumb + j) * columns * thumb + col * thumb));
+    }
+  }
+  return sheet;
+}
+
+namespace
+{
+void Render(const std::string& scenePath, const std::string& out, const double* time)
+{
+  const double start = vtkTimerLog::GetUniversalTime();
+  auto scene = ReadScene(scenePath);
+  auto lightField = ReadSceneLightField(scene);
+  auto cage = SceneCage(scene, lightField, time);
+  vtkNew<vtkLightFieldRenderer> renderer;
+  ConfigureRenderer(renderer, scene, lightField, cage);
+  Run(renderer.Get(), "rendering");
+  WriteImage(renderer->GetOutput(), out);
+  std::cout << "wrote " << out << " (" << scene->GetWidth() << "x" << scene->GetHeight() << ") in "
+            << Seconds(start) << " s\n";
+}
+
+/// Encodes frame_%04d.png of a folder into an MP4 with ffmpeg, when installed
+/// (the folder is staged: a failed encoding leaves nothing behind).
+void EncodeMovie(const std::string& frameDir, const std::string& movie)
+{
+  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0)
+  {
+    return;
+  }
+  const std::string command = "ffmpeg -y -loglevel error -framerate 24 -i '" + frameDir +
+    "/frame_%04d.png' -pix_fmt yuv420p '" + movie + "'";
+  if (std::system(command.c_str()) != 0)
+  {
+    Fail("ffmpeg could not encode '" + movie + "'");
+  }
+}
+
+/// What `lfd animate` writes into its folder.
+const std::vector<std::string> AnimationFiles = { "frame_[0-9][0-9][0-9][0-9].png",
+  "animation.mp4" };
+
+}
+
+std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldScene* scene,
+  vtkLightField* lightField,
+  int frames,
+  const std::string& out)
+{
+  if (!vtksys::SystemTools::MakeDirectory(out))
+  {
+    Fail("cannot create the folder " + out);
+  }
+  const double t0 = scene->GetKeyframeTime(0);
+  const double t1 = scene->GetKeyframeTime(scene->GetNumberOfKeyframes() - 1);
+  vtkNew<vtkLightFieldRenderer> renderer;
+  std::vector<vtkSmartPointer<vtkImageData>> images;
+  for (int f = 0; f < frames; ++f)
+  {
+    const double time = t0 + (t1 - t0) * f / std::max(frames - 1, 1);
+    auto cage = SceneCage(scene, lightField, &time);
+    ConfigureRenderer(renderer, scene, lightField, cage);
+    Run(renderer.Get(), "rendering frame " + std::to_string(f));
+    auto frame = vtkSmartPointer<vtkImageData>::New();
+    frame->DeepCopy(renderer->GetOutput());
+    char name[64];
+    std::snprintf(name, sizeof(name), "/frame_%04d.png", f);
+    WriteImage(frame, out + name);
+    images.push_back(frame);
+    std::fprintf(stderr, "animating: frame %d/%d\n", f + 1, frames);
+  }
+  EncodeMovie(out, out + "/animation.mp4");
+  return images;
+}
+
+void PrintAnimation(vtkLightFieldScene* scene,
+  int frames,
+  double seconds,
+  const std::string& folder,
+  const std::string& out)
+{
+  std::printf("frames    %d of %dx%d in %s/frame_*.png (%.1f ms/frame)\n",
+    frames,
+    scene->GetWidth(),
+    scene->GetHeight(),
+    out.c_str(),
+    1000.0 * seconds / frames);
+  if (vtksys::SystemTools::FileExists(folder + "/animation.mp4", true))
+  {
+    std::printf("movie     %s/animation.mp4\n", out.c_str());
+  }
+}
+
+namespace
+{
+void Animate(const std::string& scenePath, int frames, const std::string& out)
+{
+  auto scene = ReadScene(scenePath);
+  if (scene->GetNumberOfKeyframes() < 2)
+  {
+    Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
+  }
+  auto lightField = ReadSceneLightField(scene);
+  StagedFolder folder(out, "lfd animate", AnimationFiles);
+  const double start = vtkTimerLog::GetUniversalTime();
+  RenderAnimation(scene, lightField, frames, folder.GetPath());
+  PrintAnimation(scene, frames, Seconds(start), folder.GetPath(), out);
+  folder.Commit();
+}
+
+struct LatticeOptions
+{
+  std::string Scene;
+  std::string Out;
+  std::vector<int> Dimensions = { 2, 2, 2 };
+  std::vector<double> Moves; // I J K DX DY DZ, repeated
+  std::vector<double> Region;
+  int Subdivision = 1;
+};
+
+/**
+ * Deforms a scene's rest boxes by a Sederberg-Parry lattice (control points
+ * moved with --move) sampled into boxes, and writes the scene with that cage
+ * (an ordinary cage: points = the FFD of the rest points; keyframes dropped,
+ * since they name the old points). The light field is the same one, its
+ * path made relative to the new scene file.
+ */
+void Lattice(const LatticeOptions& options)
+{
+  auto scene = ReadScene(options.Scene);
+  if (!scene->HasCage())
+  {
+    Fail("scene '" + options.Scene + "' has no cage: the lattice deforms its rest boxes");
+  }
+  vtkNew<vtkLatticeCageFilter> lattice;
+  lattice->SetInputData(scene->GetCage());
+  lattice->SetLatticeDimensions(options.Dimensions.data());
+  if (options.Moves.size() % 6 != 0)
+  {
+    Fail("--move takes 6 numbers: I J K DX DY DZ");
+  }
+  for (std::size_t m = 0; m < options.Moves.size(); m += 6)
+  {
+    const double* move = &options.Moves[m];
+    int index[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      index[a] = static_cast<int>(std::lround(move[a]));
+      if (index[a] != move[a] || index[a] < 0 || index[a] >= options.Dimensions[a])
+      {
+        char message[256];
+        std::snprintf(message,
+          sizeof(message),
+          "--move %g %g %g: control point indices are integers in 0..%d, 0..%d, 0..%d "
+          "(--dimensions)",
+          move[0],
+          move[1],
+          move[2],
+          options.Dimensions[0] - 1,
+          options.Dimensions[1] - 1,
+          options.Dimensions[2] - 1);
+        Fail(message);
+      }
+    }
+    lattice->SetControlPointDisplacement(index[0], index[1], index[2], move + 3);
+  }
+  if (!options.Region.empty())
+  {
+    lattice->SetRegion(options.Region.data());
+  }
+  lattice->SetSubdivision(options.Subdivision);
+  Run(lattice.Get(), "sampling the lattice into boxes");
+  vtkDeformationCage* cage = lattice->GetOutput();
+  vtkNew<vtkCallbackCommand> quiet; // the refusal is said once, below
+  cage->AddObserver(vtkCommand::ErrorEvent, quiet);
+  if (!cage->Validate())
+  {
+    Fail(options.Out + ": the sampled cage is refused: " + cage->GetErrorMessage());
+  }
+
+  scene->SetCage(cage);
+  scene->RemoveAllKeyframes();
+  WriteScene(scene, options.Out);
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < cage->GetNumberOfPoints(); ++i)
+  {
+    double rest[3], deformed[3];
+    cage->GetRestPoint(i, rest);
+    cage->GetDeformedPoint(i, deformed);
+    largest = std::max(largest, std::sqrt(vtkMath::Distance2BetweenPoints(rest, deformed)));
+  }
+  std::printf("wrote %s: %lld boxes on %lld points (lattice %d x %d x %d, subdivision %d), "
+              "largest corner move %.4g\n",
+    options.Out.c_str(),
+    static_cast<long long>(cage->GetNumberOfBoxes()),
+    static_cast<long long>(cage->GetNumberOfPoints()),
+    options.Dimensions[0],
+    options.Dimensions[1],
+    options.Dimensions[2],
+    options.Subdivision,
+    largest);
+}
+
+}
+
+void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands)
+{
+  struct RenderOptions
+  {
+    std::string Scene;
+    std::string Out;
+    double Time = 0.0;
+  };
+  auto render = std::make_shared<RenderOptions>();
+  auto* renderCommand = app.add_subcommand("render",
+    "render a scene's camera view of its light field, deformed by its cage, into the image OUT "
+    "(replaced when complete)");
+  renderCommand->add_option("SCENE", render->Scene, "scene.json")->required();
+  renderCommand->add_option("--out", render->Out, "output image (.png, .exr, ...)")->required();
+  auto* timeOption = numbers.AddReal(renderCommand,
+    "--time",
+    render->Time,
+    "time of the keyframes to render (default: the cage's points)");
+  commands.push_back({ renderCommand,
+    [render, timeOption]
+    { Render(render->Scene, render->Out, *timeOption ? &render->Time : nullptr); },
+    false });
+
+  struct AnimateOptions
+  {
+    std::string Scene;
+    std::string Out;
+    int Frames = 48;
+  };
+  auto animate = std::make_shared<AnimateOptions>();
+  auto* animateCommand = app.add_subcommand("animate",
+    "render the scene's keyframes (Catmull-Rom) into the folder OUT: frame_NNNN.png, and "
+    "animation.mp4 when ffmpeg is installed; replaces OUT when complete (an existing OUT may "
+    "hold only such files)");
+  animateCommand->add_option("SCENE", animate->Scene, "scene.json with keyframes")->required();
+  numbers.Add(animateCommand, "--frames", animate->Frames, 1, MaximumFrames, "number of frames");
+  animateCommand->add_option("--out", animate->Out, "output folder")->required();
+  commands.push_back({ animateCommand,
+    [animate] { Animate(animate->Scene, animate->Frames, animate->Out); },
+    false });
+
+  auto lattice = std::make_shared<LatticeOptions>();
+  vtkNew<vtkLatticeCageFilter> latticeLimits;
+  auto* latticeCommand = app.add_subcommand("lattice",
+    "bend a scene's boxes with a smooth lattice (Sederberg-Parry free-form deformation) sampled "
+    "into boxes; writes the scene file OUT with the deformed cage (replaced when complete)");
+  latticeCommand->add_option("SCENE", lattice->Scene, "scene.json with a cage")->required();
+  latticeCommand->add_option("--out", lattice->Out, "output scene.json")->required();
+  numbers
+    .Add(
+      latticeCommand, "--dimensions", lattice->Dimensions, 2, 16, "control points per axis x y z")
+    ->expected(3);
+  numbers
+    .AddReal(latticeCommand,
+      "--move",
+      lattice->Moves,
+      "I J K DX DY DZ: move control point (I, J, K) by (DX, DY, DZ); repeat for more")
+    ->expected(6)
+    ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  numbers
+    .AddReal(latticeCommand,
+      "--region",
+      lattice->Region,
+      "XMIN XMAX YMIN YMAX ZMIN ZMAX of the lattice (default: the cage's rest bounds)")
+    ->expected(6);
+  numbers.Add(latticeCommand,
+    "--subdivision",
+    lattice->Subdivision,
+    latticeLimits->GetSubdivisionMinValue(),
+    latticeLimits->GetSubdivisionMaxValue(),
+    "split each box into K^3 sub-boxes");
+  commands.push_back({ latticeCommand, [lattice] { Lattice(*lattice); }, false });
+}
+}

@@ -1,0 +1,387 @@
+// `lfd split projector|scanline|propagate|check`: light fields into parts.
+#include "lfdCommands.h"
+
+#include "vtkBoxCoverageCheck.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
+#include "vtkLabelPropagation.h"
+#include "vtkLightField.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkProjectorSegmentation.h"
+#include "vtkScanlineSplit.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace lfd::cli
+{
+namespace
+{
+struct SplitOptions
+{
+  std::string In;
+  std::string Out;
+  std::string Truth;
+  std::vector<int> Rows;
+  std::vector<int> Labels;
+  std::vector<std::string> Paint;
+  std::string Proxy = "auto";
+  int Resolution = 128;
+  double Tolerance = 1.5;
+  double Threshold = -1.0;
+  int Morphology = 1;
+  std::string Scene;
+};
+
+/**
+ * Prints the accuracy of `split`'s labels against the Label pass of the
+ * light field `truthPath` on the truth's object pixels, and the confusion
+ * per label.
+ */
+void ReportAccuracy(vtkLightField* split, const std::string& truthPath)
+{
+  auto truth = ReadLightField(truthPath);
+  auto* expected = vtkUnsignedCharArray::SafeDownCast(truth->GetPass(vtkLightField::LABEL));
+  auto* found = vtkUnsignedCharArray::SafeDownCast(split->GetPass(vtkLightField::LABEL));
+  if (!expected || expected->GetNumberOfTuples() != found->GetNumberOfTuples())
+  {
+    Fail(truthPath + ": " +
+      (expected ? "its Label pass has another size than the split light field's"
+                : "has no Label pass to compare with"));
+  }
+  vtkIdType object = 0, correct = 0;
+  std::vector<std::vector<vtkIdType>> confusion(256, std::vector<vtkIdType>(256, 0));
+  int labels = 0;
+  for (vtkIdType i = 0; i < expected->GetNumberOfTuples(); ++i)
+  {
+    const int e = expected->GetValue(i);
+    const int f = found->GetValue(i);
+    if (e == 0)
+    {
+      continue;
+    }
+    ++object;
+    correct += e == f ? 1 : 0;
+    ++confusion[e][f];
+    labels = std::max({ labels, e, f });
+  }
+  std::printf("accuracy on object pixels: %.2f %% (%lld of %lld)\n",
+    object ? 100.0 * correct / object : 0.0,
+    static_cast<long long>(correct),
+    static_cast<long long>(object));
+  std::printf("confusion (rows: truth, columns: split; column 0 = unlabelled)\n");
+  for (int e = 1; e <= labels; ++e)
+  {
+    std::printf("  %3d:", e);
+    for (int f = 0; f <= labels; ++f)
+    {
+      std::printf(" %9lld", static_cast<long long>(confusion[e][f]));
+    }
+    std::printf("\n");
+  }
+}
+
+/// Runs a splitter on `input` quietly (its error is reported once, here),
+/// prints the figures and writes the split light field.
+void RunSplit(vtkLightFieldSplitter* splitter, vtkLightField* input, const SplitOptions& options)
+{
+  vtkNew<vtkCallbackCommand> quiet;
+  splitter->AddObserver(vtkCommand::ErrorEvent, quiet);
+  splitter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, quiet);
+  splitter->SetInputData(input);
+  lfd::ShowProgress(splitter, "splitting");
+  splitter->Update();
+  if (*splitter->GetErrorMessage())
+  {
+    Fail(options.In + ": " + splitter->GetErrorMessage());
+  }
+  auto* label =
+    vtkUnsignedCharArray::SafeDownCast(splitter->GetOutput()->GetPass(vtkLightField::LABEL));
+  vtkIdType labelled = 0;
+  for (vtkIdType i = 0; i < label->GetNumberOfTuples(); ++i)
+  {
+    labelled += label->GetValue(i) ? 1 : 0;
+  }
+  std::printf("labelled pixels: %lld of %lld\n",
+    static_cast<long long>(labelled),
+    static_cast<long long>(label->GetNumberOfTuples()));
+  if (!options.Truth.empty())
+  {
+    ReportAccuracy(splitter->GetOutput(), options.Truth);
+  }
+  WriteLightField(splitter->GetOutput(), options.Out);
+  std::printf("wrote %s\n", options.Out.c_str());
+}
+
+void SplitProjector(const SplitOptions& options)
+{
+  auto lightField = ReadLightField(options.In);
+  vtkNew<vtkProjectorSegmentation> segmentation;
+  segmentation->SetMorphologyRadius(options.Morphology);
+  if (options.Threshold >= 0.0)
+  {
+    segmentation->SetDarkThreshold(options.Threshold);
+  }
+  RunSplit(segmentation, lightField, options);
+  std::printf("sensor noise sigma: %.2f\n", segmentation->GetEstimatedNoise());
+}
+
+void SplitScanline(const SplitOptions& options)
+{
+  auto lightField = ReadLightField(options.In);
+  vtkNew<vtkScanlineSplit> split;
+  for (int row : options.Rows)
+  {
+    split->AddBoundary(row);
+  }
+  if (!options.Labels.empty() && options.Labels.size() != options.Rows.size() + 1)
+  {
+    Fail("--labels: " + std::to_string(options.Rows.size()) + " rows make " +
+      std::to_string(options.Rows.size() + 1) + " bands, " + std::to_string(options.Labels.size()) +
+      " labels given");
+  }
+  for (size_t band = 0; band < options.Labels.size(); ++band)
+  {
+    split->SetBandLabel(static_cast<int>(band), options.Labels[band]);
+  }
+  if (options.Threshold >= 0.0)
+  {
+    split->SetThreshold(options.Threshold);
+  }
+  split->SetMorphologyRadius(options.Morphology);
+  RunSplit(split, lightField, options);
+}
+
+void SplitPropagate(const SplitOptions& options)
+{
+  auto lightField = ReadLightField(options.In);
+  vtkNew<vtkLabelPropagation> propagation;
+  for (const std::string& paint : options.Paint)
+  {
+    const size_t equals = paint.find('=');
+    char* end = nullptr;
+    const long view = equals == std::string::npos ? -1 : std::strtol(paint.c_str(), &end, 10);
+    if (equals == std::string::npos || end != paint.c_str() + equals || view < 0)
+    {
+      Fail("--paint '" + paint + "': expected VIEW=LABELS.png, e.g. 0=paint/view0.png");
+    }
+    const std::string file = paint.substr(equals + 1);
+    vtkSmartPointer<vtkImageData> image = ReadImage(file);
+    vtkDataArray* scalars = image->GetPointData()->GetScalars();
+    if (scalars && scalars->GetNumberOfComponents() > 1)
+    {
+      Fail(file + ": a label image has one channel (label values), this one has " +
+        std::to_string(scalars->GetNumberOfComponents()));
+    }
+    propagation->SetPaintedView(static_cast<int>(view), image);
+  }
+  propagation->SetProxy(options.Proxy == "depth" ? vtkLabelPropagation::DEPTH
+      : options.Proxy == "hull"                  ? vtkLabelPropagation::VISUAL_HULL
+                                                 : vtkLabelPropagation::AUTOMATIC);
+  propagation->SetResolution(options.Resolution);
+  propagation->SetSilhouetteTolerance(options.Tolerance);
+  if (options.Threshold >= 0.0)
+  {
+    propagation->SetThreshold(options.Threshold);
+  }
+  RunSplit(propagation, lightField, options);
+  std::printf(
+    "proxy voxels: %lld\n", static_cast<long long>(propagation->GetNumberOfProxyVoxels()));
+}
+
+void SplitCheck(const SplitOptions& options)
+{
+  auto lightField = ReadLightField(options.In);
+  auto scene = ReadScene(options.Scene);
+  if (!scene->HasCage())
+  {
+    Fail(options.Scene + ": the scene has no cage to check");
+  }
+  if (!lightField->GetPass(vtkLightField::LABEL))
+  {
+    Fail(options.In +
+      ": has no Label pass to check; split it first (lfd split projector|scanline|propagate)");
+  }
+  // Every box's label must have pixels and every label value a box: a
+  // mismatch (a scene written for another split) is warned about per label.
+  std::set<int> boxLabels;
+  vtkDataArray* cellLabels = scene->GetCage()->GetCellData()->GetArray("Label");
+  for (vtkIdType box = 0; cellLabels && box < cellLabels->GetNumberOfTuples(); ++box)
+  {
+    boxLabels.insert(static_cast<int>(cellLabels->GetTuple1(box)));
+  }
+  bool mismatch = false;
+  for (int label = 1; label < 256; ++label)
+  {
+    const bool boxed = boxLabels.count(label) > 0;
+    if (boxed != lightField->HasLabel(label))
+    {
+      mismatch = true;
+      lfd::ReportWarning(boxed
+          ? options.Scene + ": box label " + std::to_string(label) + " has no pixels in " +
+            options.In
+          : options.In + ": label " + std::to_string(label) + " has no box in " + options.Scene);
+    }
+  }
+  if (mismatch)
+  {
+    Fail("the labels of " + options.Scene + " and " + options.In +
+      " do not match (see the warnings); split again or fix the boxes' labels");
+  }
+  vtkNew<vtkBoxCoverageCheck> check;
+  check->SetInputData(0, lightField);
+  check->SetCageData(scene->GetCage());
+  check->SetThreshold(options.Threshold >= 0.0 ? options.Threshold : 0.95);
+  Run(check.Get(), "box coverage check");
+  std::printf("label  worst fraction  worst view  views below %.3f\n", check->GetThreshold());
+  for (int i = 0; i < check->GetNumberOfLabels(); ++i)
+  {
+    const std::vector<int> below = check->GetViewsBelow(i);
+    std::string list;
+    for (size_t k = 0; k < below.size() && k < 10; ++k)
+    {
+      list += (k ? "," : " (") + std::to_string(below[k]);
+    }
+    list += below.empty() ? "" : (below.size() > 10 ? ",...)" : ")");
+    std::printf("%5d  %14.4f  %10d  %zu%s\n",
+      check->GetLabel(i),
+      check->GetWorstFraction(i),
+      check->GetWorstView(i),
+      below.size(),
+      list.c_str());
+  }
+  if (!check->GetPassed())
+  {
+    Fail("some labels fall outside their boxes (fraction under " +
+      std::to_string(check->GetThreshold()) + "); grow the boxes or fix the labels");
+  }
+  std::printf("every label is inside its boxes\n");
+}
+
+}
+
+void AddSplitCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands)
+{
+  auto split = std::make_shared<SplitOptions>();
+  vtkNew<vtkProjectorSegmentation> projectorLimits;
+  vtkNew<vtkScanlineSplit> scanlineLimits;
+  vtkNew<vtkLabelPropagation> propagationLimits;
+  vtkNew<vtkBoxCoverageCheck> checkLimits;
+  auto* splitCommand = app.add_subcommand("split",
+    "split a light field into parts: label its rays (projector masks, image rows, or labels "
+    "painted in a few views) into the dataset folder OUT (IN + Label, replaced when complete), "
+    "or check the boxes against the labels");
+  splitCommand->require_subcommand(1);
+  auto addSplitIO = [split](CLI::App* command)
+  {
+    command->add_option("IN", split->In, "light-field directory")->required();
+    command->add_option("--out", split->Out, "output light-field directory (IN + Label)")
+      ->required();
+    command->add_option("--truth",
+      split->Truth,
+      "a light field with the true Label pass: print the accuracy and confusion");
+  };
+  auto* splitProjector = splitCommand->add_subcommand("projector",
+    "label by the projector colour masks: Eq. 1 normalisation of Coded by Flood, nearest "
+    "palette colour (CIELAB), morphological clean-up");
+  addSplitIO(splitProjector);
+  numbers
+    .Add(splitProjector,
+      "--dark",
+      split->Threshold,
+      0.0,
+      255.0,
+      "Flood level below which a channel is dark (default: from the noise)")
+    ->default_str("");
+  numbers.Add(splitProjector,
+    "--morphology",
+    split->Morphology,
+    projectorLimits->GetMorphologyRadiusMinValue(),
+    projectorLimits->GetMorphologyRadiusMaxValue(),
+    "clean-up radius in pixels (0 = none)");
+  auto* splitScanline = splitCommand->add_subcommand("scanline",
+    "label by image rows within the object (aligned rings): band 1 above the first row, ...");
+  addSplitIO(splitScanline);
+  numbers.Add(splitScanline, "--rows", split->Rows, 0, VTK_INT_MAX, "boundary rows, from the top")
+    ->delimiter(',')
+    ->required();
+  numbers
+    .Add(splitScanline, "--labels", split->Labels, 1, 255, "label of each band (default 1, 2, ...)")
+    ->delimiter(',');
+  numbers
+    .Add(splitScanline,
+      "--threshold",
+      split->Threshold,
+      scanlineLimits->GetThresholdMinValue(),
+      scanlineLimits->GetThresholdMaxValue(),
+      "object brightness threshold when IN has no Label pass (default 10)")
+    ->default_str("");
+  numbers.Add(splitScanline,
+    "--morphology",
+    split->Morphology,
+    scanlineLimits->GetMorphologyRadiusMinValue(),
+    scanlineLimits->GetMorphologyRadiusMaxValue(),
+    "clean-up radius of the object mask");
+  auto* splitPropagate = splitCommand->add_subcommand("propagate",
+    "carry labels painted in a few views to every view through the Depth pass or a visual hull");
+  addSplitIO(splitPropagate);
+  splitPropagate
+    ->add_option("--paint", split->Paint, "VIEW=LABELS.png (one channel, 0 = unpainted); repeat")
+    ->required();
+  splitPropagate->add_option("--proxy", split->Proxy, "auto (depth when present), depth or hull")
+    ->check(CLI::IsMember({ "auto", "depth", "hull" }))
+    ->capture_default_str();
+  numbers.Add(splitPropagate,
+    "--resolution",
+    split->Resolution,
+    propagationLimits->GetResolutionMinValue(),
+    propagationLimits->GetResolutionMaxValue(),
+    "proxy voxels along its longest side");
+  numbers.Add(splitPropagate,
+    "--tolerance",
+    split->Tolerance,
+    propagationLimits->GetSilhouetteToleranceMinValue(),
+    propagationLimits->GetSilhouetteToleranceMaxValue(),
+    "pixels of silhouette or calibration error the visual hull tolerates");
+  numbers
+    .Add(splitPropagate,
+      "--threshold",
+      split->Threshold,
+      propagationLimits->GetThresholdMinValue(),
+      propagationLimits->GetThresholdMaxValue(),
+      "silhouette brightness threshold (default 20)")
+    ->default_str("");
+  auto* splitCheck = splitCommand->add_subcommand("check",
+    "project each rest box into every view and report the fraction of its label's pixels "
+    "inside (writes nothing); exits 1 under the threshold, or when a box label has no pixels "
+    "or a label no box");
+  splitCheck->add_option("IN", split->In, "light-field directory (with a Label pass)")->required();
+  splitCheck->add_option("--scene", split->Scene, "scene.json whose cage holds the boxes")
+    ->required();
+  numbers
+    .Add(splitCheck,
+      "--threshold",
+      split->Threshold,
+      checkLimits->GetThresholdMinValue(),
+      checkLimits->GetThresholdMaxValue(),
+      "smallest acceptable fraction (default 0.95)")
+    ->default_str("");
+  commands.push_back({ splitProjector, [split] { SplitProjector(*split); }, false });
+  commands.push_back({ splitScanline, [split] { SplitScanline(*split); }, false });
+  commands.push_back({ splitPropagate, [split] { SplitPropagate(*split); }, false });
+  commands.push_back({ splitCheck, [split] { SplitCheck(*split); }, false });
+}
+}
