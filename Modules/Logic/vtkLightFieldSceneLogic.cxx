@@ -384,7 +384,7 @@ struct CageCheck
 
 struct vtkLightFieldSceneLogic::Internals
 {
-  vtkNew<vtkLightFieldScene> Scene;
+  vtkSmartPointer<vtkLightFieldScene> Scene = vtkSmartPointer<vtkLightFieldScene>::New();
   vtkNew<vtkDeformationCage> Cage;
   vtkSmartPointer<vtkLightField> LightField;
   /// The resolved path LightField was read from; "" for one given in memory.
@@ -597,11 +597,25 @@ bool vtkLightFieldSceneLogic::Save(const char* fileName)
 //------------------------------------------------------------------------------
 void vtkLightFieldSceneLogic::NewScene()
 {
+  vtkNew<vtkLightFieldScene> scene;
+  this->SetScene(scene);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldSceneLogic::SetScene(vtkLightFieldScene* scene)
+{
+  if (!scene)
+  {
+    this->NewScene();
+    return;
+  }
   Internals& internal = *this->Internal;
-  internal.Scene->Initialize();
-  internal.Scene->SetFileName(nullptr);
-  internal.Cage->InitializeFromGrid(nullptr);
-  internal.Scene->SetCage(internal.Cage);
+  internal.Scene = scene;
+  if (scene->GetCage() != internal.Cage.Get())
+  {
+    internal.Cage->InitializeFromGrid(scene->GetCage());
+    scene->SetCage(internal.Cage);
+  }
   internal.LightField = nullptr;
   internal.LightFieldSource.clear();
   this->ClearUndo();

@@ -110,6 +110,14 @@ public:
   void NewScene();
 
   /**
+   * Adopts `scene`, a document built elsewhere (a demo, a script), as 3D
+   * Slicer's logics are given their scene: its cage is copied into the
+   * logic's cage, which the document then shares; the cached light field is
+   * dropped and the undo stack cleared. Null starts a new scene.
+   */
+  void SetScene(vtkLightFieldScene* scene);
+
+  /**
    * The scene document. Change it through the logic's commands: an edit made
    * on the document directly is not undoable.
    */

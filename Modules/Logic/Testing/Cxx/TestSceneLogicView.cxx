@@ -105,10 +105,32 @@ void TestLabelMesh(vtkLightFieldSceneLogic* logic)
     1.0,
     "cells whose box label is their part's");
 }
+
+void TestAdoptScene()
+{
+  vtkNew<vtkLightFieldScene> scene;
+  vtkNew<vtkDeformationCage> cage;
+  const double rest[3] = { 0.0, 0.0, 0.0 };
+  cage->AddPoint(rest);
+  scene->SetCage(cage);
+  scene->SetWidth(77);
+  vtkNew<vtkLightFieldSceneLogic> logic;
+  logic->SetScene(scene);
+  Check(logic->GetScene() == scene.Get() && scene->GetCage() == logic->GetCage(),
+    "an adopted scene shares the logic's cage");
+  CheckEqual(
+    logic->GetCage()->GetNumberOfPoints(), static_cast<vtkIdType>(1), "the adopted cage's points");
+  Check(logic->SetSize(78, 78) && scene->GetWidth() == 78, "edits reach the adopted document");
+  logic->SetScene(scene);
+  CheckEqual(logic->GetCage()->GetNumberOfPoints(),
+    static_cast<vtkIdType>(1),
+    "adopting the same document again keeps its cage");
+}
 }
 
 int TestSceneLogicView(int, char*[])
 {
+  TestAdoptScene();
   vtkNew<vtkLightFieldSceneLogic> logic;
   vtkNew<vtkLightField> lightField;
   TestRingSlabs(logic, lightField);
