@@ -1,17 +1,14 @@
 // What every `lfd` subcommand shares (see lfdCommandSupport.h).
 #include "lfdCommandSupport.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkDeformationCage.h"
 #include "vtkImageData.h"
 #include "vtkImageFileReader.h"
 #include "vtkImageFileWriter.h"
-#include "vtkKeyframeInterpolator.h"
-#include "vtkLabelCellsByBoxes.h"
 #include "vtkLightField.h"
 #include "vtkLightFieldReader.h"
-#include "vtkLightFieldRenderer.h"
 #include "vtkLightFieldScene.h"
+#include "vtkLightFieldSceneLogic.h"
 #include "vtkLightFieldWriter.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
@@ -118,13 +115,13 @@ void ExpectSceneFile(const std::string& path)
   }
 }
 
-vtkSmartPointer<vtkLightFieldScene> ReadScene(const std::string& path)
+vtkSmartPointer<vtkLightFieldSceneLogic> ReadScene(const std::string& path)
 {
   ExpectSceneFile(path);
-  auto scene = vtkSmartPointer<vtkLightFieldScene>::New();
-  if (!scene->Read(path.c_str()))
+  auto scene = vtkSmartPointer<vtkLightFieldSceneLogic>::New();
+  if (!scene->Load(path.c_str()))
   {
-    Fail(scene->GetErrorMessage());
+    Fail(""); // the logic said why
   }
   return scene;
 }
@@ -158,16 +155,16 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
   return lightField;
 }
 
-vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldScene* scene)
+vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene)
 {
-  if (!scene->ConfigureReader(nullptr))
+  if (!scene->GetScene()->ConfigureReader(nullptr))
   {
-    Fail(scene->GetErrorMessage());
+    Fail(scene->GetScene()->GetErrorMessage());
   }
-  return ReadLightField(scene->GetResolvedLightFieldPath());
+  return ReadLightField(scene->GetScene()->GetResolvedLightFieldPath());
 }
 
-vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
+vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldSceneLogic* scene,
   vtkLightField* lightField,
   const double* time)
 {
@@ -176,52 +173,23 @@ vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
     return nullptr;
   }
   auto cage = vtkSmartPointer<vtkDeformationCage>::New();
-  cage->InitializeFromGrid(scene->GetCage());
-  if (time && scene->GetNumberOfKeyframes() > 0)
+  const bool valid =
+    time ? scene->GetCageAtTime(*time, lightField, cage) : scene->GetCurrentCage(lightField, cage);
+  if (!valid)
   {
-    vtkNew<vtkKeyframeInterpolator> keyframes;
-    ErrorCatcher refusal(keyframes);
-    for (int k = 0; k < scene->GetNumberOfKeyframes(); ++k)
-    {
-      keyframes->AddKeyframe(scene->GetKeyframeTime(k), scene->GetKeyframePoints(k));
-      if (!refusal.GetMessage().empty())
-      {
-        Fail(std::string(scene->GetFileName()) + ": keyframes: " + refusal.GetMessage());
-      }
-    }
-    vtkNew<vtkPoints> points;
-    keyframes->InterpolatePoints(*time, points);
-    cage->SetPoints(points);
-  }
-  // The refusal is said once, with the scene's file name: the observer keeps
-  // the cage's own error event from the console.
-  vtkNew<vtkCallbackCommand> quiet;
-  cage->AddObserver(vtkCommand::ErrorEvent, quiet);
-  if (!cage->Validate(lightField))
-  {
-    Fail(std::string(scene->GetFileName()) + ": " + cage->GetErrorMessage());
+    Fail(""); // the logic said why, naming the scene file
   }
   return cage;
 }
 
-vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldScene* scene)
+vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldSceneLogic* scene)
 {
-  vtkNew<vtkLabelCellsByBoxes> labeler;
-  labeler->SetInputData(mesh);
-  labeler->SetBoxesData(scene->GetCage());
-  Run(labeler.Get(), "labelling the mesh by the scene's boxes");
-  return labeler->GetOutput();
-}
-
-void ConfigureRenderer(vtkLightFieldRenderer* renderer,
-  vtkLightFieldScene* scene,
-  vtkLightField* lightField,
-  vtkDeformationCage* cage)
-{
-  renderer->SetInputData(lightField);
-  renderer->SetCageData(cage);
-  ApplySceneView(renderer, scene);
-  renderer->SetBackground(scene->GetBackground());
+  auto labelled = vtkSmartPointer<vtkPolyData>::New();
+  if (!scene->LabelMesh(mesh, labelled))
+  {
+    Fail("");
+  }
+  return labelled;
 }
 
 void WriteLightField(vtkLightField* lightField, const std::string& directory)

@@ -932,6 +932,16 @@ bool vtkLightFieldSceneLogic::BuildCageFromLattice(vtkLatticeCageFilter* lattice
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightFieldSceneLogic::ReplaceCage(vtkDeformationCage* cage)
+{
+  if (!cage)
+  {
+    return this->Refuse("ReplaceCage: no cage given");
+  }
+  return this->Internal->ReplaceCage(this, "Replace cage", cage);
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightFieldSceneLogic::MovePoint(vtkIdType id, const double position[3])
 {
   vtkNew<vtkIdList> ids;

@@ -231,6 +231,13 @@ public:
   bool BuildCageFromLattice(vtkLatticeCageFilter* lattice);
   ///@}
 
+  /**
+   * Replaces the cage by a copy of `cage` (one undoable command, "Replace
+   * cage"; the keyframes are dropped), refused when the whole cage does not
+   * validate.
+   */
+  bool ReplaceCage(vtkDeformationCage* cage);
+
   ///@{
   /**
    * Moves cage points to deformed positions: `ids` and `positions` have the

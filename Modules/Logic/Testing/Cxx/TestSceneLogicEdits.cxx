@@ -297,6 +297,10 @@ void TestBuildsAndTime(Logic* logic)
   Check(logic->GetCage()->IsDeformed(), "the lattice deformed the cage");
   CheckEqual(logic->GetUndoName(), std::string("Build cage from lattice"), "undo name");
   logic->Undo();
+  Check(logic->ReplaceCage(lattice->GetOutput()) && logic->GetCage()->IsDeformed(),
+    "the lattice's cage given as is");
+  CheckEqual(logic->GetUndoName(), std::string("Replace cage"), "undo name");
+  logic->Undo();
 
   // Two keyframes: Catmull-Rom with clamped ends is the midpoint halfway.
   const int keyframes = logic->GetScene()->GetNumberOfKeyframes();
