@@ -61,7 +61,7 @@ void Bench(int repeat, int size)
     auto lightField = Synthesize(options);
     vtkCameraRig* rig = lightField->GetRig();
     vtkNew<vtkCamera> camera;
-    OrbitCamera(rig, 0.37, 1.2, 0.0, rig->GetViewAngle(0), camera);
+    vtkLightFieldSceneLogic::OrbitCamera(rig, 0.37, 1.2, 0.0, rig->GetViewAngle(0), camera);
     vtkNew<vtkLightFieldRenderer> renderer;
     renderer->SetInputData(lightField);
     renderer->SetCamera(camera);

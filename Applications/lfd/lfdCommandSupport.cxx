@@ -5,12 +5,10 @@
 #include "vtkImageData.h"
 #include "vtkImageFileReader.h"
 #include "vtkImageFileWriter.h"
-#include "vtkKeyframeInterpolator.h"
-#include "vtkLabelCellsByBoxes.h"
 #include "vtkLightField.h"
 #include "vtkLightFieldReader.h"
-#include "vtkLightFieldRenderer.h"
 #include "vtkLightFieldScene.h"
+#include "vtkLightFieldSceneLogic.h"
 #include "vtkLightFieldWriter.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
@@ -109,14 +107,14 @@ void ExpectSceneFile(const std::string& path)
   }
 }
 
-vtkSmartPointer<vtkLightFieldScene> ReadScene(const std::string& path)
+vtkSmartPointer<vtkLightFieldSceneLogic> ReadScene(const std::string& path)
 {
   ExpectSceneFile(path);
-  auto scene = vtkSmartPointer<vtkLightFieldScene>::New();
-  StepErrors errors;
-  errors->Observe(scene);
-  scene->Read(path.c_str());
-  errors.FailOnError();
+  auto scene = vtkSmartPointer<vtkLightFieldSceneLogic>::New();
+  if (!scene->Load(path.c_str()))
+  {
+    Fail(""); // the logic said why
+  }
   return scene;
 }
 
@@ -141,16 +139,16 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
   return lightField;
 }
 
-vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldScene* scene)
+vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene)
 {
   StepErrors errors;
-  errors->Observe(scene);
-  scene->ConfigureReader(nullptr);
+  errors->Observe(scene->GetScene());
+  scene->GetScene()->ConfigureReader(nullptr);
   errors.FailOnError();
-  return ReadLightField(scene->GetResolvedLightFieldPath());
+  return ReadLightField(scene->GetScene()->GetResolvedLightFieldPath());
 }
 
-vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
+vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldSceneLogic* scene,
   vtkLightField* lightField,
   const double* time)
 {
@@ -159,47 +157,23 @@ vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
     return nullptr;
   }
   auto cage = vtkSmartPointer<vtkDeformationCage>::New();
-  cage->InitializeFromGrid(scene->GetCage());
-  if (time && scene->GetNumberOfKeyframes() > 0)
+  const bool valid =
+    time ? scene->GetCageAtTime(*time, lightField, cage) : scene->GetCurrentCage(lightField, cage);
+  if (!valid)
   {
-    vtkNew<vtkKeyframeInterpolator> keyframes;
-    StepErrors refusal;
-    refusal->Observe(keyframes);
-    for (int k = 0; k < scene->GetNumberOfKeyframes(); ++k)
-    {
-      keyframes->AddKeyframe(scene->GetKeyframeTime(k), scene->GetKeyframePoints(k));
-      refusal.FailOnError(std::string(scene->GetFileName()) + ": keyframes: ");
-    }
-    vtkNew<vtkPoints> points;
-    keyframes->InterpolatePoints(*time, points);
-    cage->SetPoints(points);
-  }
-  const std::string why = cage->Validate(lightField);
-  if (!why.empty())
-  {
-    Fail(std::string(scene->GetFileName()) + ": " + why);
+    Fail(""); // the logic said why, naming the scene file
   }
   return cage;
 }
 
-vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldScene* scene)
+vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldSceneLogic* scene)
 {
-  vtkNew<vtkLabelCellsByBoxes> labeler;
-  labeler->SetInputData(mesh);
-  labeler->SetBoxesData(scene->GetCage());
-  Run(labeler.Get(), "labelling the mesh by the scene's boxes");
-  return labeler->GetOutput();
-}
-
-void ConfigureRenderer(vtkLightFieldRenderer* renderer,
-  vtkLightFieldScene* scene,
-  vtkLightField* lightField,
-  vtkDeformationCage* cage)
-{
-  renderer->SetInputData(lightField);
-  renderer->SetCageData(cage);
-  ApplySceneView(renderer, scene);
-  renderer->SetBackground(scene->GetBackground());
+  auto labelled = vtkSmartPointer<vtkPolyData>::New();
+  if (!scene->LabelMesh(mesh, labelled))
+  {
+    Fail("");
+  }
+  return labelled;
 }
 
 void WriteLightField(vtkLightField* lightField, const std::string& directory)

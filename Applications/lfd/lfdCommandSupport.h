@@ -13,6 +13,7 @@
 #include "vtkCommand.h"
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldScene.h"
+#include "vtkLightFieldSceneLogic.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
 #include "vtkSmartPointer.h"
@@ -359,7 +360,9 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
  */
 void ExpectSceneFile(const std::string& path);
 
-vtkSmartPointer<vtkLightFieldScene> ReadScene(const std::string& path);
+/// A scene file read into the scene logic, through which every command
+/// uses it.
+vtkSmartPointer<vtkLightFieldSceneLogic> ReadScene(const std::string& path);
 
 /// An image file (PNG, EXR, ... through OpenImageIO), rows bottom first.
 vtkSmartPointer<vtkImageData> ReadImage(const std::string& path);
@@ -368,44 +371,25 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path);
 
 /// The light field a scene names (an error naming the scene and its field
 /// "lightfield" when it names none or a missing one).
-vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldScene* scene);
+vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene);
 
 /**
- * The scene's cage, validated (against the light field when given; nullptr
- * when the scene has none): the one check of a scene's boxes for every
- * command. With keyframes and a time, the cage points are the keyframes'
- * Catmull-Rom interpolation at that time.
+ * The scene's cage, validated by the scene logic (against the light field
+ * when given; nullptr when the scene has none): the one check of a scene's
+ * boxes for every command. With keyframes and a time, the cage points are
+ * the keyframes' Catmull-Rom interpolation at that time.
  */
-vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldScene* scene,
+vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldSceneLogic* scene,
   vtkLightField* lightField,
   const double* time = nullptr);
 
 /**
- * The mesh with its cells labelled by the scene's rest boxes (a triangle
- * takes the box holding its centroid), after the boxes passed SceneCage():
+ * The mesh with its cells labelled by the scene's rest boxes
+ * (vtkLightFieldSceneLogic::LabelMesh), after the boxes passed SceneCage():
  * how `synth --scene` splits a mesh into parts and how `eval groundtruth`
  * gives the ground truth the parts the light field was split into.
  */
-vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldScene* scene);
-
-/// The scene's view and render settings on a renderer or an evaluator.
-template<typename Target>
-void ApplySceneView(Target* target, vtkLightFieldScene* scene)
-{
-  target->SetCamera(scene->GetCamera());
-  target->SetWidth(scene->GetWidth());
-  target->SetHeight(scene->GetHeight());
-  target->SetFocalDistance(scene->GetFocalDistance());
-  target->SetSubdivision(scene->GetSubdivision()); // 0 = "auto" in all three
-  target->SetWidenedSearch(scene->GetWidenedSearch());
-  target->SetObjectThreshold(scene->GetObjectThreshold());
-}
-
-/// A renderer of the scene's light field from the scene's camera.
-void ConfigureRenderer(vtkLightFieldRenderer* renderer,
-  vtkLightFieldScene* scene,
-  vtkLightField* lightField,
-  vtkDeformationCage* cage);
+vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldSceneLogic* scene);
 
 void WriteLightField(vtkLightField* lightField, const std::string& directory);
 

@@ -74,16 +74,6 @@ void ImportMiddlebury(const std::string& par, const std::string& out, const std:
 //------------------------------------------------------------------------------
 // Novel views and animations (lfdRenderCommands.cxx), also used by bench and demo.
 
-/// A camera on a circle `scale` x the rig radius around the rig axis, at
-/// azimuth `phi` (radians from view 0) and `height` along the axis, looking
-/// at the rig centre.
-void OrbitCamera(vtkCameraRig* rig,
-  double phi,
-  double scale,
-  double height,
-  double viewAngle,
-  vtkCamera* camera);
-
 /// A grid of thumbnails of the frames.
 vtkSmartPointer<vtkImageData> ContactSheet(const std::vector<vtkSmartPointer<vtkImageData>>& frames,
   int columns,
@@ -94,13 +84,13 @@ vtkSmartPointer<vtkImageData> ContactSheet(const std::vector<vtkSmartPointer<vtk
  * the last keyframe time) into out/frame_%04d.png, and an MP4 when ffmpeg is
  * installed. Returns the frames.
  */
-std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldScene* scene,
+std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldSceneLogic* scene,
   vtkLightField* lightField,
   int frames,
   const std::string& out);
 
 /// The report of an animation written into `folder`, to be known as `out`.
-void PrintAnimation(vtkLightFieldScene* scene,
+void PrintAnimation(vtkLightFieldSceneLogic* scene,
   int frames,
   double seconds,
   const std::string& folder,

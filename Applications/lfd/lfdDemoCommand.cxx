@@ -110,8 +110,10 @@ void AnimateDemo(vtkLightFieldScene* scene,
 {
   const double start = vtkTimerLog::GetUniversalTime();
   const std::string frameDir = "/frames" + suffix;
-  const auto images = RenderAnimation(scene, lightField, frames, staged + frameDir);
-  PrintAnimation(scene, frames, Seconds(start), staged + frameDir, out + frameDir);
+  vtkNew<vtkLightFieldSceneLogic> logic;
+  logic->SetScene(scene);
+  const auto images = RenderAnimation(logic, lightField, frames, staged + frameDir);
+  PrintAnimation(logic, frames, Seconds(start), staged + frameDir, out + frameDir);
   const std::string sheet = "/contact_sheet" + suffix + ".png";
   WriteImage(ContactSheet(images, 6, 128), staged + sheet);
   std::printf("sheet     %s%s\n", out.c_str(), sheet.c_str());
@@ -202,7 +204,8 @@ void Demo(const std::string& sceneName,
     // Half-way between two captured views, further out than the ring. For
     // the fish, swimming about the camera's viewing axis keeps the motion in
     // the picture (a ring light field has horizontal parallax only).
-    OrbitCamera(rig, 0.5 * step, 1.15, 0.0, 0.7 * rig->GetViewAngle(0), scene->GetCamera());
+    vtkLightFieldSceneLogic::OrbitCamera(
+      rig, 0.5 * step, 1.15, 0.0, 0.7 * rig->GetViewAngle(0), scene->GetCamera());
     scene->SetWidth(size);
     scene->SetHeight(size);
     const std::string sceneName = std::string(demo->Name) + suffix + ".json";
@@ -303,7 +306,7 @@ void DemoTemple(const std::string& dataDir, const std::string& out, int frames, 
   {
     Fail(par + ": no ring could be fitted to the cameras");
   }
-  OrbitCamera(rig,
+  vtkLightFieldSceneLogic::OrbitCamera(rig,
     vtkMath::Pi() / rig->GetNumberOfViews(),
     1.15,
     0.0,

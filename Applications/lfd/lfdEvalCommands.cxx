@@ -43,7 +43,7 @@ void EvalGroundTruth(const std::string& scenePath,
   evaluator->SetMeshData(mesh);
   evaluator->SetCageData(cage);
   evaluator->SetTextureData(texture);
-  ApplySceneView(evaluator.Get(), scene);
+  scene->ApplyView(evaluator);
   Run(evaluator.Get(), "ground-truth evaluation");
   std::printf("PSNR (object)     %.2f dB\n", evaluator->GetPSNR());
   std::printf("SSIM (object)     %.4f\n", evaluator->GetSSIM());

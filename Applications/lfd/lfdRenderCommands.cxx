@@ -29,30 +29,6 @@
 
 namespace lfd::cli
 {
-void OrbitCamera(vtkCameraRig* rig,
-  double phi,
-  double scale,
-  double height,
-  double viewAngle,
-  vtkCamera* camera)
-{
-  const double* axis = rig->GetAxis();
-  const double* center = rig->GetCenter();
-  double x[3], y[3];
-  rig->GetAzimuthFrame(x, y);
-  const double r = scale * rig->GetRadius();
-  double position[3], focal[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    focal[c] = center[c];
-    position[c] = center[c] + height * axis[c] + r * (std::cos(phi) * x[c] + std::sin(phi) * y[c]);
-  }
-  camera->SetPosition(position);
-  camera->SetFocalPoint(focal);
-  camera->SetViewUp(axis[0], axis[1], axis[2]);
-  camera->SetViewAngle(viewAngle);
-}
-
 vtkSmartPointer<vtkImageData> ContactSheet(const std::vector<vtkSmartPointer<vtkImageData>>& frames,
   int columns,
   int thumb)
@@ -91,11 +67,11 @@ void Render(const std::string& scenePath, const std::string& out, const double* 
   auto lightField = ReadSceneLightField(scene);
   auto cage = SceneCage(scene, lightField, time);
   vtkNew<vtkLightFieldRenderer> renderer;
-  ConfigureRenderer(renderer, scene, lightField, cage);
+  scene->ConfigureRenderer(renderer, lightField, cage);
   Run(renderer.Get(), "rendering");
   WriteImage(renderer->GetOutput(), out);
-  std::cout << "wrote " << out << " (" << scene->GetWidth() << "x" << scene->GetHeight() << ") in "
-            << Seconds(start) << " s\n";
+  std::cout << "wrote " << out << " (" << scene->GetScene()->GetWidth() << "x"
+            << scene->GetScene()->GetHeight() << ") in " << Seconds(start) << " s\n";
 }
 
 /// Encodes frame_%04d.png of a folder into an MP4 with ffmpeg, when installed
@@ -120,7 +96,7 @@ const std::vector<std::string> AnimationFiles = { "frame_[0-9][0-9][0-9][0-9].pn
 
 }
 
-std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldScene* scene,
+std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldSceneLogic* scene,
   vtkLightField* lightField,
   int frames,
   const std::string& out)
@@ -129,15 +105,13 @@ std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldScene* s
   {
     Fail("cannot create the folder " + out);
   }
-  const double t0 = scene->GetKeyframeTime(0);
-  const double t1 = scene->GetKeyframeTime(scene->GetNumberOfKeyframes() - 1);
   vtkNew<vtkLightFieldRenderer> renderer;
   std::vector<vtkSmartPointer<vtkImageData>> images;
   for (int f = 0; f < frames; ++f)
   {
-    const double time = t0 + (t1 - t0) * f / std::max(frames - 1, 1);
+    const double time = scene->GetAnimationTime(f, frames);
     auto cage = SceneCage(scene, lightField, &time);
-    ConfigureRenderer(renderer, scene, lightField, cage);
+    scene->ConfigureRenderer(renderer, lightField, cage);
     Run(renderer.Get(), "rendering frame " + std::to_string(f));
     auto frame = vtkSmartPointer<vtkImageData>::New();
     frame->DeepCopy(renderer->GetOutput());
@@ -151,7 +125,7 @@ std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldScene* s
   return images;
 }
 
-void PrintAnimation(vtkLightFieldScene* scene,
+void PrintAnimation(vtkLightFieldSceneLogic* scene,
   int frames,
   double seconds,
   const std::string& folder,
@@ -159,8 +133,8 @@ void PrintAnimation(vtkLightFieldScene* scene,
 {
   std::printf("frames    %d of %dx%d in %s/frame_*.png (%.1f ms/frame)\n",
     frames,
-    scene->GetWidth(),
-    scene->GetHeight(),
+    scene->GetScene()->GetWidth(),
+    scene->GetScene()->GetHeight(),
     out.c_str(),
     1000.0 * seconds / frames);
   if (vtksys::SystemTools::FileExists(folder + "/animation.mp4", true))
@@ -174,7 +148,7 @@ namespace
 void Animate(const std::string& scenePath, int frames, const std::string& out)
 {
   auto scene = ReadScene(scenePath);
-  if (scene->GetNumberOfKeyframes() < 2)
+  if (scene->GetScene()->GetNumberOfKeyframes() < 2)
   {
     Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
   }
@@ -254,10 +228,11 @@ void Lattice(const LatticeOptions& options)
   {
     Fail(options.Out + ": the sampled cage is refused: " + why);
   }
-
-  scene->SetCage(cage);
-  scene->RemoveAllKeyframes();
-  WriteScene(scene, options.Out);
+  if (!scene->ReplaceCage(cage))
+  {
+    Fail("");
+  }
+  WriteScene(scene->GetScene(), options.Out);
   double largest = 0.0;
   for (vtkIdType i = 0; i < cage->GetNumberOfPoints(); ++i)
   {

@@ -4,6 +4,7 @@
 #include "vtkBoxCoverageCheck.h"
 #include "vtkDeformationCage.h"
 #include "vtkImageData.h"
+#include "vtkLabelAccuracy.h"
 #include "vtkLabelPropagation.h"
 #include "vtkLightField.h"
 #include "vtkNew.h"
@@ -52,41 +53,23 @@ struct SplitOptions
 void ReportAccuracy(vtkLightField* split, const std::string& truthPath)
 {
   auto truth = ReadLightField(truthPath);
-  auto* expected = vtkUnsignedCharArray::SafeDownCast(truth->GetPass(vtkLightField::LABEL));
-  auto* found = vtkUnsignedCharArray::SafeDownCast(split->GetPass(vtkLightField::LABEL));
-  if (!expected || expected->GetNumberOfTuples() != found->GetNumberOfTuples())
+  vtkNew<vtkLabelAccuracy> accuracy;
+  const std::string refusal = accuracy->Compute(split, truth);
+  if (!refusal.empty())
   {
-    Fail(truthPath + ": " +
-      (expected ? "its Label pass has another size than the split light field's"
-                : "has no Label pass to compare with"));
-  }
-  vtkIdType object = 0, correct = 0;
-  std::vector<std::vector<vtkIdType>> confusion(256, std::vector<vtkIdType>(256, 0));
-  int labels = 0;
-  for (vtkIdType i = 0; i < expected->GetNumberOfTuples(); ++i)
-  {
-    const int e = expected->GetValue(i);
-    const int f = found->GetValue(i);
-    if (e == 0)
-    {
-      continue;
-    }
-    ++object;
-    correct += e == f ? 1 : 0;
-    ++confusion[e][f];
-    labels = std::max({ labels, e, f });
+    Fail(truthPath + ": " + refusal);
   }
   std::printf("accuracy on object pixels: %.2f %% (%lld of %lld)\n",
-    object ? 100.0 * correct / object : 0.0,
-    static_cast<long long>(correct),
-    static_cast<long long>(object));
+    accuracy->GetAccuracy(),
+    static_cast<long long>(accuracy->GetCorrectPixels()),
+    static_cast<long long>(accuracy->GetObjectPixels()));
   std::printf("confusion (rows: truth, columns: split; column 0 = unlabelled)\n");
-  for (int e = 1; e <= labels; ++e)
+  for (int e = 1; e <= accuracy->GetMaximumLabel(); ++e)
   {
     std::printf("  %3d:", e);
-    for (int f = 0; f <= labels; ++f)
+    for (int f = 0; f <= accuracy->GetMaximumLabel(); ++f)
     {
-      std::printf(" %9lld", static_cast<long long>(confusion[e][f]));
+      std::printf(" %9lld", static_cast<long long>(accuracy->GetConfusion(e, f)));
     }
     std::printf("\n");
   }

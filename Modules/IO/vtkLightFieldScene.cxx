@@ -576,6 +576,24 @@ bool vtkLightFieldScene::Read(const char* fileName)
 }
 
 //------------------------------------------------------------------------------
+std::string vtkLightFieldScene::CheckSettings()
+{
+  try
+  {
+    ValidateSettings(this->Internal->Camera,
+      this->Width,
+      this->Height,
+      this->Subdivision,
+      this->Internal->Keyframes);
+  }
+  catch (const FieldError& e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightFieldScene::Write(const char* fileName)
 {
   if (!fileName || !*fileName)
@@ -598,17 +616,10 @@ bool vtkLightFieldScene::Write(const char* fileName)
 bool vtkLightFieldScene::WriteFile(const char* fileName)
 {
   const std::string file = fileName;
-  try
+  const std::string problem = this->CheckSettings();
+  if (!problem.empty())
   {
-    ValidateSettings(this->Internal->Camera,
-      this->Width,
-      this->Height,
-      this->Subdivision,
-      this->Internal->Keyframes);
-  }
-  catch (const FieldError& e)
-  {
-    return this->Fail(file + ": " + e.what());
+    return this->Fail(file + ": " + problem);
   }
   Json document;
   document["format"] = "lfd-scene";

@@ -80,6 +80,14 @@ public:
   bool Write(const char* fileName);
 
   /**
+   * The checks Read() and Write() make on the view camera (lfd::CheckLookAt),
+   * the image size, the subdivision and the keyframe times: "" when they
+   * pass, else "field \"name\": problem" (the scene logic refuses a setting
+   * with it).
+   */
+  std::string CheckSettings();
+
+  /**
    * Resets everything to the defaults (no light field, no cage, no
    * keyframes, default camera and render settings).
    */
