@@ -13,4 +13,4 @@ from .lfdSegmentation import *  # noqa: F401,F403
 from .lfdDeformation import *  # noqa: F401,F403
 from .lfdRendering import *  # noqa: F401,F403
 from .lfdEvaluation import *  # noqa: F401,F403
-from .lfdLogic import *  # noqa: F401,F403
+from .lfdScene import *  # noqa: F401,F403

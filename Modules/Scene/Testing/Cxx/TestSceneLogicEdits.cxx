@@ -13,6 +13,7 @@
 #include "vtkIdList.h"
 #include "vtkLatticeCageFilter.h"
 #include "vtkLightFieldScene.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldSceneLogic.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -57,20 +58,16 @@ struct EventCounter
   }
 };
 
-/// The last error's own line, without VTK's "ERROR: In <file>, line <n>" and
-/// "<class> (<address>): " prefix.
-std::string LastError(lfdtest::ErrorCatcher* errors)
+/// The last error's own line.
+std::string LastError(vtkLightFieldErrorObserver* errors)
 {
-  std::string text = errors->Messages.empty() ? std::string() : errors->Messages.back();
-  const std::size_t line = text.find('\n');
-  const std::size_t own = text.find("): ", line == std::string::npos ? 0 : line);
-  text = own == std::string::npos ? text : text.substr(own + 3);
-  return text.substr(0, text.find_last_not_of('\n') + 1);
+  const int count = errors->GetNumberOfErrors();
+  return count > 0 ? std::string(errors->GetError(count - 1)) : std::string();
 }
 
 /// An edit that must be refused (`applied` false) with an error line
 /// holding every string of `mustContain`.
-void CheckRefused(lfdtest::ErrorCatcher* errors,
+void CheckRefused(vtkLightFieldErrorObserver* errors,
   const std::string& name,
   bool applied,
   const std::vector<std::string>& mustContain)
@@ -106,7 +103,7 @@ void TestEvents(Logic* logic)
   logic->Undo();
 }
 
-void TestRefusedFold(Logic* logic, lfdtest::ErrorCatcher* errors)
+void TestRefusedFold(Logic* logic, vtkLightFieldErrorObserver* errors)
 {
   EventCounter events(logic);
   const int commands = logic->GetNumberOfCommands();
@@ -218,7 +215,7 @@ void TestNames(Logic* logic)
     "ClearUndo() empties the stack");
 }
 
-void TestRefusedEdits(Logic* logic, lfdtest::ErrorCatcher* errors)
+void TestRefusedEdits(Logic* logic, vtkLightFieldErrorObserver* errors)
 {
   CheckRefused(errors,
     "an image size above the maximum",
@@ -326,7 +323,7 @@ void TestBuildsAndTime(Logic* logic)
 int TestSceneLogicEdits(int, char*[])
 {
   vtkNew<Logic> logic;
-  vtkNew<lfdtest::ErrorCatcher> errors;
+  vtkNew<vtkLightFieldErrorObserver> errors;
   errors->Observe(logic);
   const double bounds[6] = { 0.0, 10.0, 0.0, 1.0, 0.0, 1.0 };
   Check(logic->BuildCageFromSlabs(bounds, 10, 0, 1), "10 slabs along x");
@@ -344,7 +341,7 @@ int TestSceneLogicEdits(int, char*[])
   TestBuildsAndTime(logic);
 
   vtkNew<Logic> empty;
-  vtkNew<lfdtest::ErrorCatcher> loadErrors;
+  vtkNew<vtkLightFieldErrorObserver> loadErrors;
   loadErrors->Observe(empty);
   loadErrors->Observe(empty->GetScene());
   CheckRefused(loadErrors,

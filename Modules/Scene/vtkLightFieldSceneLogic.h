@@ -54,7 +54,7 @@
 #ifndef vtkLightFieldSceneLogic_h
 #define vtkLightFieldSceneLogic_h
 
-#include "lfdLogicModule.h" // For export macro
+#include "lfdSceneModule.h" // For export macro
 #include "vtkCommand.h"     // For vtkCommand::UserEvent
 #include "vtkObject.h"
 
@@ -74,7 +74,7 @@ class vtkLightFieldScene;
 class vtkPoints;
 class vtkPolyData;
 
-class LFDLOGIC_EXPORT vtkLightFieldSceneLogic : public vtkObject
+class LFDSCENE_EXPORT vtkLightFieldSceneLogic : public vtkObject
 {
 public:
   static vtkLightFieldSceneLogic* New();
