@@ -215,6 +215,9 @@ std::vector<double> SampleRing(const double lens[5],
       cameras[v].Lens = lfd::LensDistortion();
     }
   }
+  // The lenses modified the rig: fit it again (a fit is kept until the rig changes).
+  const bool fitted = rig->FitCylinder();
+  Expect(fitted, "the distorted ring fits a cylinder", fitted);
   const lfd::RingLayout layout = rig->GetRingLayout();
   lfd::LightFieldSampler sampler;
   sampler.Layout = &layout;
