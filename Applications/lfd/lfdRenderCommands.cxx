@@ -233,14 +233,6 @@ void Lattice(const LatticeOptions& options)
     Fail("");
   }
   WriteScene(scene->GetScene(), options.Out);
-  double largest = 0.0;
-  for (vtkIdType i = 0; i < cage->GetNumberOfPoints(); ++i)
-  {
-    double rest[3], deformed[3];
-    cage->GetRestPoint(i, rest);
-    cage->GetDeformedPoint(i, deformed);
-    largest = std::max(largest, std::sqrt(vtkMath::Distance2BetweenPoints(rest, deformed)));
-  }
   std::printf("wrote %s: %lld boxes on %lld points (lattice %d x %d x %d, subdivision %d), "
               "largest corner move %.4g\n",
     options.Out.c_str(),
@@ -250,7 +242,7 @@ void Lattice(const LatticeOptions& options)
     options.Dimensions[1],
     options.Dimensions[2],
     options.Subdivision,
-    largest);
+    cage->GetLargestDisplacement());
 }
 
 }

@@ -8,6 +8,7 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkLightField.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 #include <sstream>
 #include <vector>
@@ -396,23 +398,27 @@ void vtkDeformationCage::SetPointsToRest()
 //------------------------------------------------------------------------------
 bool vtkDeformationCage::IsDeformed()
 {
+  return this->GetLargestDisplacement() > 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkDeformationCage::GetLargestDisplacement()
+{
   vtkDataArray* positions = this->GetRestPositions();
-  const vtkIdType count = this->GetNumberOfPoints();
   if (!positions)
   {
-    return false;
+    return 0.0;
   }
-  for (vtkIdType i = 0; i < count && i < positions->GetNumberOfTuples(); ++i)
+  const vtkIdType count = std::min(this->GetNumberOfPoints(), positions->GetNumberOfTuples());
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < count; ++i)
   {
     double rest[3], deformed[3];
     positions->GetTuple(i, rest);
     this->GetPoint(i, deformed);
-    if (rest[0] != deformed[0] || rest[1] != deformed[1] || rest[2] != deformed[2])
-    {
-      return true;
-    }
+    largest = std::max(largest, std::sqrt(vtkMath::Distance2BetweenPoints(rest, deformed)));
   }
-  return false;
+  return largest;
 }
 
 //------------------------------------------------------------------------------

@@ -136,6 +136,12 @@ public:
   bool IsDeformed();
 
   /**
+   * The largest distance between a point's deformed and rest positions (0 for
+   * a cage at rest): how far a deformation moves the corners.
+   */
+  double GetLargestDisplacement();
+
+  /**
    * Checks that the cage can be rendered and used as a map. Returns "" when
    * it can, else one line naming the first bad box (index and label). The
    * cage holds no error state and reports nothing: the caller does. Refused:

@@ -11,6 +11,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <cmath>
 #include <cstdlib>
 
 namespace
@@ -58,13 +59,17 @@ bool TestSharedCorners()
     "box 1 rest corners in VTK order");
   ok &= Check(!cage->GetRestCorners(2, rest) && !cage->GetDeformedCorners(-1, deformed),
     "no corners for a missing box");
-  ok &= Check(!cage->IsDeformed(), "a new cage is at rest");
+  ok &=
+    Check(!cage->IsDeformed() && cage->GetLargestDisplacement() == 0.0, "a new cage is at rest");
   ok &= lfdtest::CheckValid(cage, "two boxes at rest validate");
 
   // Move the shared corner a[6] = (1,1,1): both boxes see it.
   const double moved[3] = { 1.25, 1.5, 1.75 };
   cage->SetDeformedPoint(a[6], moved);
   ok &= Check(cage->IsDeformed(), "moving a point deforms the cage");
+  // (0.25, 0.5, 0.75) from its rest position: sqrt(0.875).
+  ok &= Check(std::abs(cage->GetLargestDisplacement() - std::sqrt(0.875)) < 1e-15,
+    "the largest displacement is the moved corner's");
   double deformedFirst[24];
   cage->GetDeformedCorners(0, deformedFirst);
   const bool inFirst =
