@@ -6,14 +6,15 @@
 // cage at a time of the keyframes.
 #include "lfdIOTestUtilities.h"
 #include "lfdPartCageTestMeshes.h"
+#include "lfdSceneTestUtilities.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkDeformationCage.h"
 #include "vtkIdList.h"
 #include "vtkLatticeCageFilter.h"
-#include "vtkLightFieldScene.h"
 #include "vtkLightFieldErrorObserver.h"
+#include "vtkLightFieldScene.h"
 #include "vtkLightFieldSceneLogic.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -23,40 +24,11 @@
 using lfdtest::Check;
 using lfdtest::CheckEqual;
 using lfdtest::CheckFailure;
+using lfdtest::EventCounter;
 
 namespace
 {
 using Logic = vtkLightFieldSceneLogic;
-
-/// Counts the events of the logic by id since the last Reset().
-struct EventCounter
-{
-  std::map<unsigned long, int> Counts;
-  vtkNew<vtkCallbackCommand> Callback;
-
-  vtkObject* Observed;
-
-  explicit EventCounter(vtkObject* object)
-    : Observed(object)
-  {
-    this->Callback->SetClientData(this);
-    this->Callback->SetCallback([](vtkObject*, unsigned long event, void* self, void*)
-      { ++static_cast<EventCounter*>(self)->Counts[event]; });
-    object->AddObserver(vtkCommand::AnyEvent, this->Callback);
-  }
-  ~EventCounter() { this->Observed->RemoveObserver(this->Callback); }
-  void Reset() { this->Counts.clear(); }
-  /// "cage keyframes settings modified stack error" counts, for one check.
-  std::string Summary()
-  {
-    return std::to_string(this->Counts[Logic::CageModifiedEvent]) + " " +
-      std::to_string(this->Counts[Logic::KeyframesModifiedEvent]) + " " +
-      std::to_string(this->Counts[Logic::SettingsModifiedEvent]) + " " +
-      std::to_string(this->Counts[vtkCommand::ModifiedEvent]) + " " +
-      std::to_string(this->Counts[Logic::UndoStackModifiedEvent]) + " " +
-      std::to_string(this->Counts[vtkCommand::ErrorEvent]);
-  }
-};
 
 /// The last error's own line.
 std::string LastError(vtkLightFieldErrorObserver* errors)

@@ -4,13 +4,14 @@
 // all of them gives the edited scene byte for byte; each undo and redo
 // invokes one UndoStackModifiedEvent and the event of what it changed.
 #include "lfdIOTestUtilities.h"
+#include "lfdSceneTestUtilities.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkDeformationCage.h"
 #include "vtkIdList.h"
-#include "vtkLightFieldScene.h"
 #include "vtkLightFieldErrorObserver.h"
+#include "vtkLightFieldScene.h"
 #include "vtkLightFieldSceneLogic.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -20,25 +21,10 @@
 
 using lfdtest::Check;
 using lfdtest::CheckEqual;
+using lfdtest::EventCounter;
 
 namespace
 {
-/// Counts the events of the logic by id.
-struct EventCounter
-{
-  std::map<unsigned long, int> Counts;
-  vtkNew<vtkCallbackCommand> Callback;
-
-  explicit EventCounter(vtkObject* object)
-  {
-    this->Callback->SetClientData(this);
-    this->Callback->SetCallback([](vtkObject*, unsigned long event, void* self, void*)
-      { ++static_cast<EventCounter*>(self)->Counts[event]; });
-    object->AddObserver(vtkCommand::AnyEvent, this->Callback);
-  }
-  int operator[](unsigned long event) { return this->Counts[event]; }
-};
-
 /// One random edit; returns whether the logic applied it.
 bool RandomEdit(vtkLightFieldSceneLogic* logic, std::mt19937& random, int& added)
 {
