@@ -239,13 +239,22 @@ struct ViewStack
 /// One of the (up to) 16 rays a light-field ray is interpolated from.
 struct RaySample
 {
-  glm::dvec3 Color{ 0.0 };
-  double Weight = 0.0;
-  int Label = 0;
+  glm::dvec3 Color;
+  double Weight;
+  int Label;
 };
 
+/**
+ * The samples of one light-field ray. Only the first Count are meaningful:
+ * a lookup writes every field of each sample it adds, so the array is left
+ * uninitialised (zeroing 16 samples per ray cost about 15% of an undeformed
+ * frame).
+ */
 struct RaySamples
 {
+  // User-provided, so that value-initialisation (std::optional::emplace())
+  // does not zero the array either.
+  RaySamples() noexcept {}
   RaySample Samples[16];
   int Count = 0;
 };
