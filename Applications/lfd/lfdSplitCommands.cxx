@@ -21,8 +21,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lfd::cli
@@ -192,38 +192,36 @@ void SplitCheck(const SplitOptions& options)
     Fail(options.In +
       ": has no Label pass to check; split it first (lfd split projector|scanline|propagate)");
   }
-  // Every box's label must have pixels and every label value a box: a
-  // mismatch (a scene written for another split) is warned about per label.
-  std::set<int> boxLabels;
-  vtkNew<vtkDeformationCage> cage;
-  cage->InitializeFromGrid(scene->GetCage());
-  for (vtkIdType box = 0; box < cage->GetNumberOfBoxes(); ++box)
-  {
-    boxLabels.insert(cage->GetBoxLabel(box));
-  }
-  bool mismatch = false;
-  for (int label = 1; label < 256; ++label)
-  {
-    const bool boxed = boxLabels.count(label) > 0;
-    if (boxed != lightField->HasLabel(label))
-    {
-      mismatch = true;
-      lfd::PrintWarning(boxed
-          ? options.Scene + ": box label " + std::to_string(label) + " has no pixels in " +
-            options.In
-          : options.In + ": label " + std::to_string(label) + " has no box in " + options.Scene);
-    }
-  }
-  if (mismatch)
-  {
-    Fail("the labels of " + options.Scene + " and " + options.In +
-      " do not match (see the warnings); split again or fix the boxes' labels");
-  }
   vtkNew<vtkBoxCoverageCheck> check;
   check->SetInputData(0, lightField);
   check->SetCageData(scene->GetCage());
   check->SetThreshold(options.Threshold >= 0.0 ? options.Threshold : 0.95);
   Run(check.Get(), "box coverage check");
+  // Every box's label must have pixels and every label value a box: a
+  // mismatch (a scene written for another split) is warned about per label.
+  const std::vector<int> unboxed = check->GetLabelsWithoutBox();
+  const std::vector<int> empty = check->GetBoxLabelsWithoutPixels();
+  std::vector<std::pair<int, bool>> mismatches; // (label, it is a box's), by label
+  for (int label : unboxed)
+  {
+    mismatches.emplace_back(label, false);
+  }
+  for (int label : empty)
+  {
+    mismatches.emplace_back(label, true);
+  }
+  std::sort(mismatches.begin(), mismatches.end());
+  for (const auto& [label, boxed] : mismatches)
+  {
+    lfd::PrintWarning(boxed
+        ? options.Scene + ": box label " + std::to_string(label) + " has no pixels in " + options.In
+        : options.In + ": label " + std::to_string(label) + " has no box in " + options.Scene);
+  }
+  if (!mismatches.empty())
+  {
+    Fail("the labels of " + options.Scene + " and " + options.In +
+      " do not match (see the warnings); split again or fix the boxes' labels");
+  }
   std::printf("label  worst fraction  worst view  views below %.3f\n", check->GetThreshold());
   for (int i = 0; i < check->GetNumberOfLabels(); ++i)
   {

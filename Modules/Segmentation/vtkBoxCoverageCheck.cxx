@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 vtkStandardNewMacro(vtkBoxCoverageCheck);
 
@@ -112,6 +113,8 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
   vtkInformationVector* outputVector)
 {
   this->Labels.clear();
+  this->LabelsWithoutBox.clear();
+  this->BoxLabelsWithoutPixels.clear();
   vtkLightField* lightField = vtkLightField::GetData(inputVector[0]);
   vtkUnstructuredGrid* grid = vtkUnstructuredGrid::GetData(inputVector[1]);
   vtkTable* output = vtkTable::GetData(outputVector);
@@ -222,9 +225,25 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
   output->AddColumn(pixelColumn);
   output->AddColumn(insideColumn);
   output->AddColumn(fractionColumn);
+  std::set<int> boxLabels;
+  for (vtkIdType box = 0; box < cage->GetNumberOfBoxes(); ++box)
+  {
+    boxLabels.insert(cage->GetBoxLabel(box));
+  }
   for (const auto& entry : summaries)
   {
     this->Labels.push_back(entry.second);
+    if (!boxLabels.count(entry.first))
+    {
+      this->LabelsWithoutBox.push_back(entry.first);
+    }
+  }
+  for (int label : boxLabels)
+  {
+    if (!summaries.count(label))
+    {
+      this->BoxLabelsWithoutPixels.push_back(label);
+    }
   }
   return 1;
 }

@@ -77,6 +77,17 @@ public:
   bool GetPassed() const;
   ///@}
 
+  ///@{
+  /**
+   * Labels of the last update that do not match between the light field and
+   * the cage, in increasing order: labels with pixels but no box (they cover
+   * nothing: fraction 0), and labels of boxes that have no pixel in any view
+   * (a scene written for another split). Both empty when they match.
+   */
+  std::vector<int> GetLabelsWithoutBox() const { return this->LabelsWithoutBox; }
+  std::vector<int> GetBoxLabelsWithoutPixels() const { return this->BoxLabelsWithoutPixels; }
+  ///@}
+
 protected:
   vtkBoxCoverageCheck();
   ~vtkBoxCoverageCheck() override;
@@ -95,6 +106,8 @@ protected:
     std::vector<int> Below;
   };
   std::vector<Summary> Labels;
+  std::vector<int> LabelsWithoutBox;
+  std::vector<int> BoxLabelsWithoutPixels;
 
 private:
   vtkBoxCoverageCheck(const vtkBoxCoverageCheck&) = delete;

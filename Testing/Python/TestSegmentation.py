@@ -270,6 +270,9 @@ check.Update()
 worst = [round(check.GetWorstFraction(i), 4) for i in range(check.GetNumberOfLabels())]
 t.check(check.GetNumberOfLabels() == 3 and check.GetPassed() and min(worst) > 0.97,
         "projector-split fish inside its part boxes (worst fraction per label)", worst)
+t.check(list(check.GetLabelsWithoutBox()) == [] and list(check.GetBoxLabelsWithoutPixels()) == [],
+        "the fish's labels and its boxes' labels match",
+        (check.GetLabelsWithoutBox(), check.GetBoxLabelsWithoutPixels()))
 table = check.GetOutput()
 split_labels = labels_of(projector_fish)
 pairs = sum(len(set(np.unique(view).tolist()) - {0}) for view in split_labels)
@@ -285,6 +288,15 @@ check.SetCageData(relabelled)
 check.Update()
 t.check(not check.GetPassed() and check.GetWorstFraction(0) == 0.0,
         "a label without a box fails the check", check.GetWorstFraction(0))
+t.check(list(check.GetLabelsWithoutBox()) == [1] and list(check.GetBoxLabelsWithoutPixels()) == [],
+        "label 1 has pixels but no box (its boxes claim label 3)",
+        (check.GetLabelsWithoutBox(), check.GetBoxLabelsWithoutPixels()))
+relabelled_labels = relabelled.GetCellData().GetArray("Label")
+relabelled_labels.SetValue(0, 7)  # a box of a label no pixel has
+relabelled.Modified()
+check.Update()
+t.check(7 in list(check.GetBoxLabelsWithoutPixels()),
+        "a box label without pixels is listed", check.GetBoxLabelsWithoutPixels())
 
 # 5. The projector-split fish deforms like the synthetic-label one.
 pose = t.pose(parts.GetOutputPort(), lfd.vtkCagePoseFilter.SWIM, 20.0, (0, 0, 1), 1.0)
