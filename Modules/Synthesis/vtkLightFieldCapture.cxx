@@ -1014,7 +1014,8 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
       return 0;
     }
   }
-  const PassBuffers passes = SetUpOutput(this, output, rig, project ? projectors.GetPointer() : nullptr, masks);
+  const PassBuffers passes =
+    SetUpOutput(this, output, rig, project ? projectors.GetPointer() : nullptr, masks);
 
   vtkNew<vtkPolyData> mesh;
   mesh->ShallowCopy(input);

@@ -131,8 +131,9 @@ int TestLightFieldCaptureRig(int, char*[])
   capture->Modified();
   capture->Update();
   const bool lensRefused = lensErrors->HasError() &&
-    std::string(lensErrors->GetErrorMessage()).find("The rig has lens distortion; vtkLightFieldCapture renders "
-                                       "ideal pinhole views only") != std::string::npos;
+    std::string(lensErrors->GetErrorMessage())
+        .find("The rig has lens distortion; vtkLightFieldCapture renders "
+              "ideal pinhole views only") != std::string::npos;
   lfdtest::Check(lensRefused, "rig with lens distortion refused", lensRefused, 1);
 
   // An empty mesh is refused with an error that says so.
