@@ -86,6 +86,13 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   return mesh;
 }
 
+namespace
+{
+/**
+ * A scene is a JSON file: a folder (a light-field dataset given where its
+ * scene is expected, a common slip) or a device is refused with a line that
+ * says what was expected.
+ */
 void ExpectSceneFile(const std::string& path)
 {
   namespace fs = std::filesystem;
@@ -105,6 +112,7 @@ void ExpectSceneFile(const std::string& path)
   {
     Fail(path + ": is not a regular file; a scene file (scene.json) was expected");
   }
+}
 }
 
 vtkSmartPointer<vtkLightFieldSceneLogic> ReadScene(const std::string& path)

@@ -353,13 +353,6 @@ double Seconds(double start);
 
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
 
-/**
- * A scene is a JSON file: a folder (a light-field dataset given where its
- * scene is expected, a common slip) or a device is refused with a line that
- * says what was expected.
- */
-void ExpectSceneFile(const std::string& path);
-
 /// A scene file read into the scene logic, through which every command
 /// uses it.
 vtkSmartPointer<vtkLightFieldSceneLogic> ReadScene(const std::string& path);
