@@ -12,7 +12,8 @@ build=${LFD_BUILD_DIR:-$here/build}
 
 packages=(
   cmake ninja-build g++ pkg-config
-  libvtk9-dev python3-vtk9 python3-numpy
+  libvtk9-dev libvtk9-qt-dev python3-vtk9 python3-numpy   # -qt-: LightField Studio (Qt 5)
+  ffmpeg                   # MP4 export of animations (lfd animate, the Studio)
   libopenimageio-dev openimageio-tools
   libglm-dev nlohmann-json3-dev libcli11-dev libopencv-dev
   xvfb xauth libx11-dev    # lfd asks the X server before opening an OpenGL window
