@@ -27,10 +27,8 @@
  * - behind another box: the segment from the eye (the camera position, or
  *   for a parallel projection the point moved back along the direction of
  *   projection) to the point crosses a deformed face of a box that does not
- *   use that point. Faces are bilinear patches; the test splits each into
- *   the two triangles of its corners (0, 1, 2) and (0, 2, 3) in VTK's
- *   hexahedron face order, which differs from the patch only for faces far
- *   from planar;
+ *   use that point. Faces are the exact bilinear patches of the trilinear
+ *   boxes (lfd::IntersectBilinearPatch, the renderer's ray-face kernel);
  * - behind the object: when an occluder depth image is set
  *   (SetOccluderDepth(), e.g. the depth the light-field mapper wrote), the
  *   point's z-buffer depth exceeds the occluder's depth at its pixel by more
@@ -128,9 +126,9 @@ public:
    */
   enum PivotModeType
   {
-    PivotCentroid = 0, ///< the centroid of the selected points' positions
-    PivotPoint,        ///< PivotPoint
-    PivotBoxCentre     ///< the mean of the 8 deformed corners of PivotBox
+    PivotAtCentroid = 0, ///< the centroid of the selected points' positions
+    PivotAtPoint,        ///< PivotPoint
+    PivotAtBoxCentre     ///< the mean of the 8 deformed corners of PivotBox
   };
 
   /**
@@ -305,18 +303,18 @@ public:
 
   ///@{
   /**
-   * The pivot of rotations and scalings. Default PivotCentroid.
+   * The pivot of rotations and scalings. Default PivotAtCentroid.
    */
-  vtkSetClampMacro(PivotMode, int, PivotCentroid, PivotBoxCentre);
+  vtkSetClampMacro(PivotMode, int, PivotAtCentroid, PivotAtBoxCentre);
   vtkGetMacro(PivotMode, int);
-  void SetPivotModeToCentroid() { this->SetPivotMode(PivotCentroid); }
-  void SetPivotModeToPoint() { this->SetPivotMode(PivotPoint); }
-  void SetPivotModeToBoxCentre() { this->SetPivotMode(PivotBoxCentre); }
+  void SetPivotModeToCentroid() { this->SetPivotMode(PivotAtCentroid); }
+  void SetPivotModeToPoint() { this->SetPivotMode(PivotAtPoint); }
+  void SetPivotModeToBoxCentre() { this->SetPivotMode(PivotAtBoxCentre); }
   ///@}
 
   ///@{
   /**
-   * The pivot for PivotPoint mode (world coordinates). Default (0, 0, 0).
+   * The pivot for PivotAtPoint mode (world coordinates). Default (0, 0, 0).
    */
   vtkSetVector3Macro(PivotPoint, double);
   vtkGetVector3Macro(PivotPoint, double);
@@ -324,7 +322,7 @@ public:
 
   ///@{
   /**
-   * The box whose centre is the pivot in PivotBoxCentre mode; -1 (default)
+   * The box whose centre is the pivot in PivotAtBoxCentre mode; -1 (default)
    * means the box using the most selected points (the lowest index on
    * ties). SelectBox() and SelectFace() set it.
    */
@@ -334,7 +332,7 @@ public:
 
   /**
    * The current pivot (see PivotMode); false when it is undefined (no
-   * selection for PivotCentroid, no box for PivotBoxCentre).
+   * selection for PivotAtCentroid, no box for PivotAtBoxCentre).
    */
   bool GetPivot(double pivot[3]);
 
@@ -490,7 +488,7 @@ protected:
   double PickTolerance = 8.0;
   double OccluderTolerance = 1e-4;
   vtkIdType HoverPointId = -1;
-  int PivotMode = PivotCentroid;
+  int PivotMode = PivotAtCentroid;
   double PivotPoint[3] = { 0.0, 0.0, 0.0 };
   vtkIdType PivotBox = -1;
   int Constraint = ConstraintNone;
@@ -499,6 +497,20 @@ protected:
 private:
   vtkCageRepresentation(const vtkCageRepresentation&) = delete;
   void operator=(const vtkCageRepresentation&) = delete;
+
+  // Reads the cage into the handles when it changed outside an interaction.
+  void SyncFromCage(bool force);
+  // Moves the points of Internals->Moving to Internals->Proposed: the
+  // proposal, and with ApplyToCage the validated (or clamped) cage points.
+  bool Propose(bool clamp);
+  // One API edit of Internals->Moving to Internals->Proposed, bracketed by
+  // the interaction events.
+  bool RunEdit();
+  bool SetSelection(const vtkIdType* ids, vtkIdType count, bool extend);
+  bool CheckBoxFace(vtkIdType box, int face);
+  void ComputeTransform(double x, double y);
+  void UpdateGeometry();
+  vtkUnsignedCharArray* GetUsedPalette();
 
   class vtkInternals;
   vtkInternals* Internals;
