@@ -18,6 +18,7 @@
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <map>
