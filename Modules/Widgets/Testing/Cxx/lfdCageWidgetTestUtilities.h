@@ -71,6 +71,21 @@ inline void MakeGridCage(vtkDeformationCage* cage,
   }
 }
 
+/// Appends an axis-aligned box from `lo` to `hi` with 8 new points.
+inline void AddBoxAt(vtkDeformationCage* cage, const double lo[3], const double hi[3], int label)
+{
+  vtkIdType c[8];
+  for (int k = 0; k < 8; ++k)
+  {
+    // VTK hexahedron order: bottom face counter-clockwise, then the top.
+    const int i = (k % 4 == 1 || k % 4 == 2) ? 1 : 0;
+    const int j = (k % 4 >= 2) ? 1 : 0;
+    const double p[3] = { i ? hi[0] : lo[0], j ? hi[1] : lo[1], k >= 4 ? hi[2] : lo[2] };
+    c[k] = cage->AddPoint(p);
+  }
+  cage->AddBox(c, label);
+}
+
 /// A 400 x 400 window with a cage widget (enabled) on `cage`, a trackball
 /// style and a camera at `position` looking at `focal`.
 struct WidgetScene
