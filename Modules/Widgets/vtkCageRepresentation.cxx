@@ -136,7 +136,8 @@ public:
   std::vector<int> Labels;
   std::vector<std::vector<vtkIdType>> PointBoxes;
   std::vector<char> Selected;
-  double Diagonal = 1.0;
+  double Diagonal = 1.0;    // of the rest cage's bounds: tolerances
+  double BoxDiagonal = 1.0; // mean over the rest boxes: the handle size
   vtkMTimeType SyncTime = 0;
   bool Dirty = true;
 
@@ -370,6 +371,19 @@ void vtkCageRepresentation::SyncFromCage(bool force)
       d2 += (range[1] - range[0]) * (range[1] - range[0]);
     }
     in.Diagonal = d2 > 0.0 ? std::sqrt(d2) : 1.0;
+  }
+  in.BoxDiagonal = in.Diagonal;
+  if (rest && !in.Boxes.empty())
+  {
+    double sum = 0.0;
+    for (const auto& box : in.Boxes)
+    {
+      double a[3], b[3];
+      rest->GetTuple(box[0], a);
+      rest->GetTuple(box[6], b);
+      sum += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+    }
+    in.BoxDiagonal = sum > 0.0 ? sum / in.Boxes.size() : in.Diagonal;
   }
   if (static_cast<vtkIdType>(in.Selected.size()) != n)
   {
@@ -1372,7 +1386,7 @@ void vtkCageRepresentation::UpdateGeometry()
   in.Points->Modified();
   in.HandleColors->Modified();
   in.Handles->Modified();
-  in.Sphere->SetRadius(this->HandleSize * in.Diagonal);
+  in.Sphere->SetRadius(this->HandleSize * in.BoxDiagonal);
 
   // Each edge once, coloured by the label of the lowest box using it.
   vtkUnsignedCharArray* palette = this->GetUsedPalette();

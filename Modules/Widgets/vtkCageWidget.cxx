@@ -21,11 +21,11 @@ namespace
 enum WidgetStateType
 {
   Idle = 0,
-  Pressed,     // left button down on a handle, not moved yet
+  Pressed,      // left button down on a handle, not moved yet
   PressedEmpty, // left button down on empty space, not moved yet
-  Dragging,    // a handle drag in progress (interaction events fired)
-  RubberBand,  // drawing the selection rectangle
-  Transforming // a G / R / S transform follows the cursor
+  Dragging,     // a handle drag in progress (interaction events fired)
+  RubberBand,   // drawing the selection rectangle
+  Transforming  // a G / R / S transform follows the cursor
 };
 
 // A press and release closer than this (pixels) is a click.
