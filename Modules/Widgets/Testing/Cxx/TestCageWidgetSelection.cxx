@@ -43,7 +43,7 @@ int TestCageWidgetSelection(int, char*[])
   const double up[3] = { 0.0, 0.0, 1.0 };
   lfdtest::WidgetScene scene(cage, focal, position, up);
   vtkCageRepresentation* rep = scene.Representation;
-  lfdtest::EventCounter events(scene.Widget);
+  lfdtest::InteractionCounter events(scene.Widget);
   Check check;
 
   // Rubber band around the top face (points 4 5 6 7; box face 5).
