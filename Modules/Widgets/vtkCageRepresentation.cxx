@@ -13,6 +13,7 @@
 #include "vtkImageData.h"
 #include "vtkLabelPalette.h"
 #include "vtkLatticeCageFilter.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
