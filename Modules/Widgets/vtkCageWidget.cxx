@@ -374,8 +374,9 @@ void vtkCageWidget::KeyPressAction(vtkAbstractWidget* w)
     }
     else if (lower == 'a')
     {
-      const bool all = rep->GetNumberOfSelectedPoints() > 0 &&
-        rep->GetNumberOfSelectedPoints() == rep->GetCage()->GetNumberOfPoints();
+      const vtkIdType selected = rep->GetNumberOfSelectedPoints();
+      const bool all =
+        selected > 0 && rep->GetCage() && selected == rep->GetCage()->GetNumberOfPoints();
       all ? rep->ClearSelection() : rep->SelectAll();
       used = true;
     }

@@ -42,7 +42,7 @@ void Rest(vtkDeformationCage* cage, vtkIdType id, double p[3])
 
 void TestTransforms(vtkCageWidget* widget, vtkCageRepresentation* rep, vtkDeformationCage* cage)
 {
-  lfdtest::EventCounter events(widget);
+  lfdtest::InteractionCounter events(widget);
   rep->SelectBox(1);
   Check(lfdtest::SelectedIds(rep) == "1 2 4 5 7 8 10 11", "SelectBox(1)");
   const std::vector<vtkIdType> box1 = { 1, 2, 4, 5, 7, 8, 10, 11 };
@@ -226,5 +226,11 @@ int TestCageWidgetEdits(int, char*[])
   Check(lfdtest::SelectedIds(rep) == "0", "a bad box leaves the selection");
   Check(!rep->TwistFace(0, 6, 10.0), "face 6 is refused");
   Check(errors->GetNumberOfErrors() == 2, "one error per bad call");
+  std::ostringstream printed;
+  widget->Print(printed);
+  rep->Print(printed);
+  Check(printed.str().find("NumberOfSelectedPoints: 1") != std::string::npos &&
+      printed.str().find("KeyboardBindings: 1") != std::string::npos,
+    "PrintSelf");
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -43,7 +43,7 @@ int TestCageWidgetSelection(int, char*[])
   const double up[3] = { 0.0, 0.0, 1.0 };
   lfdtest::WidgetScene scene(cage, focal, position, up);
   vtkCageRepresentation* rep = scene.Representation;
-  lfdtest::EventCounter events(scene.Widget);
+  lfdtest::InteractionCounter events(scene.Widget);
   Check check;
 
   // Rubber band around the top face (points 4 5 6 7; box face 5).
@@ -126,6 +126,26 @@ int TestCageWidgetSelection(int, char*[])
     std::to_string(sy + 60) + " 0 0 27 1 Escape\n");
   check(Points(cage) == beforeRotate, "Esc cancels the rotation exactly");
   check(events.Summary() == "1 2 1", "R ... Esc is one interaction: " + events.Summary());
+
+  // G, shift + Z: the selection follows the cursor in the plane
+  // perpendicular to Z (the view-plane motion without its Z part); Enter.
+  const std::vector<double> beforeGrab = Points(cage);
+  double w0[3], w1[3];
+  scene.ToWorld(sx0, sy, pivot, w0);
+  scene.ToWorld(sx0 - 30, sy + 20, pivot, w1);
+  scene.Play(lfdtest::Key('g', sx0, sy) + lfdtest::Key('Z', sx0, sy, true) + "MouseMoveEvent " +
+    std::to_string(sx0 - 30) + " " + std::to_string(sy + 20) + " 0 0 0 0 0\n" + "KeyPressEvent " +
+    std::to_string(sx0 - 30) + " " + std::to_string(sy + 20) + " 0 0 13 1 Return\nCharEvent " +
+    std::to_string(sx0 - 30) + " " + std::to_string(sy + 20) + " 0 0 13 1 Return\n");
+  check(rep->GetConstraint() == vtkCageRepresentation::ConstraintPlaneZ,
+    "shift + Z constrains to the plane perpendicular to Z");
+  for (vtkIdType id = 0; id < 8; ++id)
+  {
+    const double expected[3] = { beforeGrab[3 * id] + w1[0] - w0[0],
+      beforeGrab[3 * id + 1] + w1[1] - w0[1],
+      beforeGrab[3 * id + 2] };
+    check(lfdtest::CheckPoint(cage, id, expected, 1e-9, "grabbed in the XY plane"), "grab");
+  }
 
   // A click on empty space clears; shift-clicks toggle handles.
   scene.Play(lfdtest::Click(5, 5));
