@@ -1,8 +1,10 @@
-// Shared by the Widgets view tests: checks that print their numbers, and the
-// fish captured with projectors and caged by part (the paper's Fig. 13
-// object), small enough for a test.
+// Shared by the Widgets view tests: the fish captured with projectors and
+// caged by part (the paper's Fig. 13 object), small enough for a test; the
+// checks that print their numbers are the Synthesis tests'.
 #ifndef lfdWidgetsTestUtilities_h
 #define lfdWidgetsTestUtilities_h
+
+#include "lfdSynthesisTestUtilities.h"
 
 #include "vtkDeformationCage.h"
 #include "vtkLabelPalette.h"
@@ -15,22 +17,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <iostream>
-
 namespace lfdtest
 {
-inline int& Failures()
-{
-  static int failures = 0;
-  return failures;
-}
-
-inline void Check(bool ok, const char* what, double value, double limit)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (limit " << limit << ")\n";
-  Failures() += ok ? 0 : 1;
-}
-
 struct Fish
 {
   vtkNew<vtkProceduralObjectSource> Source;
