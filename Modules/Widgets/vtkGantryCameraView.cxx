@@ -4,7 +4,6 @@
 #include "lfdPinholeCamera.h"
 #include "vtkActor.h"
 #include "vtkBoxCoverageCheck.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkCellArray.h"
@@ -144,8 +143,6 @@ const char* PassLabel(int pass)
 
 struct vtkGantryCameraView::Internals
 {
-  vtkSmartPointer<vtkRenderer> Renderer;
-  vtkSmartPointer<vtkLightField> LightField;
   vtkSmartPointer<vtkDeformationCage> Cage;
   vtkNew<vtkImageData> Image;
   vtkNew<vtkImageData> Outside;
@@ -155,8 +152,6 @@ struct vtkGantryCameraView::Internals
   vtkNew<vtkActor> BoxActor;
   vtkNew<vtkTextActor> Caption;
   vtkNew<vtkBoxCoverageCheck> Check;
-  vtkNew<vtkCallbackCommand> BeforeRender;
-  unsigned long BeforeRenderTag = 0;
   vtkIdType OutsidePixels = 0;
   bool CoverageValid = false;
   // Modification times the shown state was built from.
@@ -205,21 +200,21 @@ struct vtkGantryCameraView::Internals
     return time;
   }
 
-  vtkMTimeType LightFieldTime() const
+  static vtkMTimeType LightFieldTime(vtkLightField* lightField)
   {
-    if (!this->LightField)
+    if (!lightField)
     {
       return 0;
     }
-    vtkMTimeType time = this->LightField->GetMTime();
+    vtkMTimeType time = lightField->GetMTime();
     for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
     {
-      if (vtkDataArray* data = this->LightField->GetPass(pass))
+      if (vtkDataArray* data = lightField->GetPass(pass))
       {
         time = std::max(time, data->GetMTime());
       }
     }
-    return std::max(time, this->LightField->GetRig()->GetMTime());
+    return std::max(time, lightField->GetRig()->GetMTime());
   }
 };
 
@@ -227,67 +222,24 @@ struct vtkGantryCameraView::Internals
 vtkGantryCameraView::vtkGantryCameraView()
   : Internal(new Internals)
 {
-  this->Internal->BeforeRender->SetClientData(this);
-  this->Internal->BeforeRender->SetCallback([](vtkObject*, unsigned long, void* self, void*)
-    { static_cast<vtkGantryCameraView*>(self)->Refresh(); });
-}
-
-//------------------------------------------------------------------------------
-vtkGantryCameraView::~vtkGantryCameraView()
-{
-  this->SetRenderer(nullptr);
-}
-
-//------------------------------------------------------------------------------
-void vtkGantryCameraView::SetRenderer(vtkRenderer* renderer)
-{
   Internals& internal = *this->Internal;
-  if (internal.Renderer == renderer)
-  {
-    return;
-  }
   vtkProp* props[] = {
     internal.ImageActor, internal.OutsideActor, internal.BoxActor, internal.Caption
   };
-  if (internal.Renderer)
+  for (vtkProp* prop : props)
   {
-    internal.Renderer->RemoveObserver(internal.BeforeRenderTag);
-    for (vtkProp* prop : props)
-    {
-      internal.Renderer->RemoveViewProp(prop);
-    }
+    this->AddViewProp(prop);
   }
-  internal.Renderer = renderer;
-  if (renderer)
-  {
-    internal.BeforeRenderTag = renderer->AddObserver(vtkCommand::StartEvent, internal.BeforeRender);
-    for (vtkProp* prop : props)
-    {
-      renderer->AddViewProp(prop);
-    }
-  }
-  this->Modified();
 }
 
 //------------------------------------------------------------------------------
-vtkRenderer* vtkGantryCameraView::GetRenderer()
-{
-  return this->Internal->Renderer;
-}
+vtkGantryCameraView::~vtkGantryCameraView() = default;
 
 //------------------------------------------------------------------------------
-void vtkGantryCameraView::SetLightField(vtkLightField* lightField)
+void vtkGantryCameraView::LightFieldChanged()
 {
-  this->Internal->LightField = lightField;
-  this->Internal->Check->SetInputData(lightField);
+  this->Internal->Check->SetInputData(this->GetLightField());
   this->Internal->ImageTime = this->Internal->BoxTime = this->Internal->CoverageTime = 0;
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
-vtkLightField* vtkGantryCameraView::GetLightField()
-{
-  return this->Internal->LightField;
 }
 
 //------------------------------------------------------------------------------
@@ -347,7 +299,7 @@ void vtkGantryCameraView::SetShowOutside(bool show)
 void vtkGantryCameraView::Refresh()
 {
   Internals& internal = *this->Internal;
-  const vtkMTimeType lightField = internal.LightFieldTime();
+  const vtkMTimeType lightField = Internals::LightFieldTime(this->GetLightField());
   const vtkMTimeType cage = std::max(lightField, internal.CageTime());
   const vtkMTimeType self = this->GetMTime();
   if (internal.CoverageTime == 0 || internal.CoverageTime < cage)
@@ -373,22 +325,23 @@ void vtkGantryCameraView::UpdateCoverage()
 {
   Internals& internal = *this->Internal;
   internal.CoverageValid = false;
-  if (!internal.LightField || !internal.Cage || internal.Cage->GetNumberOfBoxes() == 0 ||
-    !internal.LightField->GetPass(vtkLightField::LABEL))
+  vtkLightField* lightField = this->GetLightField();
+  if (!lightField || !internal.Cage || internal.Cage->GetNumberOfBoxes() == 0 ||
+    !lightField->GetPass(vtkLightField::LABEL))
   {
     return;
   }
   internal.Check->Modified();
   internal.Check->Update();
-  internal.CoverageValid = internal.Check->GetOutsideMask()->GetNumberOfPoints() ==
-    internal.LightField->GetNumberOfPoints();
+  internal.CoverageValid =
+    internal.Check->GetOutsideMask()->GetNumberOfPoints() == lightField->GetNumberOfPoints();
 }
 
 //------------------------------------------------------------------------------
 void vtkGantryCameraView::UpdateImage()
 {
   Internals& internal = *this->Internal;
-  vtkLightField* lightField = internal.LightField;
+  vtkLightField* lightField = this->GetLightField();
   const int width = lightField ? lightField->GetWidth() : 0;
   const int height = lightField ? lightField->GetHeight() : 0;
   const int views = lightField ? lightField->GetNumberOfViews() : 0;
@@ -459,7 +412,7 @@ void vtkGantryCameraView::UpdateBoxes()
   vtkNew<vtkUnsignedCharArray> colours;
   colours->SetName("Colors");
   colours->SetNumberOfComponents(3);
-  vtkLightField* lightField = internal.LightField;
+  vtkLightField* lightField = this->GetLightField();
   vtkDeformationCage* cage = internal.Cage;
   const int views = lightField ? lightField->GetRig()->GetNumberOfViews() : 0;
   if (cage && views > 0 && lightField->GetHeight() > 0)
@@ -518,22 +471,23 @@ void vtkGantryCameraView::UpdateBoxes()
 void vtkGantryCameraView::ResetCamera()
 {
   Internals& internal = *this->Internal;
-  if (!internal.Renderer)
+  vtkRenderer* renderer = this->GetRenderer();
+  if (!renderer)
   {
     return;
   }
   this->Refresh();
   const int* dims = internal.Image->GetDimensions();
-  vtkCamera* camera = internal.Renderer->GetActiveCamera();
+  vtkCamera* camera = renderer->GetActiveCamera();
   const double cx = 0.5 * (dims[0] - 1), cy = 0.5 * (dims[1] - 1);
   camera->ParallelProjectionOn();
   camera->SetFocalPoint(cx, cy, 0.0);
   camera->SetPosition(cx, cy, 10.0 * std::max(dims[0], dims[1]));
   camera->SetViewUp(0.0, 1.0, 0.0);
   // The whole image in the viewport, whatever its aspect.
-  const double aspect = internal.Renderer->GetTiledAspectRatio();
+  const double aspect = renderer->GetTiledAspectRatio();
   camera->SetParallelScale(0.5 * std::max<double>(dims[1], dims[0] / std::max(aspect, 1e-6)));
-  internal.Renderer->ResetCameraClippingRange();
+  renderer->ResetCameraClippingRange();
 }
 
 //------------------------------------------------------------------------------
@@ -546,7 +500,7 @@ double vtkGantryCameraView::GetCoverage()
     return -1.0;
   }
   return internal.Check->GetViewCoverage(
-    std::max(0, std::min(this->View, internal.LightField->GetNumberOfViews() - 1)));
+    std::max(0, std::min(this->View, this->GetLightField()->GetNumberOfViews() - 1)));
 }
 
 //------------------------------------------------------------------------------

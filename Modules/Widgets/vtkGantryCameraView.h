@@ -26,7 +26,8 @@
  * light field does not hold is an error (the image is then black).
  *
  * The view refreshes itself before each render of its renderer when the
- * light field, the cage's rest boxes or the palette changed.
+ * light field, the cage's rest boxes or the palette changed. It handles no
+ * interactor events.
  *
  * @sa vtkBoxCoverageCheck vtkRigView vtkProjectorView
  */
@@ -34,8 +35,8 @@
 #define vtkGantryCameraView_h
 
 #include "lfdWidgetsModule.h" // For export macro
-#include "vtkLightField.h"    // For vtkLightField::NUMBER_OF_PASSES
-#include "vtkObject.h"
+#include "vtkCalibrationView.h"
+#include "vtkLightField.h" // For vtkLightField::NUMBER_OF_PASSES
 
 #include <memory> // For std::unique_ptr
 
@@ -43,13 +44,12 @@ class vtkBoxCoverageCheck;
 class vtkDeformationCage;
 class vtkImageData;
 class vtkPolyData;
-class vtkRenderer;
 
-class LFDWIDGETS_EXPORT vtkGantryCameraView : public vtkObject
+class LFDWIDGETS_EXPORT vtkGantryCameraView : public vtkCalibrationView
 {
 public:
   static vtkGantryCameraView* New();
-  vtkTypeMacro(vtkGantryCameraView, vtkObject);
+  vtkTypeMacro(vtkGantryCameraView, vtkCalibrationView);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -59,23 +59,6 @@ public:
   {
     NORMALISED = vtkLightField::NUMBER_OF_PASSES
   };
-
-  ///@{
-  /**
-   * The renderer this view draws into (its props are added to it, removed
-   * from the previous one).
-   */
-  void SetRenderer(vtkRenderer* renderer);
-  vtkRenderer* GetRenderer();
-  ///@}
-
-  ///@{
-  /**
-   * The light field (its passes, rig and palette).
-   */
-  void SetLightField(vtkLightField* lightField);
-  vtkLightField* GetLightField();
-  ///@}
 
   ///@{
   /**
@@ -127,12 +110,12 @@ public:
    * Rebuilds what changed (image, boxes, coverage); called before each
    * render of the renderer.
    */
-  void Refresh();
+  void Refresh() override;
 
   /**
    * Fits the image into the renderer's viewport (parallel projection).
    */
-  void ResetCamera();
+  void ResetCamera() override;
 
   /**
    * The coverage of the shown view (vtkBoxCoverageCheck::GetViewCoverage),
@@ -161,6 +144,8 @@ protected:
   vtkGantryCameraView();
   ~vtkGantryCameraView() override;
 
+  void LightFieldChanged() override;
+  bool HandleEvent(unsigned long, int, int) override { return false; }
   void UpdateImage();
   void UpdateBoxes();
   void UpdateCoverage();

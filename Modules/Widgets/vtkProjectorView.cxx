@@ -1,7 +1,6 @@
 #include "vtkProjectorView.h"
 
 #include "lfdPinholeCamera.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkImageActor.h"
@@ -15,7 +14,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
@@ -58,8 +56,7 @@ void CopySlice(vtkImageData* stack, int slice, vtkImageData* image)
 
 struct vtkProjectorView::Internals
 {
-  vtkSmartPointer<vtkRenderer> Renderer;
-  vtkSmartPointer<vtkLightField> LightField;
+  vtkLightField* LightField = nullptr; // the view's, for the helpers below
   vtkSmartPointer<vtkPolyData> Mesh;
   vtkSmartPointer<vtkImageData> Texture;
   vtkNew<vtkImageData> Shown;
@@ -69,8 +66,6 @@ struct vtkProjectorView::Internals
   vtkNew<vtkImageActor> MaskActor;
   vtkNew<vtkImageActor> SimulatedActor;
   vtkNew<vtkLightFieldCapture> Capture;
-  vtkNew<vtkCallbackCommand> BeforeRender;
-  unsigned long BeforeRenderTag = 0;
   bool Painting = false;
   double Last[2] = { 0.0, 0.0 }; // last brush position, image pixels
   vtkMTimeType ShownTime = 0;    // the masks' time when shown; 0 = stale
@@ -110,63 +105,21 @@ struct vtkProjectorView::Internals
 vtkProjectorView::vtkProjectorView()
   : Internal(new Internals)
 {
-  this->EventCallbackCommand->SetCallback(vtkProjectorView::ProcessEvents);
-  // Ahead of the interactor style, as VTK's widgets are.
-  this->Priority = 0.5;
-  this->Internal->BeforeRender->SetClientData(this);
-  this->Internal->BeforeRender->SetCallback([](vtkObject*, unsigned long, void* self, void*)
-    { static_cast<vtkProjectorView*>(self)->Refresh(); });
+  this->AddViewProp(this->Internal->MaskActor);
+  this->AddViewProp(this->Internal->SimulatedActor);
+  this->SetHandledEvents({ vtkCommand::LeftButtonPressEvent,
+    vtkCommand::MouseMoveEvent,
+    vtkCommand::LeftButtonReleaseEvent });
 }
 
 //------------------------------------------------------------------------------
-vtkProjectorView::~vtkProjectorView()
-{
-  this->SetRenderer(nullptr);
-}
+vtkProjectorView::~vtkProjectorView() = default;
 
 //------------------------------------------------------------------------------
-void vtkProjectorView::SetRenderer(vtkRenderer* renderer)
+void vtkProjectorView::LightFieldChanged()
 {
-  Internals& internal = *this->Internal;
-  if (internal.Renderer == renderer)
-  {
-    return;
-  }
-  if (internal.Renderer)
-  {
-    internal.Renderer->RemoveObserver(internal.BeforeRenderTag);
-    internal.Renderer->RemoveViewProp(internal.MaskActor);
-    internal.Renderer->RemoveViewProp(internal.SimulatedActor);
-  }
-  internal.Renderer = renderer;
-  if (renderer)
-  {
-    internal.BeforeRenderTag = renderer->AddObserver(vtkCommand::StartEvent, internal.BeforeRender);
-    renderer->AddViewProp(internal.MaskActor);
-    renderer->AddViewProp(internal.SimulatedActor);
-  }
-  this->SetDefaultRenderer(renderer);
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
-vtkRenderer* vtkProjectorView::GetRenderer()
-{
-  return this->Internal->Renderer;
-}
-
-//------------------------------------------------------------------------------
-void vtkProjectorView::SetLightField(vtkLightField* lightField)
-{
-  this->Internal->LightField = lightField;
+  this->Internal->LightField = this->GetLightField();
   this->Internal->ShownTime = 0;
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
-vtkLightField* vtkProjectorView::GetLightField()
-{
-  return this->Internal->LightField;
 }
 
 //------------------------------------------------------------------------------
@@ -306,13 +259,14 @@ void vtkProjectorView::Simulate()
 bool vtkProjectorView::BeginStroke(int x, int y)
 {
   Internals& internal = *this->Internal;
-  if (!internal.Renderer || !internal.HasMask(this->Projector))
+  vtkRenderer* renderer = this->GetRenderer();
+  if (!renderer || !internal.HasMask(this->Projector))
   {
     return false;
   }
-  internal.Renderer->SetDisplayPoint(x, y, 0.0);
-  internal.Renderer->DisplayToWorld();
-  const double* world = internal.Renderer->GetWorldPoint();
+  renderer->SetDisplayPoint(x, y, 0.0);
+  renderer->DisplayToWorld();
+  const double* world = renderer->GetWorldPoint();
   const double w = world[3] != 0.0 ? world[3] : 1.0;
   const double i = world[0] / w, j = world[1] / w;
   const int* dims = internal.Masks()->GetDimensions();
@@ -332,9 +286,10 @@ bool vtkProjectorView::BeginStroke(int x, int y)
 void vtkProjectorView::ContinueStroke(int x, int y)
 {
   Internals& internal = *this->Internal;
-  internal.Renderer->SetDisplayPoint(x, y, 0.0);
-  internal.Renderer->DisplayToWorld();
-  const double* world = internal.Renderer->GetWorldPoint();
+  vtkRenderer* renderer = this->GetRenderer();
+  renderer->SetDisplayPoint(x, y, 0.0);
+  renderer->DisplayToWorld();
+  const double* world = renderer->GetWorldPoint();
   const double w = world[3] != 0.0 ? world[3] : 1.0;
   const double to[2] = { world[0] / w, world[1] / w };
   const int* dims = internal.Working->GetDimensions();
@@ -419,7 +374,8 @@ bool vtkProjectorView::WriteMask(int projector, const char* fileName)
 void vtkProjectorView::ResetCamera()
 {
   Internals& internal = *this->Internal;
-  if (!internal.Renderer)
+  vtkRenderer* renderer = this->GetRenderer();
+  if (!renderer)
   {
     return;
   }
@@ -432,74 +388,38 @@ void vtkProjectorView::ResetCamera()
     width = internal.SimulatedActor->GetPosition()[0] + simulated[0];
     height = std::max<double>(height, simulated[1]);
   }
-  vtkCamera* camera = internal.Renderer->GetActiveCamera();
+  vtkCamera* camera = renderer->GetActiveCamera();
   const double cx = 0.5 * (width - 1.0), cy = 0.5 * (height - 1.0);
   camera->ParallelProjectionOn();
   camera->SetFocalPoint(cx, cy, 0.0);
   camera->SetPosition(cx, cy, 10.0 * std::max(width, height));
   camera->SetViewUp(0.0, 1.0, 0.0);
-  const double aspect = internal.Renderer->GetTiledAspectRatio();
+  const double aspect = renderer->GetTiledAspectRatio();
   camera->SetParallelScale(0.5 * std::max(height, width / std::max(aspect, 1e-6)));
-  internal.Renderer->ResetCameraClippingRange();
+  renderer->ResetCameraClippingRange();
 }
 
 //------------------------------------------------------------------------------
-void vtkProjectorView::SetEnabled(int enabling)
+bool vtkProjectorView::HandleEvent(unsigned long event, int x, int y)
 {
-  if (!this->Interactor || (enabling != 0) == (this->Enabled != 0))
+  if (event == vtkCommand::LeftButtonPressEvent)
   {
-    return;
+    vtkRenderer* renderer = this->GetRenderer();
+    return renderer && renderer->IsInViewport(x, y) && this->BeginStroke(x, y);
   }
-  this->Enabled = enabling;
-  if (enabling)
+  if (!this->Internal->Painting)
   {
-    for (unsigned long event : { vtkCommand::LeftButtonPressEvent,
-           vtkCommand::MouseMoveEvent,
-           vtkCommand::LeftButtonReleaseEvent })
-    {
-      this->Interactor->AddObserver(event, this->EventCallbackCommand, this->Priority);
-    }
-    this->InvokeEvent(vtkCommand::EnableEvent);
+    return false;
+  }
+  if (event == vtkCommand::MouseMoveEvent)
+  {
+    this->ContinueStroke(x, y);
   }
   else
   {
-    this->Interactor->RemoveObserver(this->EventCallbackCommand);
-    this->InvokeEvent(vtkCommand::DisableEvent);
+    this->EndStroke();
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkProjectorView::ProcessEvents(vtkObject*, unsigned long event, void* self, void*)
-{
-  auto* view = static_cast<vtkProjectorView*>(self);
-  Internals& internal = *view->Internal;
-  const int* position = view->Interactor->GetEventPosition();
-  switch (event)
-  {
-    case vtkCommand::LeftButtonPressEvent:
-      if (!internal.Renderer || !internal.Renderer->IsInViewport(position[0], position[1]) ||
-        !view->BeginStroke(position[0], position[1]))
-      {
-        return;
-      }
-      break;
-    case vtkCommand::MouseMoveEvent:
-      if (!internal.Painting)
-      {
-        return;
-      }
-      view->ContinueStroke(position[0], position[1]);
-      break;
-    default:
-      if (!internal.Painting)
-      {
-        return;
-      }
-      view->EndStroke();
-      break;
-  }
-  view->EventCallbackCommand->SetAbortFlag(1);
-  view->Interactor->Render();
+  return true;
 }
 
 //------------------------------------------------------------------------------

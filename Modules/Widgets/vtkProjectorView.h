@@ -41,21 +41,19 @@
 #define vtkProjectorView_h
 
 #include "lfdWidgetsModule.h" // For export macro
-#include "vtkCommand.h"       // For vtkCommand::UserEvent
-#include "vtkInteractorObserver.h"
+#include "vtkCalibrationView.h"
+#include "vtkCommand.h" // For vtkCommand::UserEvent
 
 #include <memory> // For std::unique_ptr
 
 class vtkImageData;
-class vtkLightField;
 class vtkPolyData;
-class vtkRenderer;
 
-class LFDWIDGETS_EXPORT vtkProjectorView : public vtkInteractorObserver
+class LFDWIDGETS_EXPORT vtkProjectorView : public vtkCalibrationView
 {
 public:
   static vtkProjectorView* New();
-  vtkTypeMacro(vtkProjectorView, vtkInteractorObserver);
+  vtkTypeMacro(vtkProjectorView, vtkCalibrationView);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -65,22 +63,6 @@ public:
   {
     MaskStrokeEvent = vtkCommand::UserEvent + 1010
   };
-
-  ///@{
-  /**
-   * The renderer this view draws into and paints in.
-   */
-  void SetRenderer(vtkRenderer* renderer);
-  vtkRenderer* GetRenderer();
-  ///@}
-
-  ///@{
-  /**
-   * The light field whose projectors, masks and palette are shown.
-   */
-  void SetLightField(vtkLightField* lightField);
-  vtkLightField* GetLightField();
-  ///@}
 
   ///@{
   /**
@@ -147,23 +129,19 @@ public:
    * Shows the light field's current mask (and re-renders the simulation)
    * when it changed; called before each render of the renderer.
    */
-  void Refresh();
+  void Refresh() override;
 
   /**
    * Fits the mask (and the simulated view) into the renderer's viewport.
    */
-  void ResetCamera();
-
-  /**
-   * Enables painting (needs an interactor).
-   */
-  void SetEnabled(int enabling) override;
+  void ResetCamera() override;
 
 protected:
   vtkProjectorView();
   ~vtkProjectorView() override;
 
-  static void ProcessEvents(vtkObject* caller, unsigned long event, void* self, void* data);
+  void LightFieldChanged() override;
+  bool HandleEvent(unsigned long event, int x, int y) override;
   bool BeginStroke(int x, int y);
   void ContinueStroke(int x, int y);
   void EndStroke();

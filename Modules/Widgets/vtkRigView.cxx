@@ -1,7 +1,6 @@
 #include "vtkRigView.h"
 
 #include "vtkActor.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraFrustumSource.h"
 #include "vtkCameraRig.h"
@@ -21,7 +20,6 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 
@@ -99,8 +97,6 @@ vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* port, double r, double g
 
 struct vtkRigView::Internals
 {
-  vtkSmartPointer<vtkRenderer> Renderer;
-  vtkSmartPointer<vtkLightField> LightField;
   vtkSmartPointer<vtkDeformationCage> Cage;
   vtkNew<vtkCameraFrustumSource> Cameras;
   vtkNew<vtkCameraFrustumSource> Projectors;
@@ -152,73 +148,33 @@ struct vtkRigView::Internals
     this->Picker->AddPickList(this->CameraActor);
     this->Picker->SetTolerance(0.0);
   }
-
-  vtkProp* Props(int i)
-  {
-    vtkProp* props[] = { this->CameraActor,
-      this->ProjectorActor,
-      this->HighlightActor,
-      this->OutlineActor,
-      this->CylinderActor,
-      this->CageActor };
-    return i < 6 ? props[i] : nullptr;
-  }
 };
 
 //------------------------------------------------------------------------------
 vtkRigView::vtkRigView()
   : Internal(new Internals)
 {
-  this->EventCallbackCommand->SetCallback(vtkRigView::ProcessEvents);
-  // Ahead of the interactor style, as VTK's widgets are.
-  this->Priority = 0.5;
+  Internals& internal = *this->Internal;
+  vtkProp* props[] = { internal.CameraActor,
+    internal.ProjectorActor,
+    internal.HighlightActor,
+    internal.OutlineActor,
+    internal.CylinderActor,
+    internal.CageActor };
+  for (vtkProp* prop : props)
+  {
+    this->AddViewProp(prop);
+  }
+  this->SetHandledEvents({ vtkCommand::LeftButtonPressEvent });
 }
 
 //------------------------------------------------------------------------------
 vtkRigView::~vtkRigView() = default;
 
 //------------------------------------------------------------------------------
-void vtkRigView::SetRenderer(vtkRenderer* renderer)
+void vtkRigView::LightFieldChanged()
 {
-  Internals& internal = *this->Internal;
-  if (internal.Renderer == renderer)
-  {
-    return;
-  }
-  for (int i = 0; vtkProp* prop = internal.Props(i); ++i)
-  {
-    if (internal.Renderer)
-    {
-      internal.Renderer->RemoveViewProp(prop);
-    }
-    if (renderer)
-    {
-      renderer->AddViewProp(prop);
-    }
-  }
-  internal.Renderer = renderer;
-  this->SetDefaultRenderer(renderer);
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
-vtkRenderer* vtkRigView::GetRenderer()
-{
-  return this->Internal->Renderer;
-}
-
-//------------------------------------------------------------------------------
-void vtkRigView::SetLightField(vtkLightField* lightField)
-{
-  this->Internal->LightField = lightField;
   this->UpdateRig();
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
-vtkLightField* vtkRigView::GetLightField()
-{
-  return this->Internal->LightField;
 }
 
 //------------------------------------------------------------------------------
@@ -268,8 +224,9 @@ void vtkRigView::SetCurrentView(int view)
 void vtkRigView::UpdateRig()
 {
   Internals& internal = *this->Internal;
-  vtkCameraRig* rig = internal.LightField ? internal.LightField->GetRig() : nullptr;
-  vtkCameraRig* projectors = internal.LightField ? internal.LightField->GetProjectors() : nullptr;
+  vtkLightField* lightField = this->GetLightField();
+  vtkCameraRig* rig = lightField ? lightField->GetRig() : nullptr;
+  vtkCameraRig* projectors = lightField ? lightField->GetProjectors() : nullptr;
   internal.Cameras->SetRig(rig);
   internal.Highlight->SetRig(rig);
   internal.Projectors->SetRig(projectors);
@@ -296,13 +253,14 @@ void vtkRigView::UpdateRig()
 //------------------------------------------------------------------------------
 void vtkRigView::ResetCamera()
 {
-  Internals& internal = *this->Internal;
-  if (!internal.Renderer)
+  vtkRenderer* renderer = this->GetRenderer();
+  if (!renderer)
   {
     return;
   }
-  vtkCameraRig* rig = internal.LightField ? internal.LightField->GetRig() : nullptr;
-  vtkCamera* camera = internal.Renderer->GetActiveCamera();
+  vtkLightField* lightField = this->GetLightField();
+  vtkCameraRig* rig = lightField ? lightField->GetRig() : nullptr;
+  vtkCamera* camera = renderer->GetActiveCamera();
   if (rig && rig->HasCylinder())
   {
     const double* axis = rig->GetAxis();
@@ -316,14 +274,15 @@ void vtkRigView::ResetCamera()
       centre[2] + r * (0.8 * zero[2] + 0.3 * quarter[2] + 0.6 * axis[2]));
     camera->SetViewUp(axis[0], axis[1], axis[2]);
   }
-  internal.Renderer->ResetCamera();
+  renderer->ResetCamera();
 }
 
 //------------------------------------------------------------------------------
 int vtkRigView::PickView(int x, int y)
 {
   Internals& internal = *this->Internal;
-  if (!internal.Renderer || !internal.Picker->Pick(x, y, 0.0, internal.Renderer))
+  vtkRenderer* renderer = this->GetRenderer();
+  if (!renderer || !internal.Picker->Pick(x, y, 0.0, renderer))
   {
     return -1;
   }
@@ -334,45 +293,17 @@ int vtkRigView::PickView(int x, int y)
 }
 
 //------------------------------------------------------------------------------
-void vtkRigView::SetEnabled(int enabling)
+bool vtkRigView::HandleEvent(unsigned long, int x, int y)
 {
-  if (!this->Interactor || (enabling != 0) == (this->Enabled != 0))
-  {
-    return;
-  }
-  this->Enabled = enabling;
-  if (enabling)
-  {
-    this->Interactor->AddObserver(
-      vtkCommand::LeftButtonPressEvent, this->EventCallbackCommand, this->Priority);
-    this->InvokeEvent(vtkCommand::EnableEvent);
-  }
-  else
-  {
-    this->Interactor->RemoveObserver(this->EventCallbackCommand);
-    this->InvokeEvent(vtkCommand::DisableEvent);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkRigView::ProcessEvents(vtkObject*, unsigned long, void* self, void*)
-{
-  auto* view = static_cast<vtkRigView*>(self);
-  vtkRenderer* renderer = view->Internal->Renderer;
-  const int* position = view->Interactor->GetEventPosition();
-  if (!renderer || !renderer->IsInViewport(position[0], position[1]))
-  {
-    return;
-  }
-  int picked = view->PickView(position[0], position[1]);
+  vtkRenderer* renderer = this->GetRenderer();
+  int picked = renderer && renderer->IsInViewport(x, y) ? this->PickView(x, y) : -1;
   if (picked < 0)
   {
-    return;
+    return false;
   }
-  view->EventCallbackCommand->SetAbortFlag(1);
-  view->SetCurrentView(picked);
-  view->InvokeEvent(ViewSelectedEvent, &picked);
-  view->Interactor->Render();
+  this->SetCurrentView(picked);
+  this->InvokeEvent(ViewSelectedEvent, &picked);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -380,6 +311,5 @@ void vtkRigView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "CurrentView: " << this->CurrentView << "\n";
-  os << indent << "LightField: " << this->Internal->LightField.Get() << "\n";
   os << indent << "Cage: " << this->Internal->Cage.Get() << "\n";
 }

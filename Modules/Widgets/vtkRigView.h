@@ -25,20 +25,18 @@
 #define vtkRigView_h
 
 #include "lfdWidgetsModule.h" // For export macro
-#include "vtkCommand.h"       // For vtkCommand::UserEvent
-#include "vtkInteractorObserver.h"
+#include "vtkCalibrationView.h"
+#include "vtkCommand.h" // For vtkCommand::UserEvent
 
 #include <memory> // For std::unique_ptr
 
 class vtkDeformationCage;
-class vtkLightField;
-class vtkRenderer;
 
-class LFDWIDGETS_EXPORT vtkRigView : public vtkInteractorObserver
+class LFDWIDGETS_EXPORT vtkRigView : public vtkCalibrationView
 {
 public:
   static vtkRigView* New();
-  vtkTypeMacro(vtkRigView, vtkInteractorObserver);
+  vtkTypeMacro(vtkRigView, vtkCalibrationView);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -48,23 +46,6 @@ public:
   {
     ViewSelectedEvent = vtkCommand::UserEvent + 1000
   };
-
-  ///@{
-  /**
-   * The renderer this view draws into (its props are added to it, removed
-   * from the previous one). Also the renderer clicks are picked in.
-   */
-  void SetRenderer(vtkRenderer* renderer);
-  vtkRenderer* GetRenderer();
-  ///@}
-
-  ///@{
-  /**
-   * The light field whose rig (cameras) and projectors are drawn.
-   */
-  void SetLightField(vtkLightField* lightField);
-  vtkLightField* GetLightField();
-  ///@}
 
   ///@{
   /**
@@ -95,12 +76,7 @@ public:
    * Points the renderer's camera at the whole rig (an oblique view from
    * above the first row).
    */
-  void ResetCamera();
-
-  /**
-   * Enables picking (needs an interactor).
-   */
-  void SetEnabled(int enabling) override;
+  void ResetCamera() override;
 
   /**
    * The view whose frustum is under display position (x, y) of this view's
@@ -112,7 +88,8 @@ protected:
   vtkRigView();
   ~vtkRigView() override;
 
-  static void ProcessEvents(vtkObject* caller, unsigned long event, void* self, void* data);
+  void LightFieldChanged() override;
+  bool HandleEvent(unsigned long event, int x, int y) override;
   void UpdateRig();
 
   int CurrentView = -1;
