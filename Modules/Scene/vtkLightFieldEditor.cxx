@@ -94,6 +94,8 @@ vtkLightFieldEditor::vtkLightFieldEditor()
   in.Callback->SetClientData(this);
   in.Callback->SetCallback(&vtkLightFieldEditor::OnEvent);
   in.Actor->SetMapper(in.Mapper);
+  // Many boxes cost more per pixel: drag frames then get coarser, not slower.
+  in.Mapper->AdaptiveSubsamplingOn();
   in.Widget->CreateDefaultRepresentation();
   vtkCageRepresentation* rep = in.Widget->GetCageRepresentation();
   // The logic applies (and validates) every move; the handles only propose.

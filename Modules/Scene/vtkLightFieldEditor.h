@@ -36,13 +36,15 @@
  *   Studio does; otherwise Initialize() makes a renderer, a render window
  *   and an interactor of its own).
  *
- * **Progressive refinement.** While a drag lasts the render window renders
- * at the interactor's DesiredUpdateRate, at which the mapper computes the
- * light field at 1 / InteractiveSubsampling of the resolution; the
- * EndInteractionEvent sets the StillUpdateRate back and renders once, at full
- * resolution. The frame time of the previous render of the renderer
- * (GetLastFrameTime()) and the resolution of the current one ("coarse 1/4"
- * or "full") are shown in the lower right corner (GetFrameTimeActor()).
+ * **Progressive refinement.** While a drag lasts, the widget has the render
+ * window render at the interactor's DesiredUpdateRate, at which the mapper
+ * computes the light field at 1 / InteractiveSubsampling of the resolution,
+ * or coarser when that would not fit in the frame time (the mapper's
+ * AdaptiveSubsampling, on in the editor: a cage of 100 boxes stays
+ * interactive); the release sets the StillUpdateRate back and renders once,
+ * at full resolution. The lower right corner (GetFrameTimeActor()) shows
+ * the duration of the previous render of the renderer (GetLastFrameTime())
+ * in ms/frame and frames/s, and whether it was "coarse" or "full".
  *
  * **Undo.** The logic's CageModifiedEvent (undo, redo, any other edit)
  * puts the handles on the logic's cage; SettingsModifiedEvent re-applies

@@ -124,6 +124,20 @@ t.check(tuple(mapper.GetLastImageSize()) == (75, 75), "interactive render at a q
         mapper.GetLastImageSize())
 t.check(tuple(mapper.GetDepthImage().GetDimensions()) == (75, 75, 1), "and so is its depth image",
         mapper.GetDepthImage().GetDimensions())
+# Adaptive: a frame budget no computation fits (1 microsecond) takes the
+# coarsest subsampling, 64; one any fits (1 s) keeps InteractiveSubsampling.
+mapper.AdaptiveSubsamplingOn()
+window.SetDesiredUpdateRate(1e6)
+camera.Azimuth(1.0)
+window.Render()
+t.check(tuple(mapper.GetLastImageSize()) == (4, 4), "adaptive: 1/64 when the budget is tiny",
+        mapper.GetLastImageSize())
+window.SetDesiredUpdateRate(1.0)
+camera.Azimuth(1.0)
+window.Render()
+t.check(tuple(mapper.GetLastImageSize()) == (75, 75), "adaptive: 1/4 when it fits",
+        mapper.GetLastImageSize())
+mapper.AdaptiveSubsamplingOff()
 window.SetDesiredUpdateRate(0.0001)
 window.Render()
 t.check(tuple(mapper.GetLastImageSize()) == (300, 300), "back to full resolution when still",
