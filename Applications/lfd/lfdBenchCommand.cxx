@@ -29,6 +29,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lfd::cli
@@ -51,6 +52,49 @@ double MedianRenderTime(vtkLightFieldRenderer* renderer, int repeat)
   return times[times.size() / 2];
 }
 
+/**
+ * Median render times (s) of `object`'s light field at `size` x `size` from
+ * an orbit camera, at rest and deformed: the fish swimming (3 boxes,
+ * Fig. 13), the figure twisted by 45 degrees (Fig. 1).
+ */
+std::pair<double, double> RenderTimes(vtkLightField* lightField,
+  const std::string& object,
+  int size,
+  int repeat)
+{
+  vtkCameraRig* rig = lightField->GetRig();
+  vtkNew<vtkCamera> camera;
+  vtkLightFieldSceneLogic::OrbitCamera(rig, 0.37, 1.2, 0.0, rig->GetViewAngle(0), camera);
+  vtkNew<vtkLightFieldRenderer> renderer;
+  renderer->SetInputData(lightField);
+  renderer->SetCamera(camera);
+  renderer->SetWidth(size);
+  renderer->SetHeight(size);
+  const double rest = MedianRenderTime(renderer, repeat);
+
+  vtkNew<vtkProceduralObjectSource> source;
+  source->SetObject(vtkProceduralObjectSource::GetObjectFromString(object.c_str()));
+  vtkNew<vtkPartCageSource> parts;
+  parts->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkCagePoseFilter> pose;
+  pose->SetInputConnection(parts->GetOutputPort());
+  if (object == "fish")
+  {
+    pose->SetModeToSwim();
+    pose->SetAngle(20.0);
+    pose->SetPhase(1.0);
+    pose->SetTurnAxis(0.0, 0.0, 1.0);
+  }
+  else
+  {
+    pose->SetModeToTwist();
+    pose->SetAngle(45.0);
+  }
+  Run(pose.Get(), "posing the cage");
+  renderer->SetCageData(pose->GetOutput());
+  return { rest, MedianRenderTime(renderer, repeat) };
+}
+
 void Bench(int repeat, int size)
 {
   std::printf("threads: %d (vtkSMPTools, %s backend)\n",
@@ -68,41 +112,8 @@ void Bench(int repeat, int size)
     options.Object = object;
     options.NoDepth = true;
     auto lightField = Synthesize(options);
-    vtkCameraRig* rig = lightField->GetRig();
-    vtkNew<vtkCamera> camera;
-    vtkLightFieldSceneLogic::OrbitCamera(rig, 0.37, 1.2, 0.0, rig->GetViewAngle(0), camera);
-    vtkNew<vtkLightFieldRenderer> renderer;
-    renderer->SetInputData(lightField);
-    renderer->SetCamera(camera);
-    renderer->SetWidth(size);
-    renderer->SetHeight(size);
-    const double rest = MedianRenderTime(renderer, repeat);
-
-    // The deformed counterpart: the fish swimming (3 boxes, Fig. 13), the
-    // figure twisted by 45 degrees (Fig. 1).
-    vtkNew<vtkProceduralObjectSource> source;
-    source->SetObject(vtkProceduralObjectSource::GetObjectFromString(object));
-    vtkNew<vtkPartCageSource> parts;
-    parts->SetInputConnection(source->GetOutputPort());
-    vtkNew<vtkCagePoseFilter> pose;
-    pose->SetInputConnection(parts->GetOutputPort());
+    const auto [rest, deformed] = RenderTimes(lightField, object, size, repeat);
     const bool fish = std::string(object) == "fish";
-    if (fish)
-    {
-      pose->SetModeToSwim();
-      pose->SetAngle(20.0);
-      pose->SetPhase(1.0);
-      pose->SetTurnAxis(0.0, 0.0, 1.0);
-    }
-    else
-    {
-      pose->SetModeToTwist();
-      pose->SetAngle(45.0);
-    }
-    Run(pose.Get(), "posing the cage");
-    renderer->SetCageData(pose->GetOutput());
-    const double deformed = MedianRenderTime(renderer, repeat);
-
     const std::string restName = std::string("undeformed ") + object;
     const std::string deformedName =
       fish ? "deformed fish (swim, 3 boxes)" : "deformed figure (twist 45, 3 boxes)";
@@ -327,20 +338,25 @@ void StudioBench(int repeat)
   std::printf("threads: %d (vtkSMPTools, %s backend)\n",
     vtkSMPTools::GetEstimatedNumberOfThreads(),
     vtkSMPTools::GetBackend());
-  std::printf("%-24s %8s %6s %8s %8s %8s %8s %8s %8s %6s\n",
-    "editor 800x600, drag",
+  std::printf("%-18s %8s %6s %7s %7s %8s %8s %7s %7s %8s %8s %5s\n",
+    "editor 800x600",
     "drag ms",
     "fps",
     "cpu ms",
+    "vs ref",
     "coarse",
     "release",
     "cpu ms",
+    "vs ref",
     "full",
     "still ms",
     "boxes");
   SynthOptions options;
   options.NoDepth = true;
   auto lightField = Synthesize(options);
+  // The reference loop of `lfd bench` (deformed fish, 512x512) in the same
+  // conditions: the ratios to it do not depend on the machine's load.
+  const double reference = RenderTimes(lightField, "fish", 512, std::min(repeat, 5)).second;
   for (int boxes : { 3, 100 })
   {
     auto logic = FishScene(lightField, boxes);
@@ -355,23 +371,27 @@ void StudioBench(int repeat)
       std::to_string(figures.Coarse[0]) + "x" + std::to_string(figures.Coarse[1]);
     const std::string full =
       std::to_string(figures.Full[0]) + "x" + std::to_string(figures.Full[1]);
-    std::printf("%-24s %8.1f %6.1f %8.1f %8s %8.1f %8.1f %8s %8.1f %6lld\n",
+    std::printf("%-18s %8.1f %6.1f %7.1f %6.2fx %8s %8.1f %7.1f %6.2fx %8s %8.1f %5lld\n",
       name.c_str(),
       1000.0 * figures.Move,
       1.0 / figures.Move,
       1000.0 * figures.MoveCpu,
+      figures.Move / reference,
       coarse.c_str(),
       1000.0 * figures.Release,
       1000.0 * figures.ReleaseCpu,
+      figures.Release / reference,
       full.c_str(),
       1000.0 * figures.Still,
       static_cast<long long>(figures.Validated));
   }
   std::printf("(drag ms: median time from a mouse motion to its coarse frame over %d motions; "
               "release: from the button release to the full-resolution frame; cpu ms: the "
-              "process's CPU time of the same, all threads; still ms: median full-resolution "
+              "process's CPU time of the same, all threads; vs ref: against the deformed fish "
+              "at 512x512 of lfd bench, %.1f ms here; still ms: median full-resolution "
               "frame; boxes: re-validated per motion; targets: 30 fps, 150 ms)\n",
-    repeat);
+    repeat,
+    1000.0 * reference);
 }
 
 }
