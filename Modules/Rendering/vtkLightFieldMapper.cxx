@@ -21,6 +21,7 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtk_glew.h"
@@ -59,7 +60,10 @@ struct vtkLightFieldMapper::Internals
   vtkNew<vtkTextureObject> Color;
   vtkNew<vtkTextureObject> Depth;
   std::vector<unsigned char> Rgba;
-  std::vector<float> WindowDepth;
+  vtkNew<vtkImageData> WindowDepth;       ///< GetDepthImage()
+  vtkMTimeType UploadedImageTime = 0;     ///< the image in the textures
+  double UploadedRange[2] = { 0.0, 0.0 }; ///< the clipping range of their depth
+  double SecondsPerPixel = 0.0;           ///< of the last computation (AdaptiveSubsampling)
 };
 
 //------------------------------------------------------------------------------
@@ -96,6 +100,12 @@ void vtkLightFieldMapper::SetCageData(vtkDataObject* cage)
 vtkLightFieldRenderer* vtkLightFieldMapper::GetLightFieldRenderer()
 {
   return this->Internal->Renderer;
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkLightFieldMapper::GetDepthImage()
+{
+  return this->Internal->WindowDepth;
 }
 
 //------------------------------------------------------------------------------
@@ -160,8 +170,17 @@ void vtkLightFieldMapper::Render(vtkRenderer* renderer)
   Internals& in = *this->Internal;
   int size[2], origin[2];
   renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
-  const bool interactive = window->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
-  const int subsampling = interactive ? this->InteractiveSubsampling : 1;
+  const double rate = window->GetDesiredUpdateRate();
+  int subsampling = rate >= this->InteractiveUpdateRate ? this->InteractiveSubsampling : 1;
+  const auto pixelsAt = [&size](int factor)
+  { return static_cast<double>(std::max(1, size[0] / factor)) * std::max(1, size[1] / factor); };
+  if (subsampling > 1 && this->AdaptiveSubsampling && in.SecondsPerPixel > 0.0)
+  {
+    while (subsampling < 64 && in.SecondsPerPixel * pixelsAt(subsampling) > 1.0 / rate)
+    {
+      ++subsampling;
+    }
+  }
   const int width = std::max(1, size[0] / subsampling);
   const int height = std::max(1, size[1] / subsampling);
 
@@ -174,7 +193,15 @@ void vtkLightFieldMapper::Render(vtkRenderer* renderer)
   view->SetCamera(renderer->GetActiveCamera());
   view->SetWidth(width);
   view->SetHeight(height);
+  const vtkMTimeType before = view->GetOutput()->GetMTime();
+  const double start = vtkTimerLog::GetUniversalTime();
   view->Update();
+  if (view->GetOutput()->GetMTime() != before && subsampling <= this->InteractiveSubsampling)
+  {
+    // What a pixel costs now (the cage, the view, the machine's load);
+    // not from an adaptive frame, whose few pixels the fixed costs dominate.
+    in.SecondsPerPixel = (vtkTimerLog::GetUniversalTime() - start) / pixelsAt(subsampling);
+  }
   if (in.Errors->HasError())
   {
     // The renderer's error is said once, as the mapper's own.
@@ -192,30 +219,18 @@ void vtkLightFieldMapper::Render(vtkRenderer* renderer)
   this->LastImageSize[1] = height;
 
   // Camera z -> window depth of the perspective projection (clipping range
-  // n, f); no ray: the far plane.
+  // n, f); no ray: the far plane. A frame that changed neither the image
+  // nor the range (a widget's hover, a text) draws the textures as they are.
   double range[2];
   renderer->GetActiveCamera()->GetClippingRange(range);
-  const double n = range[0], f = range[1];
-  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
-  in.Rgba.resize(4 * pixels);
-  in.WindowDepth.resize(pixels);
-  for (vtkIdType p = 0; p < pixels; ++p)
+  if (image->GetMTime() != in.UploadedImageTime || range[0] != in.UploadedRange[0] ||
+    range[1] != in.UploadedRange[1] || in.Color->GetContext() != window)
   {
-    const double z = depths->GetValue(p);
-    std::copy(colors->GetPointer(3 * p), colors->GetPointer(3 * p) + 3, &in.Rgba[4 * p]);
-    in.Rgba[4 * p + 3] = z > 0.0 ? 255 : 0;
-    const double window = z > 0.0 ? lfd::DistanceToWindowDepth(z, n, f) : 1.0;
-    in.WindowDepth[p] = static_cast<float>(std::clamp(window, 0.0, 1.0));
+    this->Upload(window, image, range);
   }
-
-  in.Color->SetContext(window);
-  in.Color->Create2DFromRaw(width, height, 4, VTK_UNSIGNED_CHAR, in.Rgba.data());
-  in.Color->SetMinificationFilter(vtkTextureObject::Linear);
-  in.Color->SetMagnificationFilter(vtkTextureObject::Linear);
-  in.Depth->SetContext(window);
-  in.Depth->Create2DFromRaw(width, height, 1, VTK_FLOAT, in.WindowDepth.data());
-  in.Depth->SetMinificationFilter(vtkTextureObject::Nearest);
-  in.Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+  in.UploadedImageTime = image->GetMTime();
+  in.UploadedRange[0] = range[0];
+  in.UploadedRange[1] = range[1];
 
   if (!in.Quad)
   {
@@ -247,9 +262,53 @@ void vtkLightFieldMapper::Render(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+void vtkLightFieldMapper::Upload(vtkOpenGLRenderWindow* window,
+  vtkImageData* image,
+  const double range[2])
+{
+  Internals& in = *this->Internal;
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  auto* depths = vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("Depth"));
+  const int width = this->LastImageSize[0], height = this->LastImageSize[1];
+  // Camera z -> window depth of the perspective projection (clipping range
+  // n, f); no ray: the far plane.
+  const double n = range[0], f = range[1];
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  in.Rgba.resize(4 * pixels);
+  int* dimensions = in.WindowDepth->GetDimensions();
+  if (dimensions[0] != width || dimensions[1] != height)
+  {
+    in.WindowDepth->SetDimensions(width, height, 1);
+    in.WindowDepth->AllocateScalars(VTK_FLOAT, 1);
+    in.WindowDepth->GetPointData()->GetScalars()->SetName("Depth");
+  }
+  auto* windowDepth = vtkFloatArray::SafeDownCast(in.WindowDepth->GetPointData()->GetScalars());
+  for (vtkIdType p = 0; p < pixels; ++p)
+  {
+    const double z = depths->GetValue(p);
+    std::copy(colors->GetPointer(3 * p), colors->GetPointer(3 * p) + 3, &in.Rgba[4 * p]);
+    in.Rgba[4 * p + 3] = z > 0.0 ? 255 : 0;
+    const double window = z > 0.0 ? lfd::DistanceToWindowDepth(z, n, f) : 1.0;
+    windowDepth->SetValue(p, static_cast<float>(std::clamp(window, 0.0, 1.0)));
+  }
+  windowDepth->Modified();
+  in.WindowDepth->Modified();
+
+  in.Color->SetContext(window);
+  in.Color->Create2DFromRaw(width, height, 4, VTK_UNSIGNED_CHAR, in.Rgba.data());
+  in.Color->SetMinificationFilter(vtkTextureObject::Linear);
+  in.Color->SetMagnificationFilter(vtkTextureObject::Linear);
+  in.Depth->SetContext(window);
+  in.Depth->Create2DFromRaw(width, height, 1, VTK_FLOAT, windowDepth->GetPointer(0));
+  in.Depth->SetMinificationFilter(vtkTextureObject::Nearest);
+  in.Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+}
+
+//------------------------------------------------------------------------------
 void vtkLightFieldMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internal->Quad.reset();
+  this->Internal->UploadedImageTime = 0;
   this->Internal->Color->ReleaseGraphicsResources(window);
   this->Internal->Depth->ReleaseGraphicsResources(window);
 }
@@ -260,6 +319,7 @@ void vtkLightFieldMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "InteractiveSubsampling: " << this->InteractiveSubsampling << "\n";
+  os << indent << "AdaptiveSubsampling: " << (this->AdaptiveSubsampling ? "On" : "Off") << "\n";
   os << indent << "LastImageSize: " << this->LastImageSize[0] << " x " << this->LastImageSize[1]
      << "\n";
 }

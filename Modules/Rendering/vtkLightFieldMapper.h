@@ -17,8 +17,16 @@
  * InteractiveUpdateRate, which vtkRenderWindowInteractor sets during
  * interaction) the image is computed at 1 / InteractiveSubsampling of the
  * resolution and magnified; the next still render is full resolution
- * (progressive refinement). An error of the view's computation is reported
+ * (progressive refinement). With AdaptiveSubsampling on, an interactive
+ * render computes fewer pixels still when the last computation says that
+ * 1 / InteractiveSubsampling would not fit in the frame time the window
+ * asks for (1 / DesiredUpdateRate), as VTK's level-of-detail actors do: a
+ * cage of many boxes stays interactive. An error of the view's computation is reported
  * as the mapper's own (see vtkLightFieldErrorObserver).
+ *
+ * GetDepthImage() gives the depth the last render wrote, so that a widget
+ * drawn over the light field can tell which of its handles the object hides
+ * (vtkCageRepresentation::SetOccluderDepth()).
  *
  * @sa vtkLightFieldActor vtkLightFieldRenderer
  */
@@ -30,6 +38,8 @@
 
 #include <memory> // For std::unique_ptr
 
+class vtkImageData;
+class vtkOpenGLRenderWindow;
 class vtkLightFieldRenderer;
 class vtkRenderer;
 class vtkWindow;
@@ -66,6 +76,18 @@ public:
   vtkGetMacro(InteractiveSubsampling, int);
   ///@}
 
+  ///@{
+  /**
+   * Interactive renders subsample more than InteractiveSubsampling (up to
+   * 64) when the time per pixel of the last computation times the pixels
+   * at InteractiveSubsampling exceeds 1 / DesiredUpdateRate of the window.
+   * Default off.
+   */
+  vtkSetMacro(AdaptiveSubsampling, bool);
+  vtkGetMacro(AdaptiveSubsampling, bool);
+  vtkBooleanMacro(AdaptiveSubsampling, bool);
+  ///@}
+
   /**
    * The light-field renderer the mapper drives (for focal distance,
    * subdivision, background...).
@@ -77,6 +99,16 @@ public:
    * while interacting).
    */
   vtkGetVector2Macro(LastImageSize, int);
+
+  /**
+   * The depth the last render wrote, one float per pixel of the computed
+   * image (LastImageSize: coarser than the viewport while interacting), in
+   * the renderer's z-buffer convention: 0 at the near clipping plane, 1 at
+   * the far one and where no ray hits the object. Pixel (i, j) counts from
+   * the viewport's lower left corner. Empty before the first render; the
+   * same object is refilled by each render.
+   */
+  vtkImageData* GetDepthImage();
 
   /**
    * Computes the view of `renderer`'s active camera and draws it.
@@ -105,11 +137,16 @@ protected:
 
   double InteractiveUpdateRate = 1.0;
   int InteractiveSubsampling = 4;
+  bool AdaptiveSubsampling = false;
   int LastImageSize[2] = { 0, 0 };
 
 private:
   vtkLightFieldMapper(const vtkLightFieldMapper&) = delete;
   void operator=(const vtkLightFieldMapper&) = delete;
+
+  // Converts the view's image (colour, camera depth) into the textures
+  // (RGBA, window depth for the clipping range `range`).
+  void Upload(vtkOpenGLRenderWindow* window, vtkImageData* image, const double range[2]);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
