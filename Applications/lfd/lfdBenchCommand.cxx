@@ -1,16 +1,25 @@
-// `lfd bench`: rays/s and ms/frame of the renderer.
+// `lfd bench`: rays/s and ms/frame of the renderer; with --studio, the
+// frame times of the editing view (vtkLightFieldEditor) during a drag.
 #include "lfdCommands.h"
 
 #include "vtkCagePoseFilter.h"
+#include "vtkCageRepresentation.h"
+#include "vtkCageWidget.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
+#include "vtkIdList.h"
+#include "vtkInteractorEventRecorder.h"
 #include "vtkLightField.h"
 #include "vtkLightFieldCapture.h"
+#include "vtkLightFieldEditor.h"
+#include "vtkLightFieldMapper.h"
 #include "vtkLightFieldRenderer.h"
 #include "vtkNew.h"
 #include "vtkPartCageSource.h"
 #include "vtkProceduralObjectSource.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
 
@@ -113,12 +122,246 @@ void Bench(int repeat, int size)
   std::printf("(median of %d renders each)\n", repeat);
 }
 
+/// What one recorded drag in the editor measured.
+struct DragFigures
+{
+  double Move = 0.0;    ///< median time (s) from a mouse motion to its frame
+  double Release = 0.0; ///< time (s) from the button release to the full-resolution frame
+  double Still = 0.0;   ///< median time (s) of a full-resolution frame of the same view
+  int Coarse[2] = { 0, 0 };
+  int Full[2] = { 0, 0 };
+  vtkIdType Validated = 0; ///< boxes the scene logic re-checked per move
+  int Commands = 0;        ///< commands the drag made (1: one undoable drag)
+};
+
+/// Plays one event line through the recorder, as a recorded session does;
+/// returns how long the interactor took to handle it (its render included).
+double PlayEvent(vtkInteractorEventRecorder* recorder, const std::string& line)
+{
+  recorder->SetInputString(line.c_str());
+  const double start = vtkTimerLog::GetUniversalTime();
+  recorder->Play();
+  return Seconds(start);
+}
+
+/**
+ * The visible cage point shared by the most boxes, the highest on screen
+ * among those: a corner the animator would drag (upwards it unfolds
+ * nothing). -1 when no shared point is visible.
+ */
+vtkIdType SharedCorner(vtkLightFieldEditor* editor, double display[2])
+{
+  vtkDeformationCage* cage = editor->GetLogic()->GetCage();
+  std::vector<int> uses(cage->GetNumberOfPoints(), 0);
+  vtkNew<vtkIdList> corners;
+  for (vtkIdType box = 0; box < cage->GetNumberOfBoxes(); ++box)
+  {
+    cage->GetCellPoints(box, corners);
+    for (vtkIdType c = 0; c < corners->GetNumberOfIds(); ++c)
+    {
+      ++uses[corners->GetId(c)];
+    }
+  }
+  vtkCageRepresentation* rep = editor->GetWidget()->GetCageRepresentation();
+  vtkRenderer* renderer = editor->GetRenderer();
+  vtkIdType best = -1;
+  for (vtkIdType id = 0; id < cage->GetNumberOfPoints(); ++id)
+  {
+    if (uses[id] < 2 || !rep->IsPointVisible(id))
+    {
+      continue;
+    }
+    double p[3];
+    cage->GetPoint(id, p);
+    renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    if (best < 0 || uses[id] > uses[best] || (uses[id] == uses[best] && d[1] > display[1]))
+    {
+      best = id;
+      display[0] = d[0];
+      display[1] = d[1];
+    }
+  }
+  return best;
+}
+
+/**
+ * The editor on `logic`'s scene in its own 800 x 600 window: a recorded
+ * drag of a shared corner by `moves` motions of 1 pixel up and right
+ * (progressive: coarse frames), then the release (the full-resolution frame).
+ */
+DragFigures RecordedDrag(vtkLightFieldSceneLogic* logic, int moves)
+{
+  vtkNew<vtkLightFieldEditor> editor;
+  editor->SetLogic(logic);
+  if (!editor->Initialize())
+  {
+    Fail("bench --studio: the editor could not show the scene");
+  }
+  DragFigures figures;
+  std::vector<double> stills;
+  for (int i = 0; i < std::max(3, moves / 4); ++i)
+  {
+    editor->GetRenderer()->GetActiveCamera()->Modified(); // a new view each time
+    const double start = vtkTimerLog::GetUniversalTime();
+    editor->Render();
+    stills.push_back(Seconds(start));
+  }
+  std::sort(stills.begin(), stills.end());
+  figures.Still = stills[stills.size() / 2];
+
+  double display[2] = { 0.0, 0.0 };
+  if (SharedCorner(editor, display) < 0)
+  {
+    Fail("bench --studio: no visible corner shared by two boxes");
+  }
+  vtkNew<vtkInteractorEventRecorder> recorder;
+  recorder->SetInteractor(editor->GetInteractor());
+  recorder->ReadFromInputStringOn();
+  int x = static_cast<int>(display[0] + 0.5), y = static_cast<int>(display[1] + 0.5);
+  auto event = [&](const char* name)
+  { return std::string(name) + " " + std::to_string(x) + " " + std::to_string(y) + " 0 0 0 0\n"; };
+  const int commands = logic->GetNumberOfCommands();
+  PlayEvent(recorder, event("MouseMoveEvent"));
+  PlayEvent(recorder, event("LeftButtonPressEvent"));
+  std::vector<double> times;
+  for (int i = 0; i < moves; ++i)
+  {
+    ++x;
+    ++y;
+    times.push_back(PlayEvent(recorder, event("MouseMoveEvent")));
+    const int* size = editor->GetMapper()->GetLastImageSize();
+    figures.Coarse[0] = size[0];
+    figures.Coarse[1] = size[1];
+  }
+  figures.Validated = logic->GetNumberOfBoxesLastValidated();
+  figures.Release = PlayEvent(recorder, event("LeftButtonReleaseEvent"));
+  const int* size = editor->GetMapper()->GetLastImageSize();
+  figures.Full[0] = size[0];
+  figures.Full[1] = size[1];
+  figures.Commands = logic->GetNumberOfCommands() - commands;
+  std::sort(times.begin(), times.end());
+  figures.Move = times[times.size() / 2];
+  return figures;
+}
+
+/**
+ * The fish's scene for the editor: its light field, the cage of its 3 parts
+ * (`boxes` 3) or `boxes` slabs along the same axis, each labelled by the
+ * part holding its centre, and a camera on the ring.
+ */
+vtkSmartPointer<vtkLightFieldSceneLogic> FishScene(vtkLightField* lightField, int boxes)
+{
+  auto logic = vtkSmartPointer<vtkLightFieldSceneLogic>::New();
+  logic->SetLightField(lightField);
+  vtkNew<vtkProceduralObjectSource> source;
+  source->SetObjectToFish();
+  Run(source.Get(), "building the fish");
+  if (!logic->BuildCageFromLabels(source->GetOutput(), -1))
+  {
+    Fail("bench --studio: the fish's cage was refused");
+  }
+  if (boxes > 3)
+  {
+    vtkNew<vtkDeformationCage> parts;
+    parts->DeepCopy(logic->GetCage());
+    double bounds[6];
+    parts->GetBounds(bounds);
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+    {
+      axis = bounds[2 * a + 1] - bounds[2 * a] > bounds[2 * axis + 1] - bounds[2 * axis] ? a : axis;
+    }
+    logic->BuildCageFromSlabs(bounds, boxes, axis, 1);
+    vtkDeformationCage* slabs = logic->GetCage();
+    for (vtkIdType b = 0; b < slabs->GetNumberOfBoxes(); ++b)
+    {
+      double centre[3] = { 0.0, 0.0, 0.0 }, corners[24], partCorners[24];
+      slabs->GetRestCorners(b, corners);
+      for (int c = 0; c < 8; ++c)
+      {
+        centre[axis] += corners[3 * c + axis] / 8.0;
+      }
+      for (vtkIdType part = 0; part < parts->GetNumberOfBoxes(); ++part)
+      {
+        parts->GetRestCorners(part, partCorners);
+        double low = partCorners[axis], high = partCorners[axis];
+        for (int c = 1; c < 8; ++c)
+        {
+          low = std::min(low, partCorners[3 * c + axis]);
+          high = std::max(high, partCorners[3 * c + axis]);
+        }
+        if (centre[axis] >= low && centre[axis] <= high)
+        {
+          logic->SetBoxLabel(b, parts->GetBoxLabel(part));
+        }
+      }
+    }
+  }
+  vtkCameraRig* rig = lightField->GetRig();
+  vtkNew<vtkCamera> camera;
+  vtkLightFieldSceneLogic::OrbitCamera(rig, 0.37, 1.2, 0.0, rig->GetViewAngle(0), camera);
+  logic->SetCamera(camera);
+  logic->ClearUndo();
+  return logic;
+}
+
+/// `lfd bench --studio`: the editing view's frame times during a recorded drag.
+void StudioBench(int repeat)
+{
+  std::printf("threads: %d (vtkSMPTools, %s backend)\n",
+    vtkSMPTools::GetEstimatedNumberOfThreads(),
+    vtkSMPTools::GetBackend());
+  std::printf("%-34s %9s %6s %9s %9s %9s %9s %9s\n",
+    "editor, 800x600, drag of a corner",
+    "drag ms",
+    "fps",
+    "coarse",
+    "release",
+    "full",
+    "still ms",
+    "boxes");
+  SynthOptions options;
+  options.NoDepth = true;
+  auto lightField = Synthesize(options);
+  for (int boxes : { 3, 100 })
+  {
+    auto logic = FishScene(lightField, boxes);
+    const DragFigures figures = RecordedDrag(logic, repeat);
+    if (figures.Commands != 1)
+    {
+      Fail("bench --studio: the drag made " + std::to_string(figures.Commands) +
+        " commands instead of 1");
+    }
+    const std::string name = "fish, " + std::to_string(boxes) + " boxes";
+    const std::string coarse =
+      std::to_string(figures.Coarse[0]) + "x" + std::to_string(figures.Coarse[1]);
+    const std::string full =
+      std::to_string(figures.Full[0]) + "x" + std::to_string(figures.Full[1]);
+    std::printf("%-34s %9.2f %6.1f %9s %9.1f %9s %9.2f %9lld\n",
+      name.c_str(),
+      1000.0 * figures.Move,
+      1.0 / figures.Move,
+      coarse.c_str(),
+      1000.0 * figures.Release,
+      full.c_str(),
+      1000.0 * figures.Still,
+      static_cast<long long>(figures.Validated));
+  }
+  std::printf("(drag ms: median time from a mouse motion to its coarse frame over %d motions; "
+              "release: from the button release to the full-resolution frame; still ms: median "
+              "full-resolution frame; boxes: re-validated per motion; targets: 30 fps, 150 ms)\n",
+    repeat);
+}
+
 }
 
 void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands)
 {
   auto repeat = std::make_shared<int>(15);
   auto size = std::make_shared<int>(512);
+  auto studio = std::make_shared<bool>(false);
   vtkNew<vtkLightFieldCapture> captureLimits;
   auto* benchCommand = app.add_subcommand("bench",
     "print rays/s and ms/frame of the renderer on fixed scenes (median of repeated renders; "
@@ -126,6 +369,12 @@ void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
   numbers.Add(benchCommand, "--repeat", *repeat, 1, 1000, "renders per scene");
   numbers.Add(
     benchCommand, "--size", *size, 1, captureLimits->GetWidthMaxValue(), "image width and height");
-  commands.push_back({ benchCommand, [repeat, size] { Bench(*repeat, *size); }, true });
+  benchCommand->add_flag("--studio",
+    *studio,
+    "instead: the editing view of the Studio (vtkLightFieldEditor, 800x600): ms/frame during a "
+    "recorded corner drag (--repeat motions), release to full resolution, with 3 and 100 boxes");
+  commands.push_back({ benchCommand,
+    [repeat, size, studio] { *studio ? StudioBench(*repeat) : Bench(*repeat, *size); },
+    true });
 }
 }

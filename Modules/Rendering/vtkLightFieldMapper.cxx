@@ -59,7 +59,7 @@ struct vtkLightFieldMapper::Internals
   vtkNew<vtkTextureObject> Color;
   vtkNew<vtkTextureObject> Depth;
   std::vector<unsigned char> Rgba;
-  std::vector<float> WindowDepth;
+  vtkNew<vtkImageData> WindowDepth; ///< GetDepthImage()
 };
 
 //------------------------------------------------------------------------------
@@ -96,6 +96,12 @@ void vtkLightFieldMapper::SetCageData(vtkDataObject* cage)
 vtkLightFieldRenderer* vtkLightFieldMapper::GetLightFieldRenderer()
 {
   return this->Internal->Renderer;
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkLightFieldMapper::GetDepthImage()
+{
+  return this->Internal->WindowDepth;
 }
 
 //------------------------------------------------------------------------------
@@ -198,22 +204,31 @@ void vtkLightFieldMapper::Render(vtkRenderer* renderer)
   const double n = range[0], f = range[1];
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
   in.Rgba.resize(4 * pixels);
-  in.WindowDepth.resize(pixels);
+  int* dimensions = in.WindowDepth->GetDimensions();
+  if (dimensions[0] != width || dimensions[1] != height)
+  {
+    in.WindowDepth->SetDimensions(width, height, 1);
+    in.WindowDepth->AllocateScalars(VTK_FLOAT, 1);
+    in.WindowDepth->GetPointData()->GetScalars()->SetName("Depth");
+  }
+  auto* windowDepth = vtkFloatArray::SafeDownCast(in.WindowDepth->GetPointData()->GetScalars());
   for (vtkIdType p = 0; p < pixels; ++p)
   {
     const double z = depths->GetValue(p);
     std::copy(colors->GetPointer(3 * p), colors->GetPointer(3 * p) + 3, &in.Rgba[4 * p]);
     in.Rgba[4 * p + 3] = z > 0.0 ? 255 : 0;
     const double window = z > 0.0 ? lfd::DistanceToWindowDepth(z, n, f) : 1.0;
-    in.WindowDepth[p] = static_cast<float>(std::clamp(window, 0.0, 1.0));
+    windowDepth->SetValue(p, static_cast<float>(std::clamp(window, 0.0, 1.0)));
   }
+  windowDepth->Modified();
+  in.WindowDepth->Modified();
 
   in.Color->SetContext(window);
   in.Color->Create2DFromRaw(width, height, 4, VTK_UNSIGNED_CHAR, in.Rgba.data());
   in.Color->SetMinificationFilter(vtkTextureObject::Linear);
   in.Color->SetMagnificationFilter(vtkTextureObject::Linear);
   in.Depth->SetContext(window);
-  in.Depth->Create2DFromRaw(width, height, 1, VTK_FLOAT, in.WindowDepth.data());
+  in.Depth->Create2DFromRaw(width, height, 1, VTK_FLOAT, windowDepth->GetPointer(0));
   in.Depth->SetMinificationFilter(vtkTextureObject::Nearest);
   in.Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
 

@@ -20,6 +20,10 @@
  * (progressive refinement). An error of the view's computation is reported
  * as the mapper's own (see vtkLightFieldErrorObserver).
  *
+ * GetDepthImage() gives the depth the last render wrote, so that a widget
+ * drawn over the light field can tell which of its handles the object hides
+ * (vtkCageRepresentation::SetOccluderDepth()).
+ *
  * @sa vtkLightFieldActor vtkLightFieldRenderer
  */
 #ifndef vtkLightFieldMapper_h
@@ -30,6 +34,7 @@
 
 #include <memory> // For std::unique_ptr
 
+class vtkImageData;
 class vtkLightFieldRenderer;
 class vtkRenderer;
 class vtkWindow;
@@ -77,6 +82,16 @@ public:
    * while interacting).
    */
   vtkGetVector2Macro(LastImageSize, int);
+
+  /**
+   * The depth the last render wrote, one float per pixel of the computed
+   * image (LastImageSize: coarser than the viewport while interacting), in
+   * the renderer's z-buffer convention: 0 at the near clipping plane, 1 at
+   * the far one and where no ray hits the object. Pixel (i, j) counts from
+   * the viewport's lower left corner. Empty before the first render; the
+   * same object is refilled by each render.
+   */
+  vtkImageData* GetDepthImage();
 
   /**
    * Computes the view of `renderer`'s active camera and draws it.

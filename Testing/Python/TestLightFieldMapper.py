@@ -7,6 +7,8 @@ still)."""
 
 
 import lfdtesting as t
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow,
@@ -63,6 +65,21 @@ window.Render()
 t.check(tuple(mapper.GetLastImageSize()) == (300, 300), "still render at full resolution",
         mapper.GetLastImageSize())
 
+# The depth the mapper wrote (GetDepthImage) is the window's z-buffer where
+# the fish is: same convention and row order (the cage outline, drawn over
+# some fish pixels, is the only difference).
+depth = t.image_array(mapper.GetDepthImage())[..., 0]
+zbuffer = vtkFloatArray()
+window.GetZbufferData(0, 0, 299, 299, zbuffer)
+zbuffer = numpy_support.vtk_to_numpy(zbuffer).reshape(300, 300)[::-1]  # top row first, as image_array
+fish_mask = depth < 1.0
+same = float((abs(depth - zbuffer)[fish_mask] < 1e-6).mean())
+print("depth image: {} fish pixels, {:.3f} equal to the z-buffer".format(int(fish_mask.sum()), same))
+t.check(depth.shape == (300, 300) and fish_mask.sum() > 4000, "a depth image of the viewport's size with the fish in it",
+        (depth.shape, int(fish_mask.sum())))
+t.check(same > 0.95, "the depth image is the z-buffer where the fish is", same)
+t.check(bool((depth[~fish_mask] == 1.0).all()), "no fish: depth 1", float(depth[~fish_mask].min()))
+
 passed = t.matches_baseline("TestLightFieldMapper", window=window)
 t.check(passed, "fish and cage outline match the baseline", "passed" if passed else "differs (see {})".format(t.TEMP_DIR))
 
@@ -105,6 +122,8 @@ window.SetDesiredUpdateRate(15.0)
 window.Render()
 t.check(tuple(mapper.GetLastImageSize()) == (75, 75), "interactive render at a quarter resolution",
         mapper.GetLastImageSize())
+t.check(tuple(mapper.GetDepthImage().GetDimensions()) == (75, 75, 1), "and so is its depth image",
+        mapper.GetDepthImage().GetDimensions())
 window.SetDesiredUpdateRate(0.0001)
 window.Render()
 t.check(tuple(mapper.GetLastImageSize()) == (300, 300), "back to full resolution when still",

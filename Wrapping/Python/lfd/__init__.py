@@ -14,3 +14,4 @@ from .lfdDeformation import *  # noqa: F401,F403
 from .lfdRendering import *  # noqa: F401,F403
 from .lfdEvaluation import *  # noqa: F401,F403
 from .lfdScene import *  # noqa: F401,F403
+from .lfdWidgets import *  # noqa: F401,F403
