@@ -9,6 +9,7 @@
 
 #include "lfdConsole.h"
 #include "lfdFileUtilities.h"
+#include "lfdStagedFolder.h"
 
 #include "vtkCommand.h"
 #include "vtkLightFieldErrorObserver.h"
@@ -24,7 +25,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -32,8 +32,6 @@
 #include <string>
 #include <type_traits>
 #include <vector>
-
-#include <fnmatch.h>
 
 class vtkCamera;
 class vtkCameraRig;
@@ -125,13 +123,10 @@ void Run(Algorithm* algorithm, const std::string& what)
 }
 
 /**
- * A multi-file output folder written under a temporary sibling name
- * (lfd::io::TemporaryDirectoryName) and renamed onto its target by Commit()
- * only when complete: a command that fails leaves neither a partial folder
- * nor the temporary, and an existing target is replaced only on success.
- * Since the whole target is replaced, an existing one must hold nothing but
- * files the command writes (`patterns`, fnmatch globs): a folder of the
- * user's is never swept away.
+ * A command's multi-file output folder (lfd::scene::StagedFolder: written
+ * under a temporary sibling name, renamed onto `target` by Commit() only
+ * when complete, an existing target holding only `patterns`). A refusal
+ * fails the command naming the option: "--out <target>: ...".
  */
 class StagedFolder
 {
@@ -139,65 +134,29 @@ public:
   StagedFolder(const std::string& target,
     const std::string& command,
     const std::vector<std::string>& patterns)
-    : Target(lfd::io::TrimSeparators(target))
-    , Temporary(lfd::io::TemporaryDirectoryName(target))
   {
-    namespace fs = std::filesystem;
-    std::error_code error;
-    const fs::file_status status = fs::status(this->Target, error);
-    if (fs::exists(status) && !fs::is_directory(status))
+    std::string error;
+    if (!this->Folder.Open(target, command, patterns, error))
     {
-      Fail("--out " + this->Target + ": exists and is not a folder");
-    }
-    if (fs::is_directory(status))
-    {
-      for (const fs::directory_entry& entry : fs::directory_iterator(this->Target, error))
-      {
-        const std::string name = entry.path().filename().string();
-        if (std::none_of(patterns.begin(),
-              patterns.end(),
-              [&name](const std::string& pattern)
-              { return fnmatch(pattern.c_str(), name.c_str(), 0) == 0; }))
-        {
-          Fail("--out " + this->Target + ": holds '" + name + "', which " + command +
-            " does not write; it replaces the whole folder, so choose a new or empty one");
-        }
-      }
-    }
-    lfd::io::RemoveQuietly(this->Temporary);
-    if (!fs::create_directories(this->Temporary, error))
-    {
-      Fail("--out " + this->Target + ": cannot create " + this->Temporary + ": " + error.message());
+      Fail("--out " + error);
     }
   }
-  ~StagedFolder()
-  {
-    if (!this->Committed)
-    {
-      lfd::io::RemoveQuietly(this->Temporary);
-    }
-  }
-  StagedFolder(const StagedFolder&) = delete;
-  void operator=(const StagedFolder&) = delete;
 
   /// Where the command writes.
-  const std::string& GetPath() const { return this->Temporary; }
+  const std::string& GetPath() const { return this->Folder.GetPath(); }
 
   /// Replaces the target with the complete folder.
   void Commit()
   {
     std::string error;
-    if (!lfd::io::CommitDirectory(this->Temporary, this->Target, error))
+    if (!this->Folder.Commit(error))
     {
       Fail(error);
     }
-    this->Committed = true;
   }
 
 private:
-  std::string Target;
-  std::string Temporary;
-  bool Committed = false;
+  lfd::scene::StagedFolder Folder;
 };
 
 /**

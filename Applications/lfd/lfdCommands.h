@@ -76,17 +76,14 @@ void ImportMiddlebury(const std::string& par, const std::string& out, const std:
 //------------------------------------------------------------------------------
 // Novel views and animations (lfdRenderCommands.cxx), also used by bench and demo.
 
-/// A grid of thumbnails of the frames.
-vtkSmartPointer<vtkImageData> ContactSheet(const std::vector<vtkSmartPointer<vtkImageData>>& frames,
-  int columns,
-  int thumb);
-
 /**
  * Renders `frames` frames of a scene's keyframes (evenly from the first to
- * the last keyframe time) into out/frame_%04d.png, and an MP4 when ffmpeg is
- * installed. Returns the frames.
+ * the last keyframe time) into the folder `out` with
+ * vtkLightFieldAnimationWriter: frame_%04d.png, and animation.mp4 when
+ * ffmpeg is installed; its progress is said on stderr ("animating: frame
+ * 3/48"). Returns the frames' contact sheet.
  */
-std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldSceneLogic* scene,
+vtkSmartPointer<vtkImageData> RenderAnimation(vtkLightFieldSceneLogic* scene,
   vtkLightField* lightField,
   int frames,
   const std::string& out);

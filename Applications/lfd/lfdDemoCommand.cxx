@@ -112,10 +112,10 @@ void AnimateDemo(vtkLightFieldScene* scene,
   const std::string frameDir = "/frames" + suffix;
   vtkNew<vtkLightFieldSceneLogic> logic;
   logic->SetScene(scene);
-  const auto images = RenderAnimation(logic, lightField, frames, staged + frameDir);
+  const auto contactSheet = RenderAnimation(logic, lightField, frames, staged + frameDir);
   PrintAnimation(logic, frames, Seconds(start), staged + frameDir, out + frameDir);
   const std::string sheet = "/contact_sheet" + suffix + ".png";
-  WriteImage(ContactSheet(images, 6, 128), staged + sheet);
+  WriteImage(contactSheet, staged + sheet);
   std::printf("sheet     %s%s\n", out.c_str(), sheet.c_str());
 }
 

@@ -1,13 +1,14 @@
 // `lfd render`, `lfd animate` and `lfd lattice`: a scene's views out.
 #include "lfdCommands.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
 #include "vtkImageData.h"
-#include "vtkImageResize.h"
 #include "vtkLatticeCageFilter.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldAnimationWriter.h"
 #include "vtkLightFieldRenderer.h"
 #include "vtkLightFieldScene.h"
 #include "vtkMath.h"
@@ -29,35 +30,6 @@
 
 namespace lfd::cli
 {
-vtkSmartPointer<vtkImageData> ContactSheet(const std::vector<vtkSmartPointer<vtkImageData>>& frames,
-  int columns,
-  int thumb)
-{
-  const int rows = (static_cast<int>(frames.size()) + columns - 1) / columns;
-  auto sheet = vtkSmartPointer<vtkImageData>::New();
-  sheet->SetDimensions(columns * thumb, rows * thumb, 1);
-  sheet->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* out = static_cast<unsigned char*>(sheet->GetScalarPointer());
-  std::fill(out, out + 3 * columns * thumb * rows * thumb, 0);
-  for (std::size_t f = 0; f < frames.size(); ++f)
-  {
-    vtkNew<vtkImageResize> resize;
-    resize->SetInputData(frames[f]);
-    resize->SetOutputDimensions(thumb, thumb, 1);
-    resize->Update();
-    const auto* in = static_cast<unsigned char*>(resize->GetOutput()->GetScalarPointer());
-    const int col = static_cast<int>(f) % columns;
-    const int row = rows - 1 - static_cast<int>(f) / columns; // first frame top-left
-    for (int j = 0; j < thumb; ++j)
-    {
-      std::copy(in + 3 * j * thumb,
-        in + 3 * (j + 1) * thumb,
-        out + 3 * ((row * thumb + j) * columns * thumb + col * thumb));
-    }
-  }
-  return sheet;
-}
-
 namespace
 {
 void Render(const std::string& scenePath, const std::string& out, const double* time)
@@ -74,55 +46,41 @@ void Render(const std::string& scenePath, const std::string& out, const double* 
             << scene->GetScene()->GetHeight() << ") in " << Seconds(start) << " s\n";
 }
 
-/// Encodes frame_%04d.png of a folder into an MP4 with ffmpeg, when installed
-/// (the folder is staged: a failed encoding leaves nothing behind).
-void EncodeMovie(const std::string& frameDir, const std::string& movie)
+/// Says each step of an animation export on stderr, once: "animating: frame 3/48".
+void SayProgress(vtkObject* caller, unsigned long, void* clientData, void*)
 {
-  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0)
+  auto* said = static_cast<std::string*>(clientData);
+  const std::string text = static_cast<vtkLightFieldAnimationWriter*>(caller)->GetProgressText();
+  if (text != *said)
   {
-    return;
-  }
-  const std::string command = "ffmpeg -y -loglevel error -framerate 24 -i '" + frameDir +
-    "/frame_%04d.png' -pix_fmt yuv420p '" + movie + "'";
-  if (std::system(command.c_str()) != 0)
-  {
-    Fail("ffmpeg could not encode '" + movie + "'");
+    *said = text;
+    std::fprintf(stderr, "animating: %s\n", text.c_str());
   }
 }
-
-/// What `lfd animate` writes into its folder.
-const std::vector<std::string> AnimationFiles = { "frame_[0-9][0-9][0-9][0-9].png",
-  "animation.mp4" };
-
 }
 
-std::vector<vtkSmartPointer<vtkImageData>> RenderAnimation(vtkLightFieldSceneLogic* scene,
+vtkSmartPointer<vtkImageData> RenderAnimation(vtkLightFieldSceneLogic* scene,
   vtkLightField* lightField,
   int frames,
   const std::string& out)
 {
-  if (!vtksys::SystemTools::MakeDirectory(out))
+  vtkNew<vtkLightFieldAnimationWriter> writer;
+  writer->SetSceneLogic(scene);
+  writer->SetLightField(lightField);
+  writer->SetNumberOfFrames(frames);
+  writer->SetDirectoryName(out.c_str());
+  std::string said;
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetCallback(SayProgress);
+  progress->SetClientData(&said);
+  writer->AddObserver(vtkCommand::ProgressEvent, progress);
+  if (!writer->Write())
   {
-    Fail("cannot create the folder " + out);
+    Fail(""); // the writer said why
   }
-  vtkNew<vtkLightFieldRenderer> renderer;
-  std::vector<vtkSmartPointer<vtkImageData>> images;
-  for (int f = 0; f < frames; ++f)
-  {
-    const double time = scene->GetAnimationTime(f, frames);
-    auto cage = SceneCage(scene, lightField, &time);
-    scene->ConfigureRenderer(renderer, lightField, cage);
-    Run(renderer.Get(), "rendering frame " + std::to_string(f));
-    auto frame = vtkSmartPointer<vtkImageData>::New();
-    frame->DeepCopy(renderer->GetOutput());
-    char name[64];
-    std::snprintf(name, sizeof(name), "/frame_%04d.png", f);
-    WriteImage(frame, out + name);
-    images.push_back(frame);
-    std::fprintf(stderr, "animating: frame %d/%d\n", f + 1, frames);
-  }
-  EncodeMovie(out, out + "/animation.mp4");
-  return images;
+  auto sheet = vtkSmartPointer<vtkImageData>::New();
+  sheet->ShallowCopy(writer->GetContactSheet());
+  return sheet;
 }
 
 void PrintAnimation(vtkLightFieldSceneLogic* scene,
@@ -153,7 +111,7 @@ void Animate(const std::string& scenePath, int frames, const std::string& out)
     Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
   }
   auto lightField = ReadSceneLightField(scene);
-  StagedFolder folder(out, "lfd animate", AnimationFiles);
+  StagedFolder folder(out, "lfd animate", lfd::scene::AnimationFilePatterns());
   const double start = vtkTimerLog::GetUniversalTime();
   RenderAnimation(scene, lightField, frames, folder.GetPath());
   PrintAnimation(scene, frames, Seconds(start), folder.GetPath(), out);
