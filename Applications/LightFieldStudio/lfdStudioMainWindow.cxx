@@ -3,18 +3,23 @@
 #include "lfdStudioViews.h"
 
 #include "QVTKOpenGLNativeWidget.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkDeformationCage.h"
 #include "vtkGenericOpenGLRenderWindow.h"
-#include "vtkKeyframeInterpolator.h"
+#include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldAnimationWriter.h"
+#include "vtkLightFieldEditor.h"
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldScene.h"
 #include "vtkLightFieldSceneLogic.h"
+#include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 
 #include <QAction>
 #include <QActionGroup>
+#include <QApplication>
 #include <QCloseEvent>
 #include <QColor>
 #include <QComboBox>
@@ -27,9 +32,11 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
 #include <QSlider>
@@ -49,11 +56,12 @@ constexpr int ScrubSteps = 1000;
 constexpr int PlayIntervalMs = 40;
 
 /// The key bindings the Help dialog lists: the Studio's menus, then the
-/// main view's (VTK's trackball camera style).
+/// main view's (the cage widget's, vtkCageWidget, and VTK's trackball camera).
 const char* const Shortcuts[][2] = {
   { "Ctrl+O", "Open a scene (.json) or a light field (.lf)" },
   { "Ctrl+S", "Save the scene" },
   { "Ctrl+Shift+S", "Save the scene as" },
+  { "Ctrl+E", "Export the animation (frames, MP4, contact sheet)" },
   { "Ctrl+P", "Save a screenshot of the window (PNG)" },
   { "Ctrl+Z", "Undo (the Edit menu names the command)" },
   { "Ctrl+Shift+Z", "Redo" },
@@ -64,10 +72,17 @@ const char* const Shortcuts[][2] = {
   { "Alt+I", "Delete the selected keyframe" },
   { "Space", "Play / pause the animation" },
   { "F1", "This list" },
-  { "Left drag (view)", "Rotate the camera" },
+  { "Left drag on a corner (view)", "Move the corner (and the selection); one undoable command" },
+  { "Left click / Shift+left click (view)", "Select a corner / toggle it in the selection" },
+  { "B, then left drag (view)", "Rubber-band selection of the visible corners" },
+  { "A (view)", "Select every corner / clear the selection" },
+  { "G / R / S (view)", "Grab / rotate / scale the selection about its pivot" },
+  { "X / Y / Z, Shift+X / Y / Z (view)", "During G / R / S: constrain to an axis / a plane" },
+  { "Enter or left click / Esc or right click (view)", "Confirm / cancel G / R / S" },
+  { "Esc (view)", "Clear the selection" },
+  { "Left drag elsewhere (view)", "Rotate the camera" },
   { "Middle drag / Shift+left drag (view)", "Pan" },
   { "Right drag / wheel (view)", "Zoom" },
-  { "R (view)", "Frame the whole scene" },
 };
 
 QString Which(const QString& fileName)
@@ -84,6 +99,9 @@ lfdStudioMainWindow::lfdStudioMainWindow(QWidget* parent)
   this->setObjectName("LightFieldStudio");
   this->Errors->Observe(this->Logic);
   this->ViewWidget->setRenderWindow(this->RenderWindow);
+  // The camera moves as the Help dialog says (VTK's trackball).
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  this->RenderWindow->GetInteractor()->SetInteractorStyle(style);
   this->setCentralWidget(this->ViewWidget);
   this->Views = std::make_unique<lfdStudioViews>(this->Logic, this->RenderWindow);
   this->PlayTimer = new QTimer(this);
@@ -136,6 +154,10 @@ void lfdStudioMainWindow::CreateActions()
   file->addAction(tr("&Save"), this, &lfdStudioMainWindow::Save, QKeySequence::Save);
   file->addAction(
     tr("Save &As..."), this, &lfdStudioMainWindow::SaveAs, QKeySequence(tr("Ctrl+Shift+S")));
+  file->addAction(tr("&Export Animation..."),
+    this,
+    &lfdStudioMainWindow::ExportAnimation,
+    QKeySequence(tr("Ctrl+E")));
   file->addAction(tr("Save Screens&hot..."),
     this,
     &lfdStudioMainWindow::SaveScreenshot,
@@ -191,25 +213,13 @@ void lfdStudioMainWindow::CreateBoxesDock()
 {
   auto* panel = new QWidget;
   auto* layout = new QVBoxLayout(panel);
-  this->BoxTable = new QTableWidget(0, 3);
+  this->BoxTable = new QTableWidget(0, 2);
   this->BoxTable->setObjectName("Boxes");
-  this->BoxTable->setHorizontalHeaderLabels({ tr("Box"), tr("Label"), tr("Shown") });
+  this->BoxTable->setHorizontalHeaderLabels({ tr("Box"), tr("Label") });
   this->BoxTable->horizontalHeader()->setStretchLastSection(true);
   this->BoxTable->setSelectionBehavior(QAbstractItemView::SelectRows);
   this->BoxTable->setSelectionMode(QAbstractItemView::SingleSelection);
   this->BoxTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
-  connect(this->BoxTable,
-    &QTableWidget::itemChanged,
-    this,
-    [this](QTableWidgetItem* item)
-    {
-      // The "Shown" check box: a view setting, not a scene edit.
-      if (item->column() == 2 && item->row() < static_cast<int>(this->HiddenBoxes.size()))
-      {
-        this->HiddenBoxes[item->row()] = item->checkState() != Qt::Checked;
-        this->ShowTime(-1.0);
-      }
-    });
   layout->addWidget(this->BoxTable);
 
   auto* row = new QHBoxLayout;
@@ -588,9 +598,12 @@ void lfdStudioMainWindow::ShowTime(double time)
     // Nothing to show, or a refused keyframe (its error is in the status bar).
     this->ShownCage->Initialize();
   }
-  this->HiddenBoxes.resize(this->ShownCage->GetNumberOfBoxes(), false);
-  this->Views->SetCage(this->Logic->HasCage() ? this->ShownCage.Get() : nullptr, this->HiddenBoxes);
-  this->Render();
+  this->Views->ShowCage(time, this->ShownCage);
+  // During a drag the editor renders each step itself.
+  if (!this->Views->GetEditor()->GetInteracting())
+  {
+    this->Render();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -611,9 +624,14 @@ void lfdStudioMainWindow::Render()
 //------------------------------------------------------------------------------
 void lfdStudioMainWindow::CageModified(vtkObject*, unsigned long, void*)
 {
+  if (this->Views->GetEditor()->GetInteracting())
+  {
+    // A drag moves points only: the boxes and labels stay as listed.
+    this->ShowTime(-1.0);
+    return;
+  }
   vtkDeformationCage* cage = this->Logic->GetCage();
   const int boxes = static_cast<int>(cage->GetNumberOfBoxes());
-  this->HiddenBoxes.resize(boxes, false);
   const QSignalBlocker blocker(this->BoxTable);
   this->BoxTable->setRowCount(boxes);
   for (int box = 0; box < boxes; ++box)
@@ -624,12 +642,8 @@ void lfdStudioMainWindow::CageModified(vtkObject*, unsigned long, void*)
     this->Views->GetLabelColour(cage->GetBoxLabel(box), rgb);
     label->setBackground(QColor(rgb[0], rgb[1], rgb[2]));
     label->setForeground(qGray(rgb[0], rgb[1], rgb[2]) > 128 ? Qt::black : Qt::white);
-    auto* shown = new QTableWidgetItem;
-    shown->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled);
-    shown->setCheckState(this->HiddenBoxes[box] ? Qt::Unchecked : Qt::Checked);
     this->BoxTable->setItem(box, 0, name);
     this->BoxTable->setItem(box, 1, label);
-    this->BoxTable->setItem(box, 2, shown);
   }
   this->ShowTime(-1.0);
 }
@@ -655,7 +669,6 @@ void lfdStudioMainWindow::SettingsModified(vtkObject*, unsigned long, void*)
   this->FocalDistance->setValue(scene->GetFocalDistance());
   this->Subdivision->setValue(scene->GetSubdivision());
   this->WidenedSearch->setValue(scene->GetWidenedSearch());
-  this->Views->ApplySettings();
   this->Render();
 }
 
@@ -749,6 +762,74 @@ void lfdStudioMainWindow::SaveAs()
   {
     this->SaveSceneAs(fileName);
   }
+}
+
+//------------------------------------------------------------------------------
+void lfdStudioMainWindow::ExportAnimation()
+{
+  const QString folder = QFileDialog::getSaveFileName(this,
+    tr("Export Animation to Folder"),
+    QSettings().value("files/folder").toString() + "/animation");
+  if (folder.isEmpty())
+  {
+    return;
+  }
+  bool ok = false;
+  const int frames =
+    QInputDialog::getInt(this, tr("Export Animation"), tr("Frames"), 48, 1, 100000, 1, &ok);
+  if (ok)
+  {
+    this->ExportAnimationTo(folder, frames);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool lfdStudioMainWindow::ExportAnimationTo(const QString& folder, int frames)
+{
+  vtkNew<vtkLightFieldAnimationWriter> writer;
+  writer->SetSceneLogic(this->Logic);
+  const QByteArray path = folder.toLocal8Bit();
+  writer->SetDirectoryName(path.constData());
+  writer->SetNumberOfFrames(frames);
+  writer->WriteContactSheetOn();
+  QProgressDialog progress(tr("Exporting the animation..."), tr("Cancel"), 0, 1000, this);
+  progress.setWindowModality(Qt::WindowModal);
+  progress.setMinimumDuration(0);
+  // The writer renders in this thread: its progress events keep the dialog
+  // (and its Cancel button) alive.
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progress);
+  onProgress->SetCallback(
+    [](vtkObject* caller, unsigned long, void* dialog, void* fraction)
+    {
+      auto* shown = static_cast<QProgressDialog*>(dialog);
+      auto* exporting = static_cast<vtkLightFieldAnimationWriter*>(caller);
+      shown->setValue(static_cast<int>(1000.0 * *static_cast<double*>(fraction)));
+      shown->setLabelText(QString::fromUtf8(exporting->GetProgressText()));
+      QApplication::processEvents();
+      exporting->SetAbort(shown->wasCanceled());
+    });
+  writer->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  this->Errors->Observe(writer);
+  const bool written = writer->Write();
+  this->Errors->StopObserving(writer);
+  progress.reset();
+  if (written)
+  {
+    this->statusBar()->showMessage(tr("Exported %1 frames to %2%3")
+                                     .arg(writer->GetNumberOfFramesWritten())
+                                     .arg(folder)
+                                     .arg(writer->GetMovieWritten() ? " (animation.mp4)" : ""));
+  }
+  else if (writer->GetAborted())
+  {
+    this->statusBar()->showMessage(tr("Export cancelled: %1 is unchanged").arg(folder));
+  }
+  else
+  {
+    this->ReportErrors();
+  }
+  return written;
 }
 
 //------------------------------------------------------------------------------

@@ -60,6 +60,12 @@ public:
   /// the status bar.
   bool SaveSceneAs(const QString& fileName);
 
+  /// Exports the animation of `frames` frames into `folder` (frames, MP4
+  /// with ffmpeg, contact sheet; vtkLightFieldAnimationWriter) behind a
+  /// progress dialog whose Cancel stops it; false when cancelled or refused
+  /// (the reason in the status bar).
+  bool ExportAnimationTo(const QString& folder, int frames);
+
   /// Shows the scene's cage at `time` (interpolated through the keyframes)
   /// in the views; the timeline's slider does this.
   void ShowTime(double time);
@@ -78,6 +84,7 @@ public Q_SLOTS:
   void Open();
   void Save();
   void SaveAs();
+  void ExportAnimation();
   void SaveScreenshot();
   void Undo();
   void Redo();
@@ -129,7 +136,6 @@ private:
   /// The undo index when the scene was opened or saved: the title shows
   /// "*" when the index differs (the scene has unsaved edits).
   int SavedUndoIndex = 0;
-  std::vector<bool> HiddenBoxes;
 
   QAction* UndoAction = nullptr;
   QAction* RedoAction = nullptr;

@@ -1,7 +1,6 @@
 #include "lfdStudioViews.h"
 
 #include "vtkActor.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkCellArray.h"
@@ -14,9 +13,8 @@
 #include "vtkImageMapper3D.h"
 #include "vtkLabelPalette.h"
 #include "vtkLightField.h"
-#include "vtkLightFieldActor.h"
+#include "vtkLightFieldEditor.h"
 #include "vtkLightFieldMapper.h"
-#include "vtkLightFieldRenderer.h"
 #include "vtkLightFieldScene.h"
 #include "vtkLightFieldSceneLogic.h"
 #include "vtkOutlineSource.h"
@@ -31,7 +29,6 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <string>
 
 namespace
@@ -59,11 +56,9 @@ vtkSmartPointer<vtkUnsignedCharArray> Palette(vtkLightField* lightField)
   return palette;
 }
 
-/// The 12 edges of each shown box of `cage` (deformed corners, vtkHexahedron
+/// The 12 edges of each box of `cage` (deformed corners, vtkHexahedron
 /// order), each coloured by its box's label.
-vtkSmartPointer<vtkPolyData> CageEdgeLines(vtkDeformationCage* cage,
-  const std::vector<bool>& hidden,
-  vtkUnsignedCharArray* palette)
+vtkSmartPointer<vtkPolyData> CageEdgeLines(vtkDeformationCage* cage, vtkUnsignedCharArray* palette)
 {
   static const int edges[12][2] = { { 0, 1 },
     { 1, 2 },
@@ -86,8 +81,7 @@ vtkSmartPointer<vtkPolyData> CageEdgeLines(vtkDeformationCage* cage,
   for (vtkIdType box = 0; box < boxes; ++box)
   {
     double corners[24];
-    if ((box < static_cast<vtkIdType>(hidden.size()) && hidden[box]) ||
-      !cage->GetDeformedCorners(box, corners))
+    if (!cage->GetDeformedCorners(box, corners))
     {
       continue;
     }
@@ -234,11 +228,10 @@ lfdStudioViews::lfdStudioViews(vtkLightFieldSceneLogic* logic, vtkRenderWindow* 
   : Logic(logic)
   , Window(window)
 {
-  this->LightFieldActor->SetMapper(this->Mapper);
-  this->Main->AddActor(this->CageEdges);
-  this->Main->AddActor2D(this->FrameTime);
-  SetCaption(this->FrameTime, "");
-  this->Main->AddObserver(vtkCommand::EndEvent, this, &lfdStudioViews::ShowFrameTime);
+  this->Editor->SetLogic(logic);
+  this->Editor->SetRenderer(this->Main);
+  // The Studio's Edit menu has Ctrl+Z / Ctrl+Shift+Z.
+  this->Editor->UndoKeysOff();
   this->Camera->AddActor(this->CameraImage);
   this->Camera->AddActor2D(this->CameraCaption);
   this->ProjectorView->AddActor(this->ProjectorImage);
@@ -254,10 +247,7 @@ lfdStudioViews::lfdStudioViews(vtkLightFieldSceneLogic* logic, vtkRenderWindow* 
 }
 
 //------------------------------------------------------------------------------
-lfdStudioViews::~lfdStudioViews()
-{
-  this->Main->RemoveObservers(vtkCommand::EndEvent);
-}
+lfdStudioViews::~lfdStudioViews() = default;
 
 //------------------------------------------------------------------------------
 void lfdStudioViews::SetLayout(int layout)
@@ -297,33 +287,29 @@ void lfdStudioViews::SetLayout(int layout)
 void lfdStudioViews::SetLightField(vtkLightField* lightField)
 {
   this->LightField = lightField;
-  this->Main->RemoveActor(this->LightFieldActor);
+  // The editor reads the light field through the logic (and says why not);
+  // without one there is nothing to edit on.
   if (lightField)
   {
-    this->Mapper->SetInputData(lightField);
-    this->Main->AddActor(this->LightFieldActor);
+    this->Editor->Initialize();
   }
-  this->ApplySettings();
-  this->ResetCamera();
   this->SetCameraView(this->CameraView);
   this->SetProjector(this->Projector);
   this->UpdateRig();
 }
 
 //------------------------------------------------------------------------------
-void lfdStudioViews::SetCage(vtkDeformationCage* cage, const std::vector<bool>& hidden)
+void lfdStudioViews::ShowCage(double time, vtkDeformationCage* cage)
 {
-  auto palette = Palette(this->LightField);
-  this->Mapper->SetCageData(cage);
-  ShowPolyData(this->CageEdges, CageEdgeLines(cage, hidden, palette), 2.0);
-  ShowPolyData(this->RigCageEdges, CageEdgeLines(cage, hidden, palette), 1.0);
-}
-
-//------------------------------------------------------------------------------
-void lfdStudioViews::ApplySettings()
-{
-  this->Logic->ApplyView(this->Mapper->GetLightFieldRenderer());
-  this->Main->SetBackground(this->Logic->GetScene()->GetBackground());
+  if (this->LightField && time >= 0.0)
+  {
+    this->Editor->ShowTime(time);
+  }
+  else if (this->LightField)
+  {
+    this->Editor->ShowCurrentCage();
+  }
+  ShowPolyData(this->RigCageEdges, CageEdgeLines(cage, Palette(this->LightField)), 1.0);
 }
 
 //------------------------------------------------------------------------------
@@ -367,7 +353,7 @@ void lfdStudioViews::GetLabelColour(int label, unsigned char rgb[3])
 //------------------------------------------------------------------------------
 void lfdStudioViews::SetFrameTimeVisible(bool visible)
 {
-  this->FrameTime->SetVisibility(visible);
+  this->Editor->GetFrameTimeActor()->SetVisibility(visible);
 }
 
 //------------------------------------------------------------------------------
@@ -383,9 +369,9 @@ vtkRenderer* lfdStudioViews::GetMainRenderer()
 }
 
 //------------------------------------------------------------------------------
-vtkLightFieldMapper* lfdStudioViews::GetMapper()
+vtkLightFieldEditor* lfdStudioViews::GetEditor()
 {
-  return this->Mapper;
+  return this->Editor;
 }
 
 //------------------------------------------------------------------------------
@@ -438,7 +424,7 @@ void lfdStudioViews::UpdateRig()
   vtkNew<vtkOutlineSource> bounds;
   if (this->LightField)
   {
-    bounds->SetBounds(this->Mapper->GetBounds());
+    bounds->SetBounds(this->Editor->GetMapper()->GetBounds());
   }
   bounds->Update();
   ShowPolyData(this->RigBounds, bounds->GetOutput(), 1.0);
@@ -458,19 +444,4 @@ void lfdStudioViews::UpdateRig()
   camera->Elevation(35.0);
   camera->OrthogonalizeViewUp();
   this->Rig->ResetCamera();
-}
-
-//------------------------------------------------------------------------------
-void lfdStudioViews::ShowFrameTime(vtkObject*, unsigned long, void*)
-{
-  // The text is that of the frame just drawn; it shows on the next one.
-  char text[64];
-  const int* size = this->Mapper->GetLastImageSize();
-  std::snprintf(text,
-    sizeof(text),
-    "%.1f ms  (%d x %d)",
-    1000.0 * this->Main->GetLastRenderTimeInSeconds(),
-    size[0],
-    size[1]);
-  this->FrameTime->SetInput(text);
 }

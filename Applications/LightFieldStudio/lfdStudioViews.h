@@ -6,17 +6,17 @@
  * lfdStudioViews is Qt-free: it lays out four vtkRenderers as viewports of
  * the window it is given (the Studio's QVTKOpenGLNativeWidget window, or a
  * plain vtkRenderWindow) and fills them from a vtkLightFieldSceneLogic:
- * - the main view draws the deformed light field (vtkLightFieldActor, which
- *   renders coarse while the interactor drags and full resolution at rest),
- *   the cage's deformed boxes as edges coloured by their label's palette
- *   colour, and the last frame time;
+ * - the main view is a vtkLightFieldEditor in the main renderer: the
+ *   deformed light field, the cage widget whose drags are the logic's
+ *   commands, progressive refinement and the frame time;
  * - the gantry camera view shows one captured view's photo in one pass
  *   (coaxial, coded, flood, label in palette colours, depth and confidence
  *   in grey);
  * - the projector view shows one projector's colour mask;
  * - the rig view (3D) shows the camera centres coloured by ring row, the
  *   projector centres, the deformed cage and the light field's bounds.
- * Every view reads the logic; none edits it.
+ * Only the main view's cage widget edits the logic (through the editor);
+ * the other views read it.
  */
 #ifndef lfdStudioViews_h
 #define lfdStudioViews_h
@@ -24,16 +24,13 @@
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 
-#include <vector>
-
 class vtkActor;
 class vtkActor2D;
 class vtkDeformationCage;
 class vtkImageActor;
 class vtkImageData;
 class vtkLightField;
-class vtkLightFieldActor;
-class vtkLightFieldMapper;
+class vtkLightFieldEditor;
 class vtkLightFieldSceneLogic;
 class vtkObject;
 class vtkPolyData;
@@ -64,18 +61,14 @@ public:
   int GetLayout() const { return this->CurrentLayout; }
   ///@}
 
-  /// Shows `lightField` (null: none) in every view, with the scene's
-  /// settings and camera.
+  /// Shows the logic's scene anew (after a load) in every view: its light
+  /// field (null: none; the main view then shows nothing), settings and
+  /// camera.
   void SetLightField(vtkLightField* lightField);
 
-  /// Shows `cage` (the scene's current cage, or its pose at a keyframe time)
-  /// in the main and rig views; boxes whose entry in `hidden` is true are
-  /// not drawn.
-  void SetCage(vtkDeformationCage* cage, const std::vector<bool>& hidden);
-
-  /// Applies the scene's render settings (focal distance, subdivision,
-  /// widened search, object threshold, background) to the main view.
-  void ApplySettings();
+  /// Shows the scene at `time` of its keyframes (a negative time: the
+  /// current, editable cage); `cage` is that cage, drawn in the rig view.
+  void ShowCage(double time, vtkDeformationCage* cage);
 
   /// Puts the main view's camera where the scene's camera is.
   void ResetCamera();
@@ -101,13 +94,12 @@ public:
   vtkLightField* GetLightField();
 
   vtkRenderer* GetMainRenderer();
-  vtkLightFieldMapper* GetMapper();
+  vtkLightFieldEditor* GetEditor();
 
 private:
   void UpdateCameraImage();
   void UpdateProjectorImage();
   void UpdateRig();
-  void ShowFrameTime(vtkObject* caller, unsigned long event, void* data);
 
   vtkLightFieldSceneLogic* Logic;
   vtkRenderWindow* Window;
@@ -121,11 +113,8 @@ private:
   vtkNew<vtkRenderer> Camera;
   vtkNew<vtkRenderer> ProjectorView;
   vtkNew<vtkRenderer> Rig;
-  vtkNew<vtkLightFieldMapper> Mapper;
-  vtkNew<vtkLightFieldActor> LightFieldActor;
-  vtkNew<vtkActor> CageEdges;
+  vtkNew<vtkLightFieldEditor> Editor;
   vtkNew<vtkActor> RigCageEdges;
-  vtkNew<vtkTextActor> FrameTime;
   vtkNew<vtkImageActor> CameraImage;
   vtkNew<vtkTextActor> CameraCaption;
   vtkNew<vtkImageActor> ProjectorImage;

@@ -1,7 +1,8 @@
 // LightField Studio's main window driven in-process as a user drives it:
-// open the demo scene, orbit the view with the mouse, a drag of a cage point
-// (one command), a refused fold, two keyframes, save (equals the committed
-// scene baseline), a four-up screenshot (equals the committed baseline
+// open the demo scene, orbit the view with the mouse, drag a corner of the
+// cage widget with the mouse (one command), a refused fold, two keyframes,
+// save (equals the committed scene baseline), export the animation (and
+// cancel an export), a four-up screenshot (equals the committed baseline
 // image), undo of everything (the scene saves byte for byte as loaded), a
 // malformed scene (its error in the status bar, the scene kept), a light
 // field with projectors, and the boxes dock. Run under Xvfb with
@@ -11,11 +12,14 @@
 #include "lfdStudioViews.h"
 
 #include "QVTKOpenGLNativeWidget.h"
+#include "vtkCageRepresentation.h"
+#include "vtkCageWidget.h"
 #include "vtkCamera.h"
 #include "vtkCell.h"
 #include "vtkDeformationCage.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
+#include "vtkLightFieldEditor.h"
 #include "vtkLightFieldScene.h"
 #include "vtkLightFieldSceneLogic.h"
 #include "vtkNew.h"
@@ -29,9 +33,11 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QListWidget>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
 #include <QSlider>
@@ -40,12 +46,29 @@
 #include <QSurfaceFormat>
 #include <QTableWidget>
 #include <QTest>
+#include <QTimer>
 
 #include <cmath>
 #include <cstring>
 
 namespace
 {
+/// Display position (x, y, z; y up) of a world point in `renderer`.
+void ToDisplay(vtkRenderer* renderer, const double world[3], double display[3])
+{
+  renderer->SetWorldPoint(world[0], world[1], world[2], 1.0);
+  renderer->WorldToDisplay();
+  renderer->GetDisplayPoint(display);
+}
+
+/// A mouse event with the left button held or not, as a user's.
+void SendMouse(QWidget* view, QEvent::Type type, const QPoint& at, Qt::MouseButtons held)
+{
+  const Qt::MouseButton button = type == QEvent::MouseMove ? Qt::NoButton : Qt::LeftButton;
+  QMouseEvent event(type, at, button, held, Qt::NoModifier);
+  QApplication::sendEvent(view, &event);
+}
+
 QString Env(const char* name)
 {
   return QString::fromLocal8Bit(qgetenv(name));
@@ -139,18 +162,15 @@ private Q_SLOTS:
     vtkCamera* camera = this->Window->GetViews()->GetMainRenderer()->GetActiveCamera();
     double before[3];
     camera->GetPosition(before);
-    const QPoint centre = view->rect().center();
-    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, centre);
+    // Low on the view, below the fish and its cage: no corner there.
+    const QPoint from(view->width() / 2, view->height() - 20);
+    SendMouse(view, QEvent::MouseMove, from, Qt::NoButton);
+    SendMouse(view, QEvent::MouseButtonPress, from, Qt::LeftButton);
     for (int step = 1; step <= 5; ++step)
     {
-      QMouseEvent move(QEvent::MouseMove,
-        centre + QPoint(8 * step, 0),
-        Qt::NoButton,
-        Qt::LeftButton,
-        Qt::NoModifier);
-      QApplication::sendEvent(view, &move);
+      SendMouse(view, QEvent::MouseMove, from + QPoint(8 * step, 0), Qt::LeftButton);
     }
-    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(40, 0));
+    SendMouse(view, QEvent::MouseButtonRelease, from + QPoint(40, 0), Qt::NoButton);
     double after[3];
     camera->GetPosition(after);
     QVERIFY(std::abs(after[0] - before[0]) + std::abs(after[2] - before[2]) > 1e-3);
@@ -164,20 +184,47 @@ private Q_SLOTS:
 
   void dragOnePoint()
   {
-    // A drag as the cage widget makes it: one interaction, several moves
-    // of the same point, one command.
-    vtkDeformationCage* cage = this->Logic()->GetCage();
+    // A drag of a visible corner of the cage widget with QTest mouse
+    // events on the VTK widget: one interaction, one command.
+    QWidget* view = this->Window->GetViewWidget();
+    vtkRenderer* renderer = this->Window->GetViews()->GetMainRenderer();
+    vtkCageRepresentation* cage =
+      this->Window->GetViews()->GetEditor()->GetWidget()->GetCageRepresentation();
+    // The first corner the widget can pick that is well inside the view.
+    const vtkIdType points = this->Logic()->GetCage()->GetNumberOfPoints();
+    vtkIdType corner = 0;
+    double world[3];
     double start[3];
-    cage->GetDeformedPoint(5, start);
-    this->Logic()->BeginInteraction();
-    for (int step = 1; step <= 5; ++step)
+    for (; corner < points; ++corner)
     {
-      QVERIFY(this->Logic()->MovePoint(5, start[0], start[1] + 0.01 * step, start[2]));
+      this->Logic()->GetCage()->GetDeformedPoint(corner, world);
+      ToDisplay(renderer, world, start);
+      if (cage->IsPointVisible(corner) && start[0] > 10 && start[0] < view->width() - 10 &&
+        start[1] > 30 && start[1] < view->height() - 10)
+      {
+        break;
+      }
     }
-    this->Logic()->EndInteraction();
+    QVERIFY(corner < points);
+    const QPoint from(static_cast<int>(std::lround(start[0])),
+      view->height() - 1 - static_cast<int>(std::lround(start[1])));
+    SendMouse(view, QEvent::MouseMove, from, Qt::NoButton);
+    SendMouse(view, QEvent::MouseButtonPress, from, Qt::LeftButton);
+    for (int step = 1; step <= 4; ++step)
+    {
+      SendMouse(view, QEvent::MouseMove, from - QPoint(0, 5 * step), Qt::LeftButton);
+    }
+    SendMouse(view, QEvent::MouseButtonRelease, from - QPoint(0, 20), Qt::NoButton);
     QCOMPARE(this->Logic()->GetNumberOfCommands(), 1);
     QCOMPARE(this->UndoText(), QString("Undo Move 1 point"));
     QCOMPARE(this->Window->windowTitle(), QString("loaded.json* - LightField Studio"));
+    // The corner followed the cursor: 20 pixels up on the screen.
+    double end[3];
+    this->Logic()->GetCage()->GetDeformedPoint(corner, world);
+    ToDisplay(renderer, world, end);
+    QVERIFY2(std::abs(end[0] - start[0]) < 0.5 && std::abs(end[1] - start[1] - 20.0) < 0.5,
+      qPrintable(
+        QString("display %1 %2 from %3 %4").arg(end[0]).arg(end[1]).arg(start[0]).arg(start[1])));
   }
 
   void refusedFold()
@@ -195,7 +242,7 @@ private Q_SLOTS:
     QCOMPARE(this->Status(),
       this->Demo +
         "/loaded.json: cage: box 0 (label 3): the deformed box folds (Jacobian determinant "
-        "-0.330528 at uvw (0, 0, 0), up to 0.0661055 elsewhere)");
+        "-0.317699 at uvw (0, 0, 0), up to 0.0661055 elsewhere)");
     double now[3];
     cage->GetDeformedPoint(corner0, now);
     QCOMPARE(now[0], corners[0]);
@@ -234,6 +281,33 @@ private Q_SLOTS:
       saved == baseline, "studio.json differs from the baseline (candidate in the temp dir)");
   }
 
+  void exportAnimation()
+  {
+    const QString folder = this->Demo + "/export";
+    QVERIFY(this->Window->ExportAnimationTo(folder, 2));
+    QVERIFY2(
+      this->Status().startsWith("Exported 2 frames to " + folder), qPrintable(this->Status()));
+    for (const char* file : { "frame_0000.png", "frame_0001.png", "contact_sheet.png" })
+    {
+      QVERIFY2(QFile::exists(folder + "/" + file), file);
+    }
+    QVERIFY(!QFile::exists(folder + "/frame_0002.png"));
+
+    // Cancel in the progress dialog: nothing written, the folder unchanged.
+    const QString cancelled = this->Demo + "/cancelled";
+    QDir(cancelled).removeRecursively();
+    QTimer::singleShot(0,
+      [this]
+      {
+        QProgressDialog* dialog = this->Window->findChild<QProgressDialog*>();
+        QVERIFY(dialog);
+        dialog->cancel();
+      });
+    QVERIFY(!this->Window->ExportAnimationTo(cancelled, 3));
+    QCOMPARE(this->Status(), "Export cancelled: " + cancelled + " is unchanged");
+    QVERIFY(!QDir(cancelled).exists());
+  }
+
   void screenshotEqualsBaseline()
   {
     this->Window->SetLayout(lfdStudioViews::FOUR_UP);
@@ -241,6 +315,8 @@ private Q_SLOTS:
     this->Window->findChild<QSlider*>("GantryView")->setValue(3);
     this->Window->findChild<QSlider*>("Scrub")->setValue(0);
     this->Window->ShowTime(-1.0);
+    // The last message names a folder of this build.
+    this->Window->statusBar()->clearMessage();
     QTest::qWait(100);
     vtkNew<vtkTrivialProducer> image;
     image->SetOutput(ToVTK(this->Window->grab().toImage()));
