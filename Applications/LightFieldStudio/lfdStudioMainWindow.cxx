@@ -5,6 +5,7 @@
 #include "QVTKOpenGLNativeWidget.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
 #include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkInteractorStyleTrackballCamera.h"
@@ -528,6 +529,13 @@ bool lfdStudioMainWindow::OpenFile(const QString& fileName)
     this->Logic->NewScene();
     this->Logic->GetScene()->SetLightFieldPath(probe->GetScene()->GetLightFieldPath());
     this->Logic->SetLightField(probe->GetLightField());
+    // A view from outside the ring, as `lfd demo` frames its scenes.
+    vtkCameraRig* rig = probe->GetLightField()->GetRig();
+    if (rig && rig->HasCylinder())
+    {
+      vtkLightFieldSceneLogic::OrbitCamera(
+        rig, 0.0, 1.15, 0.0, 0.7 * rig->GetViewAngle(0), this->Logic->GetScene()->GetCamera());
+    }
     this->SceneFile.clear();
   }
   else

@@ -155,15 +155,22 @@ vtkSmartPointer<vtkImageData> SliceAsRGB(vtkDataArray* array,
   return image;
 }
 
-/// Frames a 2D image view: parallel projection, the image filling the height.
+/// Frames a 2D image view: parallel projection, the whole image in the
+/// viewport as it is laid out now.
 void FrameImage(vtkRenderer* renderer, vtkImageData* image)
 {
+  if (!image)
+  {
+    return;
+  }
   renderer->ResetCamera();
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->ParallelProjectionOn();
   int dims[3];
   image->GetDimensions(dims);
-  camera->SetParallelScale(0.5 * std::max(dims[1], 1));
+  const double aspect = renderer->GetRenderWindow() ? renderer->GetTiledAspectRatio() : 1.0;
+  camera->SetParallelScale(
+    0.5 * std::max(dims[1], 1) * std::max(1.0, dims[0] / (aspect * dims[1])));
 }
 
 void SetCaption(vtkTextActor* caption, const std::string& text)
@@ -281,6 +288,8 @@ void lfdStudioViews::SetLayout(int layout)
     this->Window->AddRenderer(this->ProjectorView);
     this->Window->AddRenderer(this->Rig);
   }
+  FrameImage(this->Camera, vtkImageData::SafeDownCast(this->CameraImage->GetInput()));
+  FrameImage(this->ProjectorView, vtkImageData::SafeDownCast(this->ProjectorImage->GetInput()));
 }
 
 //------------------------------------------------------------------------------

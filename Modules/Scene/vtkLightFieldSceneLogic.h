@@ -159,10 +159,11 @@ public:
 
   ///@{
   /**
-   * How GetCageAtTime() interpolates the keyframes:
-   * vtkKeyframeInterpolator::CATMULL_ROM (the default, what `lfd animate`
-   * renders) or vtkKeyframeInterpolator::LINEAR (a preview setting of the
-   * Studio's timeline; not part of scene.json, not an undoable command).
+   * How GetCageAtTime() (and so an animation export of this logic)
+   * interpolates the keyframes: vtkKeyframeInterpolator::CATMULL_ROM (the
+   * default, what `lfd animate` renders) or vtkKeyframeInterpolator::LINEAR
+   * (the Studio's timeline choice; not part of scene.json, not an undoable
+   * command).
    */
   vtkSetClampMacro(Interpolation, int, 0, 1);
   vtkGetMacro(Interpolation, int);
