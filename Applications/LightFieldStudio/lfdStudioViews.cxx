@@ -8,6 +8,7 @@
 #include "vtkCoordinate.h"
 #include "vtkDataArray.h"
 #include "vtkDeformationCage.h"
+#include "vtkHexahedron.h"
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
@@ -60,18 +61,6 @@ vtkSmartPointer<vtkUnsignedCharArray> Palette(vtkLightField* lightField)
 /// order), each coloured by its box's label.
 vtkSmartPointer<vtkPolyData> CageEdgeLines(vtkDeformationCage* cage, vtkUnsignedCharArray* palette)
 {
-  static const int edges[12][2] = { { 0, 1 },
-    { 1, 2 },
-    { 2, 3 },
-    { 3, 0 },
-    { 4, 5 },
-    { 5, 6 },
-    { 6, 7 },
-    { 7, 4 },
-    { 0, 4 },
-    { 1, 5 },
-    { 2, 6 },
-    { 3, 7 } };
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkUnsignedCharArray> colours;
@@ -92,9 +81,10 @@ vtkSmartPointer<vtkPolyData> CageEdgeLines(vtkDeformationCage* cage, vtkUnsigned
     }
     unsigned char rgb[3];
     LabelColour(palette, cage->GetBoxLabel(box), rgb);
-    for (const auto& edge : edges)
+    for (vtkIdType edge = 0; edge < 12; ++edge)
     {
-      const vtkIdType ends[2] = { first + edge[0], first + edge[1] };
+      const vtkIdType* corner = vtkHexahedron::GetEdgeArray(edge);
+      const vtkIdType ends[2] = { first + corner[0], first + corner[1] };
       lines->InsertNextCell(2, ends);
       colours->InsertNextTypedTuple(rgb);
     }
