@@ -11,6 +11,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <unistd.h>
 
@@ -24,9 +25,12 @@ struct ProgressState
   std::string What;
   int LastStep = -1;
   bool Terminal = false;
+  /// The step an object says it is on (ShowSteps()); empty for an algorithm.
+  std::function<std::string(vtkObject*)> Step;
+  std::string LastText;
 };
 
-void OnProgress(vtkObject*, unsigned long event, void* clientData, void* callData)
+void OnProgress(vtkObject* caller, unsigned long event, void* clientData, void* callData)
 {
   auto* state = static_cast<ProgressState*>(clientData);
   if (event == vtkCommand::DeleteEvent)
@@ -36,21 +40,32 @@ void OnProgress(vtkObject*, unsigned long event, void* clientData, void* callDat
   }
   const double progress = *static_cast<double*>(callData);
   const int percent = static_cast<int>(100.0 * progress + 0.5);
+  const std::string text = state->Step ? state->Step(caller) : std::string();
   if (state->Terminal)
   {
     const int width = 30;
     const int filled = static_cast<int>(width * progress + 0.5);
     std::fprintf(stderr,
-      "\r%-12s [%s%s] %3d%%",
+      "\r%-12s [%s%s] %3d%% %s\033[K",
       state->What.c_str(),
       std::string(filled, '#').c_str(),
       std::string(width - filled, '.').c_str(),
-      percent);
+      percent,
+      text.c_str());
     if (percent >= 100)
     {
       std::fputc('\n', stderr);
     }
     std::fflush(stderr);
+  }
+  else if (state->Step)
+  {
+    // A log gets each step once, in words.
+    if (text != state->LastText)
+    {
+      state->LastText = text;
+      std::fprintf(stderr, "%s: %s\n", state->What.c_str(), text.c_str());
+    }
   }
   else if (percent / 10 != state->LastStep)
   {
@@ -143,13 +158,27 @@ bool DisplayAvailable()
   return true;
 }
 
-void ShowProgress(vtkAlgorithm* algorithm, const std::string& what)
+namespace
 {
-  auto* state = new ProgressState{ what, -1, isatty(fileno(stderr)) != 0 };
+void Observe(vtkObject* object, ProgressState* state)
+{
   vtkNew<vtkCallbackCommand> callback;
   callback->SetCallback(OnProgress);
   callback->SetClientData(state);
-  algorithm->AddObserver(vtkCommand::ProgressEvent, callback);
-  algorithm->AddObserver(vtkCommand::DeleteEvent, callback);
+  object->AddObserver(vtkCommand::ProgressEvent, callback);
+  object->AddObserver(vtkCommand::DeleteEvent, callback);
+}
+}
+
+void ShowProgress(vtkAlgorithm* algorithm, const std::string& what)
+{
+  Observe(algorithm, new ProgressState{ what, -1, isatty(fileno(stderr)) != 0 });
+}
+
+void ShowSteps(vtkObject* object,
+  const std::string& what,
+  const std::function<std::string(vtkObject*)>& step)
+{
+  Observe(object, new ProgressState{ what, -1, isatty(fileno(stderr)) != 0, step });
 }
 }

@@ -9,9 +9,11 @@
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkNew.h"
 
+#include <functional>
 #include <string>
 
 class vtkAlgorithm;
+class vtkObject;
 
 namespace lfd
 {
@@ -72,6 +74,16 @@ bool DisplayAvailable();
  * redrawn in place on a terminal, one line per 10% otherwise (logs).
  */
 void ShowProgress(vtkAlgorithm* algorithm, const std::string& what);
+
+/**
+ * Shows the progress events of an object that says which step it is on
+ * (`step`, e.g. "frame 3/48" of vtkLightFieldAnimationWriter), labelled
+ * `what`: the bar and the step on a terminal, one line "<what>: <step>" per
+ * new step otherwise (logs).
+ */
+void ShowSteps(vtkObject* object,
+  const std::string& what,
+  const std::function<std::string(vtkObject*)>& step);
 }
 
 #endif

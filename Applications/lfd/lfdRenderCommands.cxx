@@ -1,7 +1,6 @@
 // `lfd render`, `lfd animate` and `lfd lattice`: a scene's views out.
 #include "lfdCommands.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
@@ -45,18 +44,6 @@ void Render(const std::string& scenePath, const std::string& out, const double* 
   std::cout << "wrote " << out << " (" << scene->GetScene()->GetWidth() << "x"
             << scene->GetScene()->GetHeight() << ") in " << Seconds(start) << " s\n";
 }
-
-/// Says each step of an animation export on stderr, once: "animating: frame 3/48".
-void SayProgress(vtkObject* caller, unsigned long, void* clientData, void*)
-{
-  auto* said = static_cast<std::string*>(clientData);
-  const std::string text = static_cast<vtkLightFieldAnimationWriter*>(caller)->GetProgressText();
-  if (text != *said)
-  {
-    *said = text;
-    std::fprintf(stderr, "animating: %s\n", text.c_str());
-  }
-}
 }
 
 vtkSmartPointer<vtkImageData> RenderAnimation(vtkLightFieldSceneLogic* scene,
@@ -69,11 +56,10 @@ vtkSmartPointer<vtkImageData> RenderAnimation(vtkLightFieldSceneLogic* scene,
   writer->SetLightField(lightField);
   writer->SetNumberOfFrames(frames);
   writer->SetDirectoryName(out.c_str());
-  std::string said;
-  vtkNew<vtkCallbackCommand> progress;
-  progress->SetCallback(SayProgress);
-  progress->SetClientData(&said);
-  writer->AddObserver(vtkCommand::ProgressEvent, progress);
+  lfd::ShowSteps(writer,
+    "animating",
+    [](vtkObject* caller)
+    { return std::string(static_cast<vtkLightFieldAnimationWriter*>(caller)->GetProgressText()); });
   if (!writer->Write())
   {
     Fail(""); // the writer said why

@@ -42,6 +42,18 @@ inline glm::dvec3 SrgbToLab(const glm::dvec3& rgb)
   return glm::dvec3(116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz));
 }
 
+/**
+ * Eq. (1) of Chen et al. 2005 (section 4.1), one channel: the coded
+ * capture B normalised by the flood capture W, B' = 256 B / W, which cancels
+ * albedo and shading and leaves the projector mask's colour (clamped to
+ * 255). `flood` must be positive: the callers decide which channels are too
+ * dark to carry information.
+ */
+inline double NormaliseByFlood(double coded, double flood)
+{
+  return std::min(255.0, 256.0 * coded / flood);
+}
+
 /// Delta E*ab (CIE 1976) between two sRGB colours in [0, 255].
 inline double ColourDistance(const glm::dvec3& a, const glm::dvec3& b)
 {

@@ -36,8 +36,9 @@
  *
  * Progress: StartEvent, then a ProgressEvent (call data: a double in
  * [0, 1]; GetProgress(), GetProgressText()) after each frame ("frame 3/48"),
- * before the encoding ("encoding animation.mp4") and at the end ("done",
- * 1), then EndEvent. Cancel: SetAbort(true), e.g. from a ProgressEvent
+ * before the encoding ("encoding animation.mp4", repeated about every 0.1 s
+ * while ffmpeg runs, so that a progress dialog stays responsive) and at the
+ * end ("done", 1), then EndEvent. Cancel: SetAbort(true), e.g. from a ProgressEvent
  * observer or a progress dialog's Cancel button, stops the export before
  * the next frame (or kills ffmpeg): Write() returns false, GetAborted() is
  * true, no error is reported, the staged folder is removed and an existing

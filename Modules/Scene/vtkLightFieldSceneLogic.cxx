@@ -5,6 +5,7 @@
 #include "vtkDeformationCage.h"
 #include "vtkGroundTruthEvaluator.h"
 #include "vtkIdList.h"
+#include "vtkImageData.h"
 #include "vtkKeyframeInterpolator.h"
 #include "vtkLabelCellsByBoxes.h"
 #include "vtkLatticeCageFilter.h"
@@ -15,9 +16,11 @@
 #include "vtkLightFieldScene.h"
 #include "vtkObjectFactory.h"
 #include "vtkPartCageSource.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <array>
@@ -373,6 +376,26 @@ public:
 
   SettingsState Before;
   SettingsState After;
+};
+
+/// A painted projector mask: the slice's bytes before and after, in the
+/// masks (of the light field at the time) it painted.
+class MaskCommand : public Command
+{
+public:
+  void Apply(vtkLightFieldSceneLogic*, bool redo) override
+  {
+    const std::vector<unsigned char>& bytes = redo ? this->After : this->Before;
+    std::copy(bytes.begin(), bytes.end(), this->Array->GetPointer(this->Offset));
+    this->Array->Modified();
+    this->Masks->Modified();
+  }
+
+  vtkSmartPointer<vtkImageData> Masks;
+  vtkSmartPointer<vtkUnsignedCharArray> Array;
+  vtkIdType Offset = 0;
+  std::vector<unsigned char> Before;
+  std::vector<unsigned char> After;
 };
 
 /// What a cage edit asks to validate after it is applied.
@@ -1267,6 +1290,52 @@ bool vtkLightFieldSceneLogic::SetCamera(vtkCamera* camera)
       view->SetViewAngle(camera->GetViewAngle());
       return std::string();
     });
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldSceneLogic::SetProjectorMask(int projector, vtkImageData* mask)
+{
+  Internals& internal = *this->Internal;
+  vtkImageData* masks = internal.LightField ? internal.LightField->GetProjectorMasks() : nullptr;
+  auto rgbOf = [](vtkImageData* image) -> vtkUnsignedCharArray*
+  {
+    vtkDataArray* data = image->GetPointData()->GetArray("Mask");
+    auto* rgb =
+      vtkUnsignedCharArray::SafeDownCast(data ? data : image->GetPointData()->GetScalars());
+    return rgb && rgb->GetNumberOfComponents() == 3 ? rgb : nullptr;
+  };
+  vtkUnsignedCharArray* target = masks ? rgbOf(masks) : nullptr;
+  if (!target)
+  {
+    return this->Refuse(
+      this->Where() + "SetProjectorMask: the light field has no projector masks to paint");
+  }
+  const int* dims = masks->GetDimensions();
+  if (projector < 0 || projector >= dims[2])
+  {
+    return this->Refuse(this->Where() + "SetProjectorMask: projector " + std::to_string(projector) +
+      " does not exist (the light field has " + std::to_string(dims[2]) + ")");
+  }
+  vtkUnsignedCharArray* source = mask ? rgbOf(mask) : nullptr;
+  const int* size = mask ? mask->GetDimensions() : nullptr;
+  if (!source || size[0] != dims[0] || size[1] != dims[1] || size[2] != 1)
+  {
+    return this->Refuse(this->Where() + "SetProjectorMask: the mask of projector " +
+      std::to_string(projector) + " must be an RGB uint8 image of " + std::to_string(dims[0]) +
+      " x " + std::to_string(dims[1]) + " pixels");
+  }
+  const vtkIdType bytes = 3 * static_cast<vtkIdType>(dims[0]) * dims[1];
+  auto command = std::make_unique<MaskCommand>();
+  command->Masks = masks;
+  command->Array = target;
+  command->Offset = projector * bytes;
+  const unsigned char* before = target->GetPointer(command->Offset);
+  command->Before.assign(before, before + bytes);
+  command->After.assign(source->GetPointer(0), source->GetPointer(0) + bytes);
+  command->Name = "Paint projector mask";
+  command->Events = { ProjectorMasksModifiedEvent };
+  command->Apply(this, true);
+  return internal.Push(this, std::move(command));
 }
 
 //------------------------------------------------------------------------------

@@ -36,11 +36,14 @@
  * whose text names the box, field or value). Undo() and Redo() replay the
  * stack; the scene then saves byte for byte as it did before.
  *
+ * SetProjectorMask() paints the light field's projector masks (Chen et al.
+ * 2005, section 4.1: masks painted by hand), also one undoable command.
+ *
  * Each applied, undone or redone command invokes the event of what it
- * changed (CageModifiedEvent, KeyframesModifiedEvent or
- * SettingsModifiedEvent; a cage build that drops the keyframes invokes both
- * of the first two), then ModifiedEvent, then UndoStackModifiedEvent. A
- * refused edit invokes only ErrorEvent.
+ * changed (CageModifiedEvent, KeyframesModifiedEvent,
+ * SettingsModifiedEvent or ProjectorMasksModifiedEvent; a cage build that drops the keyframes
+ * invokes both of the first two), then ModifiedEvent, then UndoStackModifiedEvent. A refused edit
+ * invokes only ErrorEvent.
  *
  * A drag is one command: between BeginInteraction() and EndInteraction(),
  * consecutive MovePoints() of the same points merge into one, whose undo
@@ -67,6 +70,7 @@ class vtkDataSet;
 class vtkDeformationCage;
 class vtkGroundTruthEvaluator;
 class vtkIdList;
+class vtkImageData;
 class vtkLatticeCageFilter;
 class vtkLightField;
 class vtkLightFieldRenderer;
@@ -89,7 +93,8 @@ public:
     CageModifiedEvent = vtkCommand::UserEvent + 900,
     KeyframesModifiedEvent,
     SettingsModifiedEvent,
-    UndoStackModifiedEvent
+    UndoStackModifiedEvent,
+    ProjectorMasksModifiedEvent
   };
 
   ///@{
@@ -323,6 +328,20 @@ public:
   bool SetBackground(double r, double g, double b);
   bool SetCamera(vtkCamera* camera);
   ///@}
+
+  /**
+   * Replaces projector `projector`'s slice of the light field's projector
+   * masks (vtkLightField::GetProjectorMasks()) by `mask`: an RGB uint8
+   * image (scalars or a "Mask" array) of the masks' width x height, rows
+   * bottom first, e.g. vtkProjectorView::GetStrokeMask(). One undoable
+   * command ("Paint projector mask") that invokes
+   * ProjectorMasksModifiedEvent; its undo restores the slice exactly, in
+   * the masks it painted. Refused (false, ErrorEvent naming the projector)
+   * without a light field or masks, for a projector out of range, or a mask
+   * of another size or type. The masks live in the light field, not in
+   * scene.json: save them as images (vtkProjectorView::WriteMask()).
+   */
+  bool SetProjectorMask(int projector, vtkImageData* mask);
 
   ///@{
   /**

@@ -8,11 +8,13 @@
 #include "vtkDeformationCage.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkLightField.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -76,12 +78,43 @@ bool Inside(const Polygon& hull, const glm::dvec2& p)
   }
   return true;
 }
+
+// The rest boxes of each label projected into a view: the convex hull of
+// the 8 projected corners (a box partly behind the camera is left out).
+std::map<int, std::vector<Polygon>> ProjectBoxes(vtkDeformationCage* cage,
+  const lfd::PinholeCamera& camera)
+{
+  std::map<int, std::vector<Polygon>> hulls;
+  for (vtkIdType box = 0; box < cage->GetNumberOfBoxes(); ++box)
+  {
+    double rest[24];
+    if (!cage->GetRestCorners(box, rest))
+    {
+      continue;
+    }
+    Polygon corners;
+    for (int c = 0; c < 8; ++c)
+    {
+      glm::dvec2 pixel;
+      if (camera.Project(glm::dvec3(rest[3 * c], rest[3 * c + 1], rest[3 * c + 2]), pixel))
+      {
+        corners.push_back(pixel);
+      }
+    }
+    if (corners.size() == 8)
+    {
+      hulls[cage->GetBoxLabel(box)].push_back(ConvexHull(corners));
+    }
+  }
+  return hulls;
+}
 }
 
 //------------------------------------------------------------------------------
 vtkBoxCoverageCheck::vtkBoxCoverageCheck()
 {
   this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
 }
 
 //------------------------------------------------------------------------------
@@ -108,6 +141,19 @@ int vtkBoxCoverageCheck::FillInputPortInformation(int port, vtkInformation* info
 }
 
 //------------------------------------------------------------------------------
+int vtkBoxCoverageCheck::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkTable" : "vtkImageData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkBoxCoverageCheck::GetOutsideMask()
+{
+  return vtkImageData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+//------------------------------------------------------------------------------
 int vtkBoxCoverageCheck::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
@@ -115,9 +161,10 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
   this->Labels.clear();
   this->LabelsWithoutBox.clear();
   this->BoxLabelsWithoutPixels.clear();
+  this->ViewCoverage.clear();
   vtkLightField* lightField = vtkLightField::GetData(inputVector[0]);
   vtkUnstructuredGrid* grid = vtkUnstructuredGrid::GetData(inputVector[1]);
-  vtkTable* output = vtkTable::GetData(outputVector);
+  vtkTable* output = vtkTable::GetData(outputVector, 0);
   auto* labels = lightField
     ? vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::LABEL))
     : nullptr;
@@ -150,32 +197,16 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
   insideColumn->SetName("Inside");
   fractionColumn->SetName("Fraction");
   std::map<int, Summary> summaries;
+  vtkImageData* outsideMask = vtkImageData::GetData(outputVector, 1);
+  outsideMask->SetDimensions(width, height, views);
+  vtkNew<vtkUnsignedCharArray> outside;
+  outside->SetName("Outside");
+  outside->SetNumberOfTuples(pixels * views);
+  outside->FillValue(0);
+  outsideMask->GetPointData()->SetScalars(outside);
   for (int view = 0; view < views; ++view)
   {
-    // The projected rest boxes of each label.
-    const lfd::PinholeCamera& camera = rig->GetCamera(view);
-    std::map<int, std::vector<Polygon>> hulls;
-    for (vtkIdType box = 0; box < cage->GetNumberOfBoxes(); ++box)
-    {
-      double rest[24];
-      if (!cage->GetRestCorners(box, rest))
-      {
-        continue;
-      }
-      Polygon corners;
-      for (int c = 0; c < 8; ++c)
-      {
-        glm::dvec2 pixel;
-        if (camera.Project(glm::dvec3(rest[3 * c], rest[3 * c + 1], rest[3 * c + 2]), pixel))
-        {
-          corners.push_back(pixel);
-        }
-      }
-      if (corners.size() == 8)
-      {
-        hulls[cage->GetBoxLabel(box)].push_back(ConvexHull(corners));
-      }
-    }
+    std::map<int, std::vector<Polygon>> hulls = ProjectBoxes(cage, rig->GetCamera(view));
     std::map<int, std::pair<vtkIdType, vtkIdType>> counts; // label -> (pixels, inside)
     for (vtkIdType p = 0; p < pixels; ++p)
     {
@@ -193,7 +224,12 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
       {
         ++count.second;
       }
+      else
+      {
+        outside->SetValue(view * pixels + p, 1);
+      }
     }
+    double coverage = 1.0;
     for (const auto& entry : counts)
     {
       const double fraction = static_cast<double>(entry.second.second) / entry.second.first;
@@ -202,6 +238,7 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
       pixelColumn->InsertNextValue(entry.second.first);
       insideColumn->InsertNextValue(entry.second.second);
       fractionColumn->InsertNextValue(fraction);
+      coverage = std::min(coverage, fraction);
       auto found = summaries.find(entry.first);
       if (found == summaries.end())
       {
@@ -218,6 +255,7 @@ int vtkBoxCoverageCheck::RequestData(vtkInformation*,
         summary.Below.push_back(view);
       }
     }
+    this->ViewCoverage.push_back(coverage);
     this->UpdateProgress(static_cast<double>(view + 1) / views);
   }
   output->AddColumn(labelColumn);
@@ -271,6 +309,13 @@ std::vector<int> vtkBoxCoverageCheck::GetViewsBelow(int index) const
 {
   return index >= 0 && index < this->GetNumberOfLabels() ? this->Labels[index].Below
                                                          : std::vector<int>();
+}
+
+//------------------------------------------------------------------------------
+double vtkBoxCoverageCheck::GetViewCoverage(int view) const
+{
+  return view >= 0 && view < static_cast<int>(this->ViewCoverage.size()) ? this->ViewCoverage[view]
+                                                                         : -1.0;
 }
 
 //------------------------------------------------------------------------------

@@ -19,7 +19,14 @@
  * label, GetWorstFraction() and GetWorstView() give the worst view and
  * GetViewsBelow() the views under Threshold; GetPassed() is true when no
  * view of any label is under Threshold. A label with pixels but no box
- * covers nothing (fraction 0).
+ * covers nothing (fraction 0). GetViewCoverage() gives, per view, the
+ * smallest fraction of its labels (what the Studio's gantry-camera view
+ * shows beside the photo).
+ *
+ * Output port 1 (GetOutsideMask()) is a W x H x V vtkImageData laid out
+ * as the light field (rows bottom first, see vtkLightField) with the uint8
+ * point array "Outside": 1 at the labelled pixels that fall outside every
+ * rest box of their label, 0 elsewhere, so a view can highlight them.
  *
  * @sa vtkLightFieldSplitter vtkDeformationCage
  */
@@ -30,6 +37,8 @@
 #include "vtkTableAlgorithm.h"
 
 #include <vector> // For std::vector
+
+class vtkImageData;
 
 class LFDSEGMENTATION_EXPORT vtkBoxCoverageCheck : public vtkTableAlgorithm
 {
@@ -77,6 +86,17 @@ public:
   bool GetPassed() const;
   ///@}
 
+  /**
+   * The smallest fraction over the labels of view `view` in the last
+   * update; 1 for a view without labelled pixels, -1 for an invalid view.
+   */
+  double GetViewCoverage(int view) const;
+
+  /**
+   * Output port 1: the labelled pixels outside their boxes (see above).
+   */
+  vtkImageData* GetOutsideMask();
+
   ///@{
   /**
    * Labels of the last update that do not match between the light field and
@@ -93,6 +113,7 @@ protected:
   ~vtkBoxCoverageCheck() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request,
     vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
@@ -108,6 +129,7 @@ protected:
   std::vector<Summary> Labels;
   std::vector<int> LabelsWithoutBox;
   std::vector<int> BoxLabelsWithoutPixels;
+  std::vector<double> ViewCoverage;
 
 private:
   vtkBoxCoverageCheck(const vtkBoxCoverageCheck&) = delete;

@@ -75,7 +75,7 @@ struct PixelClassifier
       bright[c] = w[c] >= this->Dark;
       if (bright[c])
       {
-        normalised[c] = std::min(255.0, 256.0 * b[c] / w[c]);
+        normalised[c] = lfd::NormaliseByFlood(b[c], w[c]);
         noise = std::max(noise, 256.0 * this->Sigma / w[c]);
       }
     }

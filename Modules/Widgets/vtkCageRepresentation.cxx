@@ -13,6 +13,7 @@
 #include "vtkImageData.h"
 #include "vtkLabelPalette.h"
 #include "vtkLatticeCageFilter.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -136,7 +137,8 @@ public:
   std::vector<int> Labels;
   std::vector<std::vector<vtkIdType>> PointBoxes;
   std::vector<char> Selected;
-  double Diagonal = 1.0;
+  double Diagonal = 1.0;    // of the rest cage's bounds: tolerances
+  double BoxDiagonal = 1.0; // mean over the rest boxes: the handle size
   vtkMTimeType SyncTime = 0;
   bool Dirty = true;
 
@@ -241,6 +243,30 @@ public:
       c += this->Positions[this->Boxes[box][HexahedronFaces[face][k]]];
     }
     return c * 0.25;
+  }
+
+  /// Moving / Proposed for the 4 corners of a face: `map` takes a corner
+  /// relative to the face's centre and the unit box axis through the face
+  /// (from the opposite face's centre; vtkHexahedron numbers opposite faces
+  /// 2k and 2k + 1). False for a box flat along that axis.
+  template<typename Map>
+  bool MapFace(vtkIdType box, int face, Map map)
+  {
+    const glm::dvec3 centre = this->FaceCentre(box, face);
+    const glm::dvec3 axis = centre - this->FaceCentre(box, face ^ 1);
+    if (!(glm::length(axis) > 0.0))
+    {
+      return false;
+    }
+    this->Moving.clear();
+    this->Proposed.clear();
+    for (int k = 0; k < 4; ++k)
+    {
+      const vtkIdType id = this->Boxes[box][HexahedronFaces[face][k]];
+      this->Moving.push_back(id);
+      this->Proposed.push_back(centre + map(this->Positions[id] - centre, glm::normalize(axis)));
+    }
+    return true;
   }
 
   glm::dvec3 BoxCentre(vtkIdType box) const
@@ -370,6 +396,19 @@ void vtkCageRepresentation::SyncFromCage(bool force)
       d2 += (range[1] - range[0]) * (range[1] - range[0]);
     }
     in.Diagonal = d2 > 0.0 ? std::sqrt(d2) : 1.0;
+  }
+  in.BoxDiagonal = in.Diagonal;
+  if (rest && !in.Boxes.empty())
+  {
+    double sum = 0.0;
+    for (const auto& box : in.Boxes)
+    {
+      double a[3], b[3];
+      rest->GetTuple(box[0], a);
+      rest->GetTuple(box[6], b);
+      sum += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+    }
+    in.BoxDiagonal = sum > 0.0 ? sum / in.Boxes.size() : in.Diagonal;
   }
   if (static_cast<vtkIdType>(in.Selected.size()) != n)
   {
@@ -913,57 +952,27 @@ bool vtkCageRepresentation::ScaleSelection(double sx, double sy, double sz)
 //------------------------------------------------------------------------------
 bool vtkCageRepresentation::TwistFace(vtkIdType box, int face, double degrees)
 {
-  if (!this->CheckBoxFace(box, face) || !std::isfinite(degrees))
-  {
-    return false;
-  }
-  vtkInternals& in = *this->Internals;
-  // vtkHexahedron numbers opposite faces 2k and 2k + 1.
-  const glm::dvec3 centre = in.FaceCentre(box, face);
-  const glm::dvec3 axis = centre - in.FaceCentre(box, face ^ 1);
-  if (!(glm::length(axis) > 0.0))
-  {
-    return false;
-  }
-  in.Moving.clear();
-  in.Proposed.clear();
-  for (int k = 0; k < 4; ++k)
-  {
-    const vtkIdType id = in.Boxes[box][HexahedronFaces[face][k]];
-    in.Moving.push_back(id);
-    in.Proposed.push_back(centre +
-      Rotate(
-        in.Positions[id] - centre, glm::normalize(axis), vtkMath::RadiansFromDegrees(degrees)));
-  }
-  return this->RunEdit();
+  const double radians = vtkMath::RadiansFromDegrees(degrees);
+  return this->CheckBoxFace(box, face) && std::isfinite(degrees) &&
+    this->Internals->MapFace(box,
+      face,
+      [radians](const glm::dvec3& q, const glm::dvec3& axis)
+      { return Rotate(q, axis, radians); }) &&
+    this->RunEdit();
 }
 
 //------------------------------------------------------------------------------
 bool vtkCageRepresentation::TaperFace(vtkIdType box, int face, double scale)
 {
-  if (!this->CheckBoxFace(box, face) || !(scale > 0.0))
-  {
-    return false;
-  }
-  vtkInternals& in = *this->Internals;
-  const glm::dvec3 centre = in.FaceCentre(box, face);
-  const glm::dvec3 axis = centre - in.FaceCentre(box, face ^ 1);
-  if (!(glm::length(axis) > 0.0))
-  {
-    return false;
-  }
-  const glm::dvec3 a = glm::normalize(axis);
-  in.Moving.clear();
-  in.Proposed.clear();
-  for (int k = 0; k < 4; ++k)
-  {
-    const vtkIdType id = in.Boxes[box][HexahedronFaces[face][k]];
-    const glm::dvec3 q = in.Positions[id] - centre;
-    const glm::dvec3 along = glm::dot(q, a) * a;
-    in.Moving.push_back(id);
-    in.Proposed.push_back(centre + along + scale * (q - along));
-  }
-  return this->RunEdit();
+  return this->CheckBoxFace(box, face) && scale > 0.0 &&
+    this->Internals->MapFace(box,
+      face,
+      [scale](const glm::dvec3& q, const glm::dvec3& axis)
+      {
+        const glm::dvec3 along = glm::dot(q, axis) * axis;
+        return along + scale * (q - along);
+      }) &&
+    this->RunEdit();
 }
 
 //------------------------------------------------------------------------------
@@ -1372,7 +1381,7 @@ void vtkCageRepresentation::UpdateGeometry()
   in.Points->Modified();
   in.HandleColors->Modified();
   in.Handles->Modified();
-  in.Sphere->SetRadius(this->HandleSize * in.Diagonal);
+  in.Sphere->SetRadius(this->HandleSize * in.BoxDiagonal);
 
   // Each edge once, coloured by the label of the lowest box using it.
   vtkUnsignedCharArray* palette = this->GetUsedPalette();

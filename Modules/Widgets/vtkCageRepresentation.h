@@ -203,8 +203,8 @@ public:
 
   ///@{
   /**
-   * Handle radius as a fraction of the diagonal of the cage's rest bounds.
-   * Default 0.015.
+   * Handle radius as a fraction of the mean diagonal of the rest boxes.
+   * Default 0.05.
    */
   vtkSetClampMacro(HandleSize, double, 1e-4, 0.5);
   vtkGetMacro(HandleSize, double);
@@ -480,7 +480,7 @@ protected:
   vtkUnsignedCharArray* Palette = nullptr;
   vtkImageData* OccluderDepth = nullptr;
   bool ApplyToCage = true;
-  double HandleSize = 0.015;
+  double HandleSize = 0.05;
   double HandleColor[3] = { 0.9, 0.9, 0.9 };
   double HoverColor[3] = { 1.0, 1.0, 0.2 };
   double SelectedColor[3] = { 1.0, 0.45, 0.0 };

@@ -21,10 +21,11 @@ namespace
 enum WidgetStateType
 {
   Idle = 0,
-  Pressed,     // left button down on a handle, not moved yet
-  Dragging,    // a handle drag in progress (interaction events fired)
-  RubberBand,  // drawing the selection rectangle
-  Transforming // a G / R / S transform follows the cursor
+  Pressed,      // left button down on a handle, not moved yet
+  PressedEmpty, // left button down on empty space, not moved yet
+  Dragging,     // a handle drag in progress (interaction events fired)
+  RubberBand,   // drawing the selection rectangle
+  Transforming  // a G / R / S transform follows the cursor
 };
 
 // A press and release closer than this (pixels) is a click.
@@ -154,7 +155,7 @@ void vtkCageWidget::SelectAction(vtkAbstractWidget* w)
     self->FinishInteraction(false);
     return;
   }
-  if (self->WidgetState != Idle || !self->CurrentRenderer ||
+  if (self->PassingPress || self->WidgetState != Idle || !self->CurrentRenderer ||
     !self->CurrentRenderer->IsInViewport(x, y))
   {
     return;
@@ -173,8 +174,11 @@ void vtkCageWidget::SelectAction(vtkAbstractWidget* w)
   self->PressPosition[1] = y;
   if (rep->ComputeInteractionState(x, y) != vtkCageRepresentation::OnHandle)
   {
-    // Empty space: the style rotates the camera; a click clears (on release).
-    self->ClickOnEmpty = true;
+    // Empty space: a click clears the selection, a drag moves the camera.
+    // The press is held back until the cursor moves, because the style
+    // takes the focus on a press and the widget would never see a release.
+    self->WidgetState = PressedEmpty;
+    self->EventCallbackCommand->SetAbortFlag(1);
     return;
   }
   const vtkIdType id = rep->GetHoverPointId();
@@ -201,12 +205,21 @@ void vtkCageWidget::MoveAction(vtkAbstractWidget* w)
   const int y = self->Interactor->GetEventPosition()[1];
   switch (self->WidgetState)
   {
-    case Idle:
-    {
+    case PressedEmpty:
       if (std::hypot(x - self->PressPosition[0], y - self->PressPosition[1]) > ClickTolerance)
       {
-        self->ClickOnEmpty = false;
+        // A drag: give the held-back press to the style, then this motion.
+        self->WidgetState = Idle;
+        self->PassingPress = true;
+        self->Interactor->SetEventPosition(
+          static_cast<int>(self->PressPosition[0]), static_cast<int>(self->PressPosition[1]));
+        self->Interactor->InvokeEvent(vtkCommand::LeftButtonPressEvent, nullptr);
+        self->Interactor->SetEventPosition(x, y);
+        self->PassingPress = false;
       }
+      return;
+    case Idle:
+    {
       const vtkIdType before = rep->GetHoverPointId();
       if (self->CurrentRenderer && self->CurrentRenderer->IsInViewport(x, y))
       {
@@ -270,14 +283,14 @@ void vtkCageWidget::EndSelectAction(vtkAbstractWidget* w)
       self->EventCallbackCommand->SetAbortFlag(1);
       self->Render();
       return;
-    case Idle:
-      if (self->ClickOnEmpty && !self->Interactor->GetShiftKey() &&
-        std::hypot(x - self->PressPosition[0], y - self->PressPosition[1]) <= ClickTolerance)
+    case PressedEmpty:
+      self->WidgetState = Idle;
+      if (!self->Interactor->GetShiftKey())
       {
         rep->ClearSelection();
         self->Render();
       }
-      self->ClickOnEmpty = false;
+      self->EventCallbackCommand->SetAbortFlag(1);
       return;
     default:
       return;
@@ -361,8 +374,9 @@ void vtkCageWidget::KeyPressAction(vtkAbstractWidget* w)
     }
     else if (lower == 'a')
     {
-      const bool all = rep->GetNumberOfSelectedPoints() > 0 &&
-        rep->GetNumberOfSelectedPoints() == rep->GetCage()->GetNumberOfPoints();
+      const vtkIdType selected = rep->GetNumberOfSelectedPoints();
+      const bool all =
+        selected > 0 && rep->GetCage() && selected == rep->GetCage()->GetNumberOfPoints();
       all ? rep->ClearSelection() : rep->SelectAll();
       used = true;
     }

@@ -19,7 +19,8 @@
  *   was not selected) in the view plane, or under the X/Y/Z constraint
  *   typed during the drag; one drag is one interaction;
  * - **left click** on empty space clears the selection (a drag there
- *   rotates the camera as usual);
+ *   moves the camera as usual: the widget holds the press back until the
+ *   cursor moves more than 3 pixels, then passes it on);
  * - **B**, then left drag: rubber-band selection of the visible handles in
  *   the rectangle (shift held at release adds to the selection);
  * - **A**: selects every point, or clears the selection when all are
@@ -110,7 +111,7 @@ private:
   vtkCageRepresentation* ObservedRepresentation = nullptr;
   int WidgetState = 0;
   bool RubberBandArmed = false;
-  bool ClickOnEmpty = false;
+  bool PassingPress = false;
   double PressPosition[2] = { 0.0, 0.0 };
 };
 

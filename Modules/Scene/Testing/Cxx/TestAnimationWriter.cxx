@@ -318,6 +318,15 @@ void TestCancel(vtkLightFieldSceneLogic* logic, const std::string& scratch)
   Check(Snapshot(out) == before, "the existing folder is untouched, byte for byte");
   CheckEqual(Temporaries(out), 0, "no temporary left after the cancel");
 
+  if (vtkLightFieldAnimationWriter::IsMovieEncoderAvailable())
+  {
+    log.CancelAfter = "encoding animation.mp4";
+    Check(!writer->Write() && writer->GetAborted() && !writer->GetMovieWritten() &&
+        Snapshot(out) == before && Temporaries(out) == 0,
+      "cancelled while encoding: the existing folder is untouched, no temporary left");
+    log.CancelAfter = "frame 2/4";
+  }
+
   const std::string fresh = scratch + "/fresh";
   writer->SetDirectoryName(fresh.c_str());
   Check(!writer->Write() && writer->GetAborted(), "a cancelled export into a new folder");

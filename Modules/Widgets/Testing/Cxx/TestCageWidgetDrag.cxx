@@ -13,7 +13,7 @@ int TestCageWidgetDrag(int argc, char* argv[])
   const double position[3] = { 2.5, -3.5, 3.0 };
   const double up[3] = { 0.0, 0.0, 1.0 };
   lfdtest::WidgetScene scene(cage, focal, position, up);
-  lfdtest::EventCounter events(scene.Widget);
+  lfdtest::InteractionCounter events(scene.Widget);
 
   // Point 7 = grid corner (1, 0, 1): the top front corner of both boxes.
   const vtkIdType shared = 7;

@@ -18,9 +18,10 @@
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
-#include <map>
 #include <sstream>
 #include <string>
 
@@ -68,6 +69,21 @@ inline void MakeGridCage(vtkDeformationCage* cage,
       }
     }
   }
+}
+
+/// Appends an axis-aligned box from `lo` to `hi` with 8 new points.
+inline void AddBoxAt(vtkDeformationCage* cage, const double lo[3], const double hi[3], int label)
+{
+  vtkIdType c[8];
+  for (int k = 0; k < 8; ++k)
+  {
+    // VTK hexahedron order: bottom face counter-clockwise, then the top.
+    const int i = (k % 4 == 1 || k % 4 == 2) ? 1 : 0;
+    const int j = (k % 4 >= 2) ? 1 : 0;
+    const double p[3] = { i ? hi[0] : lo[0], j ? hi[1] : lo[1], k >= 4 ? hi[2] : lo[2] };
+    c[k] = cage->AddPoint(p);
+  }
+  cage->AddBox(c, label);
 }
 
 /// A 400 x 400 window with a cage widget (enabled) on `cage`, a trackball
@@ -215,33 +231,46 @@ inline std::string SelectedIds(vtkCageRepresentation* rep)
   return s;
 }
 
-/// Counts the events of an object by id; stops observing when destroyed.
-struct EventCounter
+/// Counts the interaction events an object invokes (start, interaction,
+/// end); stops observing when destroyed.
+class InteractionCounter
 {
-  std::map<unsigned long, int> Counts;
-  vtkNew<vtkCallbackCommand> Callback;
-  vtkObject* Observed;
-
-  explicit EventCounter(vtkObject* object)
+public:
+  explicit InteractionCounter(vtkObject* object)
     : Observed(object)
   {
-    this->Callback->SetClientData(this);
-    this->Callback->SetCallback([](vtkObject*, unsigned long event, void* self, void*)
-      { ++static_cast<EventCounter*>(self)->Counts[event]; });
-    object->AddObserver(vtkCommand::AnyEvent, this->Callback);
+    this->Callback->SetClientData(this->Counts);
+    this->Callback->SetCallback(
+      [](vtkObject*, unsigned long event, void* counts, void*)
+      {
+        const int slot = event == vtkCommand::StartInteractionEvent ? 0
+          : event == vtkCommand::InteractionEvent                   ? 1
+                                                                    : 2;
+        ++static_cast<int*>(counts)[slot];
+      });
+    for (unsigned long event : { vtkCommand::StartInteractionEvent,
+           vtkCommand::InteractionEvent,
+           vtkCommand::EndInteractionEvent })
+    {
+      object->AddObserver(event, this->Callback);
+    }
   }
-  ~EventCounter() { this->Observed->RemoveObserver(this->Callback); }
-  EventCounter(const EventCounter&) = delete;
-  void operator=(const EventCounter&) = delete;
+  ~InteractionCounter() { this->Observed->RemoveObserver(this->Callback); }
+  InteractionCounter(const InteractionCounter&) = delete;
+  void operator=(const InteractionCounter&) = delete;
 
-  /// "start interaction end" counts.
-  std::string Summary()
+  /// "start interaction end".
+  std::string Summary() const
   {
-    return std::to_string(this->Counts[vtkCommand::StartInteractionEvent]) + " " +
-      std::to_string(this->Counts[vtkCommand::InteractionEvent]) + " " +
-      std::to_string(this->Counts[vtkCommand::EndInteractionEvent]);
+    return std::to_string(this->Counts[0]) + " " + std::to_string(this->Counts[1]) + " " +
+      std::to_string(this->Counts[2]);
   }
-  void Reset() { this->Counts.clear(); }
+  void Reset() { std::fill(this->Counts, this->Counts + 3, 0); }
+
+private:
+  int Counts[3] = { 0, 0, 0 };
+  vtkNew<vtkCallbackCommand> Callback;
+  vtkObject* Observed;
 };
 }
 
