@@ -763,6 +763,7 @@ bool vtkLightFieldSceneLogic::FillCage(const double* time,
   if (time && scene->GetNumberOfKeyframes() > 0)
   {
     vtkNew<vtkKeyframeInterpolator> keyframes;
+    keyframes->SetInterpolation(this->Interpolation);
     for (int k = 0; k < scene->GetNumberOfKeyframes(); ++k)
     {
       if (!keyframes->AddKeyframe(scene->GetKeyframeTime(k), scene->GetKeyframePoints(k)))
@@ -1437,6 +1438,7 @@ void vtkLightFieldSceneLogic::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "Scene: " << (internal.Scene->GetFileName() ? internal.Scene->GetFileName() : "(unsaved)")
      << "\n";
+  os << indent << "Interpolation: " << this->Interpolation << "\n";
   os << indent << "Cage: " << internal.Cage->GetNumberOfBoxes() << " boxes on "
      << internal.Cage->GetNumberOfPoints() << " points\n";
   os << indent << "LightField: "

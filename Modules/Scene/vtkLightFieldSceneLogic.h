@@ -22,7 +22,7 @@
  *
  * It builds cages (from a labelled mesh with vtkPartCageSource, from N slabs
  * along an axis, from a Sederberg-Parry lattice with vtkLatticeCageFilter),
- * gives the cage at a time of the keyframes (Catmull-Rom through
+ * gives the cage at a time of the keyframes (Catmull-Rom or linear through
  * vtkKeyframeInterpolator) and validates the cage.
  *
  * Every edit is a command on an undo/redo stack, modelled on Qt's
@@ -161,6 +161,18 @@ public:
    * cage is refused; false without one when the scene has no cage.
    */
   bool GetCageAtTime(double time, vtkLightField* lightField, vtkDeformationCage* cage);
+
+  ///@{
+  /**
+   * How GetCageAtTime() (and so an animation export of this logic)
+   * interpolates the keyframes: vtkKeyframeInterpolator::CATMULL_ROM (the
+   * default, what `lfd animate` renders) or vtkKeyframeInterpolator::LINEAR
+   * (the Studio's timeline choice; not part of scene.json, not an undoable
+   * command).
+   */
+  vtkSetClampMacro(Interpolation, int, 0, 1);
+  vtkGetMacro(Interpolation, int);
+  ///@}
 
   /**
    * Fills `cage` with the scene's cage as it stands (the current points),
@@ -369,6 +381,7 @@ protected:
   ~vtkLightFieldSceneLogic() override;
 
   vtkIdType NumberOfBoxesLastValidated = 0;
+  int Interpolation = 1; // vtkKeyframeInterpolator::CATMULL_ROM
 
 private:
   vtkLightFieldSceneLogic(const vtkLightFieldSceneLogic&) = delete;

@@ -12,6 +12,7 @@
 #include "vtkCamera.h"
 #include "vtkDeformationCage.h"
 #include "vtkIdList.h"
+#include "vtkKeyframeInterpolator.h"
 #include "vtkLatticeCageFilter.h"
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldScene.h"
@@ -289,6 +290,17 @@ void TestBuildsAndTime(Logic* logic)
   // frames always were.
   lfdtest::CheckRange(
     p[1], rest[1] + 0.1 - 1e-6, rest[1] + 0.1 + 1e-6, "point 41 halfway between its keyframes");
+
+  // A quarter of the way: the Catmull-Rom Hermite weights (clamped ends)
+  // give 0.203125 of the move, linear interpolation 0.25.
+  Check(logic->GetCageAtTime(0.5, nullptr, atTime), "the cage at time 0.5");
+  atTime->GetDeformedPoint(41, p);
+  lfdtest::CheckRange(p[1] - rest[1], 0.040625 - 1e-6, 0.040625 + 1e-6, "Catmull-Rom at 0.5");
+  logic->SetInterpolation(vtkKeyframeInterpolator::LINEAR);
+  Check(logic->GetCageAtTime(0.5, nullptr, atTime), "the linear cage at time 0.5");
+  atTime->GetDeformedPoint(41, p);
+  lfdtest::CheckRange(p[1] - rest[1], 0.05 - 1e-6, 0.05 + 1e-6, "linear at 0.5");
+  logic->SetInterpolation(vtkKeyframeInterpolator::CATMULL_ROM);
 }
 }
 
