@@ -9,6 +9,7 @@
 #include "vtkDataArray.h"
 #include "vtkDeformationCage.h"
 #include "vtkGlyph3D.h"
+#include "vtkHexahedron.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkLabelPalette.h"
@@ -44,27 +45,6 @@ vtkCxxSetObjectMacro(vtkCageRepresentation, OccluderDepth, vtkImageData);
 
 namespace
 {
-// vtkHexahedron's faces, corners in its cyclic order.
-constexpr int HexahedronFaces[6][4] = { { 0, 4, 7, 3 },
-  { 1, 2, 6, 5 },
-  { 0, 1, 5, 4 },
-  { 3, 7, 6, 2 },
-  { 0, 3, 2, 1 },
-  { 4, 5, 6, 7 } };
-
-constexpr int HexahedronEdges[12][2] = { { 0, 1 },
-  { 1, 2 },
-  { 2, 3 },
-  { 3, 0 },
-  { 4, 5 },
-  { 5, 6 },
-  { 6, 7 },
-  { 7, 4 },
-  { 0, 4 },
-  { 1, 5 },
-  { 2, 6 },
-  { 3, 7 } };
-
 glm::dvec3 ToVec(const double v[3])
 {
   return glm::dvec3(v[0], v[1], v[2]);
@@ -240,7 +220,7 @@ public:
     glm::dvec3 c(0.0);
     for (int k = 0; k < 4; ++k)
     {
-      c += this->Positions[this->Boxes[box][HexahedronFaces[face][k]]];
+      c += this->Positions[this->Boxes[box][vtkHexahedron::GetFaceArray(face)[k]]];
     }
     return c * 0.25;
   }
@@ -262,7 +242,7 @@ public:
     this->Proposed.clear();
     for (int k = 0; k < 4; ++k)
     {
-      const vtkIdType id = this->Boxes[box][HexahedronFaces[face][k]];
+      const vtkIdType id = this->Boxes[box][vtkHexahedron::GetFaceArray(face)[k]];
       this->Moving.push_back(id);
       this->Proposed.push_back(centre + map(this->Positions[id] - centre, glm::normalize(axis)));
     }
@@ -762,7 +742,7 @@ void vtkCageRepresentation::SelectFace(vtkIdType box, int face)
     vtkIdType ids[4];
     for (int k = 0; k < 4; ++k)
     {
-      ids[k] = this->Internals->Boxes[box][HexahedronFaces[face][k]];
+      ids[k] = this->Internals->Boxes[box][vtkHexahedron::GetFaceArray(face)[k]];
     }
     this->SetPivotBox(box);
     this->SetSelection(ids, 4, false);
@@ -1388,8 +1368,9 @@ void vtkCageRepresentation::UpdateGeometry()
   std::map<std::pair<vtkIdType, vtkIdType>, int> edges;
   for (size_t b = 0; b < in.Boxes.size(); ++b)
   {
-    for (const auto& e : HexahedronEdges)
+    for (vtkIdType edge = 0; edge < 12; ++edge)
     {
+      const vtkIdType* e = vtkHexahedron::GetEdgeArray(edge);
       const vtkIdType p0 = in.Boxes[b][e[0]];
       const vtkIdType p1 = in.Boxes[b][e[1]];
       edges.emplace(std::make_pair(std::min(p0, p1), std::max(p0, p1)), in.Labels[b]);

@@ -11,6 +11,7 @@
 #include "vtkCoordinate.h"
 #include "vtkDataArray.h"
 #include "vtkDeformationCage.h"
+#include "vtkHexahedron.h"
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
@@ -36,20 +37,6 @@ vtkStandardNewMacro(vtkGantryCameraView);
 
 namespace
 {
-// The 12 edges of a hexahedron in VTK's corner order.
-constexpr int BoxEdges[12][2] = { { 0, 1 },
-  { 1, 2 },
-  { 2, 3 },
-  { 3, 0 },
-  { 4, 5 },
-  { 5, 6 },
-  { 6, 7 },
-  { 7, 4 },
-  { 0, 4 },
-  { 1, 5 },
-  { 2, 6 },
-  { 3, 7 } };
-
 std::array<unsigned char, 3> LabelColour(vtkUnsignedCharArray* palette, int label)
 {
   if (palette && label >= 0 && label < palette->GetNumberOfTuples())
@@ -428,8 +415,9 @@ void vtkGantryCameraView::UpdateBoxes()
         continue;
       }
       const auto colour = LabelColour(lightField->GetPalette(), cage->GetBoxLabel(box));
-      for (const auto& edge : BoxEdges)
+      for (vtkIdType e = 0; e < 12; ++e)
       {
+        const vtkIdType* edge = vtkHexahedron::GetEdgeArray(e);
         const glm::dvec3 a(rest[3 * edge[0]], rest[3 * edge[0] + 1], rest[3 * edge[0] + 2]);
         const glm::dvec3 b(rest[3 * edge[1]], rest[3 * edge[1] + 1], rest[3 * edge[1] + 2]);
         // A polyline through the projected samples, broken where a sample
