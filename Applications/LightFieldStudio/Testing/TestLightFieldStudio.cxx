@@ -500,14 +500,14 @@ private Q_SLOTS:
   void paintProjectorMask()
   {
     // A stroke across the middle of the projector view (four-up: bottom
-    // left) in the colour of label 0 (black): one command, undone byte for
+    // left) in the palette colour of label 3: one command, undone byte for
     // byte.
     this->Window->SetLayout(lfdStudioViews::FOUR_UP);
     this->Window->findChild<QComboBox*>("Projector")->setCurrentIndex(1);
-    this->Window->findChild<QComboBox*>("BrushLabel")->setCurrentIndex(0);
+    this->Window->findChild<QComboBox*>("BrushLabel")->setCurrentIndex(3);
     this->Window->findChild<QDoubleSpinBox*>("BrushRadius")->setValue(3.0);
     vtkProjectorView* projector = this->Window->GetViews()->GetProjectorView();
-    QCOMPARE(projector->GetBrushLabel(), 0);
+    QCOMPARE(projector->GetBrushLabel(), 3);
     QCOMPARE(projector->GetBrushRadius(), 3.0);
     vtkLightField* lightField = this->Window->GetViews()->GetLightField();
     const QByteArray before = MaskBytes(lightField);
