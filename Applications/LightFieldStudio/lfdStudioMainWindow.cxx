@@ -639,6 +639,7 @@ void lfdStudioMainWindow::ShowScene()
   const int brushLabel = std::max(this->BrushLabel->currentIndex(), 1);
   this->BrushLabel->clear();
   vtkUnsignedCharArray* palette = lightField ? lightField->GetPalette() : nullptr;
+  // Without a palette of its own, the first labels of the default one.
   const int labels = palette ? static_cast<int>(palette->GetNumberOfTuples()) : 8;
   for (int label = 0; label < labels; ++label)
   {
