@@ -7,6 +7,7 @@
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
+#include "vtkGantryCameraView.h"
 #include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkLightField.h"
@@ -15,8 +16,11 @@
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldScene.h"
 #include "vtkLightFieldSceneLogic.h"
+#include "vtkProjectorView.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
+#include "vtkRigView.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -26,6 +30,7 @@
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
@@ -33,10 +38,12 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QIcon>
 #include <QInputDialog>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
+#include <QPixmap>
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
@@ -163,6 +170,7 @@ void lfdStudioMainWindow::CreateActions()
     this,
     &lfdStudioMainWindow::SaveScreenshot,
     QKeySequence(tr("Ctrl+P")));
+  file->addAction(tr("Save Projector &Masks..."), this, &lfdStudioMainWindow::SaveProjectorMasks);
   file->addSeparator();
   file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
 
@@ -420,19 +428,24 @@ void lfdStudioMainWindow::CreateViewDock()
     [this](int view)
     {
       this->Views->SetCameraView(view);
+      this->UpdateCoverage();
       this->Render();
     });
   this->PassCombo = new QComboBox;
+  this->PassCombo->setObjectName("Pass");
   for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
   {
     this->PassCombo->addItem(vtkLightField::GetPassName(pass));
   }
+  // Eq. 1 of the paper: the coded pass divided by the flood pass.
+  this->PassCombo->addItem(tr("Normalised (B')"));
   connect(this->PassCombo,
     QOverload<int>::of(&QComboBox::currentIndexChanged),
     this,
     [this](int pass)
     {
       this->Views->SetPass(pass);
+      this->UpdateCoverage();
       this->Render();
     });
   this->ProjectorCombo = new QComboBox;
@@ -445,9 +458,32 @@ void lfdStudioMainWindow::CreateViewDock()
       this->Views->SetProjector(projector);
       this->Render();
     });
+  this->Coverage = new QLabel;
+  this->Coverage->setObjectName("Coverage");
+  this->Coverage->setToolTip(tr("The smallest fraction of a label's pixels inside its rest boxes "
+                                "in this view (n/a without boxes or a Label pass)"));
+  vtkProjectorView* projector = this->Views->GetProjectorView();
+  auto* radius = new QDoubleSpinBox;
+  radius->setObjectName("BrushRadius");
+  radius->setRange(0.5, 256.0);
+  radius->setSuffix(tr(" px"));
+  radius->setValue(projector->GetBrushRadius());
+  connect(radius,
+    QOverload<double>::of(&QDoubleSpinBox::valueChanged),
+    this,
+    [projector](double value) { projector->SetBrushRadius(value); });
+  this->BrushLabel = new QComboBox;
+  this->BrushLabel->setObjectName("BrushLabel");
+  connect(this->BrushLabel,
+    QOverload<int>::of(&QComboBox::currentIndexChanged),
+    this,
+    [projector](int label) { projector->SetBrushLabel(std::max(label, 0)); });
   form->addRow(tr("Gantry view"), this->ViewSlider);
   form->addRow(tr("Pass"), this->PassCombo);
+  form->addRow(tr("Coverage"), this->Coverage);
   form->addRow(tr("Projector"), this->ProjectorCombo);
+  form->addRow(tr("Brush radius"), radius);
+  form->addRow(tr("Brush label"), this->BrushLabel);
   auto* dock = new QDockWidget(tr("Views"), this);
   dock->setObjectName("ViewDock");
   dock->setWidget(panel);
@@ -465,6 +501,16 @@ void lfdStudioMainWindow::ObserveLogic()
     SceneLogic::SettingsModifiedEvent, this, &lfdStudioMainWindow::SettingsModified);
   this->Logic->AddObserver(
     SceneLogic::UndoStackModifiedEvent, this, &lfdStudioMainWindow::UndoStackModified);
+  // A stroke, its undo or redo: the projector view shows the mask anew.
+  this->Logic->AddObserver(
+    SceneLogic::ProjectorMasksModifiedEvent, this, &lfdStudioMainWindow::Render);
+  // A click on a camera frustum in the rig view shows that view.
+  this->Views->GetRigView()->AddObserver(
+    vtkRigView::ViewSelectedEvent, this, &lfdStudioMainWindow::ViewSelected);
+  // A mask that cannot be written reaches the status bar as the logic's errors.
+  this->Errors->Observe(this->Views->GetProjectorView());
+  this->Views->GetProjectorView()->AddObserver(
+    vtkCommand::ErrorEvent, this, &lfdStudioMainWindow::LogicError, -1.0f);
   // After the error observer (priority 0) has recorded it: every error of
   // the logic, whatever edit or read made it, reaches the status bar.
   this->Logic->AddObserver(vtkCommand::ErrorEvent, this, &lfdStudioMainWindow::LogicError, -1.0f);
@@ -589,6 +635,21 @@ void lfdStudioMainWindow::ShowScene()
   {
     this->ProjectorCombo->addItem(tr("Projector %1").arg(p));
   }
+  // The brush paints the labels of the light field's palette (0: black, no part).
+  const int brushLabel = std::max(this->BrushLabel->currentIndex(), 1);
+  this->BrushLabel->clear();
+  vtkUnsignedCharArray* palette = lightField ? lightField->GetPalette() : nullptr;
+  // Without a palette of its own, the first labels of the default one.
+  const int labels = palette ? static_cast<int>(palette->GetNumberOfTuples()) : 8;
+  for (int label = 0; label < labels; ++label)
+  {
+    unsigned char rgb[3];
+    this->Views->GetLabelColour(label, rgb);
+    QPixmap swatch(16, 16);
+    swatch.fill(QColor(rgb[0], rgb[1], rgb[2]));
+    this->BrushLabel->addItem(QIcon(swatch), QString::number(label));
+  }
+  this->BrushLabel->setCurrentIndex(std::min(brushLabel, labels - 1));
   this->CageModified(nullptr, 0, nullptr);
   this->KeyframesModified(nullptr, 0, nullptr);
   this->SettingsModified(nullptr, 0, nullptr);
@@ -623,6 +684,52 @@ void lfdStudioMainWindow::ShowView(int view, int pass, int projector)
 }
 
 //------------------------------------------------------------------------------
+bool lfdStudioMainWindow::SaveProjectorMasksTo(const QString& folder)
+{
+  const int projectors = this->ProjectorCombo->count();
+  if (projectors == 0)
+  {
+    this->statusBar()->showMessage(tr("The light field has no projector masks"));
+    return false;
+  }
+  QDir().mkpath(folder);
+  for (int p = 0; p < projectors; ++p)
+  {
+    const QByteArray file = QDir(folder).filePath(QString("projector_%1.png").arg(p)).toLocal8Bit();
+    if (!this->Views->GetProjectorView()->WriteMask(p, file.constData()))
+    {
+      return false;
+    }
+  }
+  this->statusBar()->showMessage(tr("Saved %1 projector masks to %2").arg(projectors).arg(folder));
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void lfdStudioMainWindow::SaveProjectorMasks()
+{
+  const QString folder = QFileDialog::getExistingDirectory(
+    this, tr("Save Projector Masks"), QSettings().value("files/folder").toString());
+  if (!folder.isEmpty())
+  {
+    this->SaveProjectorMasksTo(folder);
+  }
+}
+
+//------------------------------------------------------------------------------
+void lfdStudioMainWindow::ViewSelected(vtkObject*, unsigned long, void* view)
+{
+  this->ViewSlider->setValue(*static_cast<int*>(view));
+}
+
+//------------------------------------------------------------------------------
+void lfdStudioMainWindow::UpdateCoverage()
+{
+  const double coverage = this->Views->GetCoverage();
+  this->Coverage->setText(coverage < 0.0 ? tr("n/a") : QString::number(coverage, 'f', 4));
+}
+
+//------------------------------------------------------------------------------
 void lfdStudioMainWindow::Render()
 {
   this->RenderWindow->Render();
@@ -654,6 +761,8 @@ void lfdStudioMainWindow::CageModified(vtkObject*, unsigned long, void*)
     this->BoxTable->setItem(box, 1, label);
   }
   this->ShowTime(-1.0);
+  // The rest boxes may have changed: the coverage with them.
+  this->UpdateCoverage();
 }
 
 //------------------------------------------------------------------------------

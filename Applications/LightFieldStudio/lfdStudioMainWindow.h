@@ -27,6 +27,7 @@
 
 class QAction;
 class QComboBox;
+class QLabel;
 class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
@@ -74,6 +75,11 @@ public:
   /// view's projector, as the Views dock does.
   void ShowView(int view, int pass, int projector);
 
+  /// Writes every projector's mask to `folder`/projector_<k>.png
+  /// (vtkProjectorView::WriteMask(), as `lfd synth --projector-mask` reads
+  /// them); false with the reason in the status bar.
+  bool SaveProjectorMasksTo(const QString& folder);
+
   vtkLightFieldSceneLogic* GetLogic();
   lfdStudioViews* GetViews();
   QVTKOpenGLNativeWidget* GetViewWidget();
@@ -86,6 +92,7 @@ public Q_SLOTS:
   void SaveAs();
   void ExportAnimation();
   void SaveScreenshot();
+  void SaveProjectorMasks();
   void Undo();
   void Redo();
   void StoreCamera();
@@ -124,6 +131,9 @@ private:
   void SettingsModified(vtkObject*, unsigned long, void*);
   void UndoStackModified(vtkObject*, unsigned long, void*);
   void Tick();
+  void ViewSelected(vtkObject*, unsigned long, void* view);
+  /// The gantry camera view's coverage in the Views dock.
+  void UpdateCoverage();
   int SelectedBox() const;
 
   vtkNew<vtkLightFieldSceneLogic> Logic;
@@ -156,6 +166,8 @@ private:
   QSlider* ViewSlider = nullptr;
   QComboBox* PassCombo = nullptr;
   QComboBox* ProjectorCombo = nullptr;
+  QComboBox* BrushLabel = nullptr;
+  QLabel* Coverage = nullptr;
 };
 
 #endif

@@ -9,14 +9,19 @@
  * - the main view is a vtkLightFieldEditor in the main renderer: the
  *   deformed light field, the cage widget whose drags are the logic's
  *   commands, progressive refinement and the frame time;
- * - the gantry camera view shows one captured view's photo in one pass
- *   (coaxial, coded, flood, label in palette colours, depth and confidence
- *   in grey);
- * - the projector view shows one projector's colour mask;
- * - the rig view (3D) shows the camera centres coloured by ring row, the
- *   projector centres, the deformed cage and the light field's bounds.
- * Only the main view's cage widget edits the logic (through the editor);
- * the other views read it.
+ * - the gantry camera view is a vtkGantryCameraView: one captured view's
+ *   photo in any pass, the rest boxes projected over it and the view's
+ *   coverage (Chen et al. 2005, section 4.1);
+ * - the projector view is a vtkProjectorView: one projector's colour mask,
+ *   painted with a brush; each stroke becomes one command of the logic
+ *   ("Paint projector mask");
+ * - the rig view is a vtkRigView: camera and projector frusta, the fitted
+ *   cylinder, the shown cage and the object bounds; a click on a camera
+ *   frustum invokes vtkRigView::ViewSelectedEvent (the Studio then shows
+ *   that view, SetCameraView()).
+ * The main view's cage widget and the projector view's brush edit the
+ * logic; the other views read it. The views hidden by the layout take no
+ * events.
  */
 #ifndef lfdStudioViews_h
 #define lfdStudioViews_h
@@ -24,19 +29,16 @@
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 
-class vtkActor;
-class vtkActor2D;
 class vtkDeformationCage;
-class vtkImageActor;
-class vtkImageData;
-class vtkLightField;
+class vtkGantryCameraView;
 class vtkLightFieldEditor;
+class vtkProjectorView;
+class vtkRenderer;
+class vtkRigView;
+class vtkLightField;
 class vtkLightFieldSceneLogic;
 class vtkObject;
-class vtkPolyData;
 class vtkRenderWindow;
-class vtkRenderer;
-class vtkTextActor;
 
 class lfdStudioViews
 {
@@ -74,14 +76,15 @@ public:
   void ResetCamera();
 
   ///@{
-  /// The gantry camera view's view index and pass, and the projector
-  /// view's projector; out-of-range values are clamped.
+  /// The gantry camera view's view index (also the rig view's current view)
+  /// and pass (a vtkLightField::Pass or vtkGantryCameraView::NORMALISED),
+  /// and the projector view's projector; out-of-range values are clamped.
   void SetCameraView(int view);
-  int GetCameraView() const { return this->CameraView; }
+  int GetCameraView();
   void SetPass(int pass);
-  int GetPass() const { return this->Pass; }
+  int GetPass();
   void SetProjector(int projector);
-  int GetProjector() const { return this->Projector; }
+  int GetProjector();
   ///@}
 
   /// The palette colour boxes of label `label` are drawn with.
@@ -93,34 +96,36 @@ public:
   /// The light field shown (null: none).
   vtkLightField* GetLightField();
 
+  /// The coverage of the gantry camera view's view (the smallest fraction
+  /// of a label's pixels inside its rest boxes), -1 when it has none.
+  double GetCoverage();
+
+  ///@{
+  /// The views, for their settings (brush, boxes) and events.
   vtkRenderer* GetMainRenderer();
   vtkLightFieldEditor* GetEditor();
+  vtkGantryCameraView* GetGantryCameraView();
+  vtkProjectorView* GetProjectorView();
+  vtkRigView* GetRigView();
+  ///@}
 
 private:
-  void UpdateCameraImage();
-  void UpdateProjectorImage();
-  void UpdateRig();
+  /// Applies a finished brush stroke to the logic: one undoable command.
+  void ApplyStroke(vtkObject*, unsigned long, void*);
 
   vtkLightFieldSceneLogic* Logic;
   vtkRenderWindow* Window;
   vtkSmartPointer<vtkLightField> LightField;
   int CurrentLayout = MAIN_ONLY;
-  int CameraView = 0;
-  int Pass = 0;
-  int Projector = 0;
 
   vtkNew<vtkRenderer> Main;
-  vtkNew<vtkRenderer> Camera;
-  vtkNew<vtkRenderer> ProjectorView;
-  vtkNew<vtkRenderer> Rig;
+  vtkNew<vtkRenderer> CameraRenderer;
+  vtkNew<vtkRenderer> ProjectorRenderer;
+  vtkNew<vtkRenderer> RigRenderer;
   vtkNew<vtkLightFieldEditor> Editor;
-  vtkNew<vtkActor> RigCageEdges;
-  vtkNew<vtkImageActor> CameraImage;
-  vtkNew<vtkTextActor> CameraCaption;
-  vtkNew<vtkImageActor> ProjectorImage;
-  vtkNew<vtkTextActor> ProjectorCaption;
-  vtkNew<vtkActor> RigCameras;
-  vtkNew<vtkActor> RigBounds;
+  vtkNew<vtkGantryCameraView> Camera;
+  vtkNew<vtkProjectorView> Projector;
+  vtkNew<vtkRigView> Rig;
 };
 
 #endif

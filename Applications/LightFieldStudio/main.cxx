@@ -11,6 +11,7 @@
 #include "lfdStudioViews.h"
 
 #include "QVTKOpenGLNativeWidget.h"
+#include "vtkGantryCameraView.h"
 #include "vtkLightField.h"
 
 #include <QApplication>
@@ -61,7 +62,7 @@ int main(int argc, char* argv[])
   const QCommandLineOption layout("layout", "views: main, camera or four-up", "layout");
   const QCommandLineOption view("view", "the gantry camera view's captured view", "index");
   const QCommandLineOption pass(
-    "pass", "the gantry camera view's pass (Coaxial, Label...)", "pass");
+    "pass", "the gantry camera view's pass (Coaxial, Label, Normalised...)", "pass");
   const QCommandLineOption projector("projector", "the projector view's projector", "index");
   const QCommandLineOption screenshot(
     "screenshot", "write a PNG of the window once it has drawn, then exit", "png");
@@ -83,12 +84,15 @@ int main(int argc, char* argv[])
     }
     window.SetLayout(layouts.indexOf(parser.value(layout)));
   }
-  const int passIndex =
-    parser.isSet(pass) ? vtkLightField::GetPassFromName(qPrintable(parser.value(pass))) : 0;
+  // Normalised: the coded pass divided by the flood pass (B', Eq. 1).
+  const int passIndex = !parser.isSet(pass) ? 0
+    : parser.value(pass) == "Normalised"
+    ? static_cast<int>(vtkGantryCameraView::NORMALISED)
+    : vtkLightField::GetPassFromName(qPrintable(parser.value(pass)));
   if (passIndex < 0)
   {
     std::cerr << "LightFieldStudio: --pass: " << qPrintable(parser.value(pass))
-              << " is not a pass (Coaxial, Coded, Flood, Label, Depth, Confidence)\n";
+              << " is not a pass (Coaxial, Coded, Flood, Label, Depth, Confidence, Normalised)\n";
     return 1;
   }
   window.ShowView(parser.value(view).toInt(), passIndex, parser.value(projector).toInt());

@@ -2,30 +2,40 @@
 // open the demo scene, orbit the view with the mouse, drag a corner of the
 // cage widget with the mouse (one command), a refused fold, two keyframes,
 // save (equals the committed scene baseline), export the animation (and
-// cancel an export), a four-up screenshot (equals the committed baseline
+// cancel an export), the calibration views (a click on a camera frustum in
+// the rig view selects that view; every view of the demo has a coverage of
+// at least 0.98), a four-up screenshot (equals the committed baseline
 // image), undo of everything (the scene saves byte for byte as loaded), a
 // malformed scene (its error in the status bar, the scene kept), a light
-// field with projectors, and the boxes dock. Run under Xvfb with
+// field with projectors whose mask is painted with the mouse (one command,
+// undone byte for byte), and the boxes dock. Run under Xvfb with
 // QT_QPA_PLATFORM=xcb; the data come from the fixture tests (lfd demo,
 // lfd synth), paths in the environment (see CMakeLists.txt).
 #include "lfdStudioMainWindow.h"
 #include "lfdStudioViews.h"
 
 #include "QVTKOpenGLNativeWidget.h"
+#include "lfdPinholeCamera.h"
 #include "vtkCageRepresentation.h"
 #include "vtkCageWidget.h"
 #include "vtkCamera.h"
+#include "vtkCameraRig.h"
 #include "vtkCell.h"
 #include "vtkDeformationCage.h"
+#include "vtkGantryCameraView.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
+#include "vtkLightField.h"
 #include "vtkLightFieldEditor.h"
 #include "vtkLightFieldScene.h"
 #include "vtkLightFieldSceneLogic.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkProjectorView.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRigView.h"
 #include "vtkTesting.h"
 #include "vtkTrivialProducer.h"
 #include "vtkUnsignedCharArray.h"
@@ -36,6 +46,7 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QLabel>
 #include <QListWidget>
 #include <QProgressDialog>
 #include <QPushButton>
@@ -50,6 +61,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace
 {
@@ -95,6 +107,27 @@ vtkSmartPointer<vtkImageData> ToVTK(const QImage& grabbed)
       3 * image.width());
   }
   return data;
+}
+
+/// A left-button drag in `view` through `path` (display positions, y up).
+void Drag(QWidget* view, const std::vector<QPoint>& path)
+{
+  const auto at = [view](const QPoint& p) { return QPoint(p.x(), view->height() - 1 - p.y()); };
+  SendMouse(view, QEvent::MouseMove, at(path.front()), Qt::NoButton);
+  SendMouse(view, QEvent::MouseButtonPress, at(path.front()), Qt::LeftButton);
+  for (size_t k = 1; k < path.size(); ++k)
+  {
+    SendMouse(view, QEvent::MouseMove, at(path[k]), Qt::LeftButton);
+  }
+  SendMouse(view, QEvent::MouseButtonRelease, at(path.back()), Qt::NoButton);
+}
+
+/// The bytes of a light field's projector masks.
+QByteArray MaskBytes(vtkLightField* lightField)
+{
+  vtkImageData* masks = lightField->GetProjectorMasks();
+  return QByteArray(static_cast<const char*>(masks->GetScalarPointer()),
+    static_cast<int>(masks->GetNumberOfPoints() * masks->GetNumberOfScalarComponents()));
 }
 
 QPushButton* Button(QWidget* window, const QString& text)
@@ -308,6 +341,64 @@ private Q_SLOTS:
     QVERIFY(!QDir(cancelled).exists());
   }
 
+  void calibrationViews()
+  {
+    this->Window->SetLayout(lfdStudioViews::FOUR_UP);
+    lfdStudioViews* views = this->Window->GetViews();
+    vtkRenderer* rig = views->GetRigView()->GetRenderer();
+    // A click inside the frustum of the camera nearest the rig view's eye
+    // (on its optical axis, half way to the frustum's base at a quarter of
+    // the ring radius) selects that view: the gantry slider follows.
+    vtkLightField* lightField = views->GetLightField();
+    vtkCameraRig* cameras = lightField->GetRig();
+    const double* eye = rig->GetActiveCamera()->GetPosition();
+    const glm::dvec3 e(eye[0], eye[1], eye[2]);
+    int nearest = 0;
+    for (int v = 1; v < cameras->GetNumberOfViews(); ++v)
+    {
+      if (glm::length(cameras->GetCamera(v).Center() - e) <
+        glm::length(cameras->GetCamera(nearest).Center() - e))
+      {
+        nearest = v;
+      }
+    }
+    // Another view shown first, so the click changes it.
+    this->Window->findChild<QSlider*>("GantryView")
+      ->setValue((nearest + 1) % cameras->GetNumberOfViews());
+    const glm::dvec3 inside = cameras->GetCamera(nearest).Unproject(
+      glm::dvec2(0.5 * lightField->GetWidth() - 0.5, 0.5 * lightField->GetHeight() - 0.5),
+      0.125 * cameras->GetRadius());
+    const double world[3] = { inside.x, inside.y, inside.z };
+    double display[3];
+    ToDisplay(rig, world, display);
+    const QPoint click(
+      static_cast<int>(std::lround(display[0])), static_cast<int>(std::lround(display[1])));
+    QVERIFY(rig->IsInViewport(click.x(), click.y()));
+    Drag(this->Window->GetViewWidget(), { click });
+    QCOMPARE(this->Window->findChild<QSlider*>("GantryView")->value(), nearest);
+    QCOMPARE(views->GetCameraView(), nearest);
+    QCOMPARE(views->GetRigView()->GetCurrentView(), nearest);
+    // Selecting a view edits nothing.
+    QCOMPARE(this->Logic()->GetNumberOfCommands(), 4);
+
+    // Paper section 4.1: the projected rest boxes cover the labelled pixels
+    // of the fish in every view (as `lfd split check` reports).
+    auto* pass = this->Window->findChild<QComboBox*>("Pass");
+    QCOMPARE(pass->count(), vtkLightField::NUMBER_OF_PASSES + 1);
+    QCOMPARE(pass->itemText(vtkGantryCameraView::NORMALISED), QString("Normalised (B')"));
+    pass->setCurrentIndex(vtkLightField::LABEL);
+    auto* slider = this->Window->findChild<QSlider*>("GantryView");
+    for (int view = 0; view <= slider->maximum(); ++view)
+    {
+      slider->setValue(view);
+      const double coverage = this->Window->findChild<QLabel*>("Coverage")->text().toDouble();
+      QVERIFY2(coverage >= 0.98, qPrintable(QString("view %1: %2").arg(view).arg(coverage)));
+      QCOMPARE(coverage, std::round(views->GetCoverage() * 1e4) / 1e4);
+    }
+    pass->setCurrentIndex(vtkLightField::COAXIAL);
+    this->Window->SetLayout(lfdStudioViews::MAIN_ONLY);
+  }
+
   void screenshotEqualsBaseline()
   {
     this->Window->SetLayout(lfdStudioViews::FOUR_UP);
@@ -402,6 +493,47 @@ private Q_SLOTS:
     QCOMPARE(this->Window->findChild<QSlider*>("GantryView")->maximum(), 11);
     QCOMPARE(this->Window->findChild<QTableWidget*>("Boxes")->rowCount(), 0);
     QCOMPARE(this->Window->windowTitle(), QString("untitled - LightField Studio"));
+    // No boxes: no coverage.
+    QCOMPARE(this->Window->findChild<QLabel*>("Coverage")->text(), QString("n/a"));
+  }
+
+  void paintProjectorMask()
+  {
+    // A stroke across the middle of the projector view (four-up: bottom
+    // left) in the palette colour of label 3: one command, undone byte for
+    // byte.
+    this->Window->SetLayout(lfdStudioViews::FOUR_UP);
+    this->Window->findChild<QComboBox*>("Projector")->setCurrentIndex(1);
+    this->Window->findChild<QComboBox*>("BrushLabel")->setCurrentIndex(3);
+    this->Window->findChild<QDoubleSpinBox*>("BrushRadius")->setValue(3.0);
+    vtkProjectorView* projector = this->Window->GetViews()->GetProjectorView();
+    QCOMPARE(projector->GetBrushLabel(), 3);
+    QCOMPARE(projector->GetBrushRadius(), 3.0);
+    vtkLightField* lightField = this->Window->GetViews()->GetLightField();
+    const QByteArray before = MaskBytes(lightField);
+    const int* size = projector->GetRenderer()->GetSize();
+    const int* origin = projector->GetRenderer()->GetOrigin();
+    const QPoint middle(origin[0] + size[0] / 2, origin[1] + size[1] / 2);
+    Drag(this->Window->GetViewWidget(),
+      { middle - QPoint(30, 0),
+        middle - QPoint(10, 5),
+        middle + QPoint(10, 5),
+        middle + QPoint(30, 0) });
+    QCOMPARE(this->Logic()->GetNumberOfCommands(), 1);
+    QCOMPARE(this->UndoText(), QString("Undo Paint projector mask"));
+    const QByteArray painted = MaskBytes(lightField);
+    QVERIFY(painted != before);
+    QTest::qWait(100);
+    this->Window->grab().save(this->Temp + "/studio_four_up.png");
+    // Save Projector Masks writes one image per projector.
+    QVERIFY(this->Window->SaveProjectorMasksTo(this->Temp + "/StudioMasks"));
+    QCOMPARE(this->Status(), "Saved 2 projector masks to " + this->Temp + "/StudioMasks");
+    QVERIFY(QFile::exists(this->Temp + "/StudioMasks/projector_1.png"));
+    this->Window->Undo();
+    QCOMPARE(MaskBytes(lightField), before);
+    this->Window->Redo();
+    QCOMPARE(MaskBytes(lightField), painted);
+    this->Window->SetLayout(lfdStudioViews::MAIN_ONLY);
   }
 };
 
