@@ -4,7 +4,6 @@
 #include "vtkDeformationCage.h"
 #include "vtkGantryCameraView.h"
 #include "vtkImageData.h"
-#include "vtkLabelPalette.h"
 #include "vtkLightField.h"
 #include "vtkLightFieldEditor.h"
 #include "vtkLightFieldMapper.h"
@@ -23,8 +22,7 @@
 
 namespace
 {
-/// The palette colours label `label` is drawn with: the light field's
-/// palette, or the default one (vtkLabelPalette) when there is no light field.
+/// The colour of label `label` in `palette` (vtkGantryCameraView::GetShownPalette).
 void LabelColour(vtkUnsignedCharArray* palette, int label, unsigned char rgb[3])
 {
   const vtkIdType entry = std::clamp<vtkIdType>(label, 0, palette->GetNumberOfTuples() - 1);
@@ -32,18 +30,6 @@ void LabelColour(vtkUnsignedCharArray* palette, int label, unsigned char rgb[3])
   {
     rgb[c] = palette->GetTypedComponent(entry, c);
   }
-}
-
-vtkSmartPointer<vtkUnsignedCharArray> Palette(vtkLightField* lightField)
-{
-  if (lightField && lightField->GetPalette())
-  {
-    return lightField->GetPalette();
-  }
-  vtkNew<vtkLabelPalette> labels;
-  auto palette = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  labels->Build(palette);
-  return palette;
 }
 
 /// The number of projector masks of `lightField` (0 without one).
@@ -231,7 +217,9 @@ int lfdStudioViews::GetProjector()
 //------------------------------------------------------------------------------
 void lfdStudioViews::GetLabelColour(int label, unsigned char rgb[3])
 {
-  LabelColour(Palette(this->LightField), label, rgb);
+  vtkNew<vtkUnsignedCharArray> palette;
+  vtkGantryCameraView::GetShownPalette(this->LightField, this->Logic->GetCage(), palette);
+  LabelColour(palette, label, rgb);
 }
 
 //------------------------------------------------------------------------------

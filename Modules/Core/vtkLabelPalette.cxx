@@ -2,6 +2,7 @@
 
 #include "lfdColour.h"
 
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -30,6 +31,22 @@ double SmallestDistance(const std::vector<int>& chosen, const std::vector<double
 
 //------------------------------------------------------------------------------
 vtkLabelPalette::vtkLabelPalette() = default;
+
+//------------------------------------------------------------------------------
+void vtkLabelPalette::BuildDefault(int largestLabel, vtkUnsignedCharArray* palette)
+{
+  const int labels = std::max(1, std::min(largestLabel, 255));
+  vtkNew<vtkLabelPalette> builder;
+  // Levels^3 - 1 candidates (black is not one).
+  int levels = builder->GetLevels();
+  while (levels * levels * levels - 1 < labels)
+  {
+    ++levels;
+  }
+  builder->SetLevels(levels);
+  builder->SetNumberOfLabels(labels);
+  builder->Build(palette);
+}
 
 //------------------------------------------------------------------------------
 bool vtkLabelPalette::Build(vtkUnsignedCharArray* palette)

@@ -81,6 +81,15 @@ public:
    */
   static double GetSeparation(vtkUnsignedCharArray* palette);
 
+  /**
+   * The palette a light field without one of its own (a capture without
+   * projectors) is shown with, so that the cage widget, the calibration
+   * views and the Studio colour label i alike: Build() of a default
+   * vtkLabelPalette for labels 1..`largestLabel` (clamped to 1..255), with
+   * more levels than the default when that many labels need them.
+   */
+  static void BuildDefault(int largestLabel, vtkUnsignedCharArray* palette);
+
 protected:
   vtkLabelPalette();
   ~vtkLabelPalette() override = default;

@@ -1310,7 +1310,7 @@ vtkUnsignedCharArray* vtkCageRepresentation::GetUsedPalette()
   {
     return this->Palette;
   }
-  // vtkLabelPalette's colours for labels 1..largest, with enough levels.
+  // The default palette for labels 1..largest, as every view shows it.
   vtkInternals& in = *this->Internals;
   int largest = 1;
   for (int label : in.Labels)
@@ -1319,15 +1319,7 @@ vtkUnsignedCharArray* vtkCageRepresentation::GetUsedPalette()
   }
   if (largest != in.DefaultPaletteLabels)
   {
-    vtkNew<vtkLabelPalette> palette;
-    int levels = 2;
-    while (levels * levels * levels - 1 < largest)
-    {
-      ++levels;
-    }
-    palette->SetLevels(std::max(levels, palette->GetLevels()));
-    palette->SetNumberOfLabels(largest);
-    palette->Build(in.DefaultPalette);
+    vtkLabelPalette::BuildDefault(largest, in.DefaultPalette);
     in.DefaultPaletteLabels = largest;
   }
   return in.DefaultPalette;

@@ -15,6 +15,7 @@
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
 #include "vtkImageMapper3D.h"
+#include "vtkLabelPalette.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -50,7 +51,11 @@ std::array<unsigned char, 3> LabelColour(vtkUnsignedCharArray* palette, int labe
 }
 
 // One view of a pass as an RGB image (rows as stored: bottom first).
-void FillPassImage(vtkLightField* lightField, int view, int pass, vtkUnsignedCharArray* rgb)
+void FillPassImage(vtkLightField* lightField,
+  vtkUnsignedCharArray* palette,
+  int view,
+  int pass,
+  vtkUnsignedCharArray* rgb)
 {
   const vtkIdType pixels = static_cast<vtkIdType>(lightField->GetWidth()) * lightField->GetHeight();
   const vtkIdType offset = view * pixels;
@@ -80,7 +85,6 @@ void FillPassImage(vtkLightField* lightField, int view, int pass, vtkUnsignedCha
   vtkDataArray* data = lightField->GetPass(pass);
   if (pass == vtkLightField::LABEL)
   {
-    vtkUnsignedCharArray* palette = lightField->GetPalette();
     for (vtkIdType p = 0; p < pixels; ++p)
     {
       const auto colour = LabelColour(palette, static_cast<int>(data->GetComponent(offset + p, 0)));
@@ -346,7 +350,9 @@ void vtkGantryCameraView::UpdateImage()
         : lightField->GetPass(this->Pass) != nullptr);
   if (present)
   {
-    FillPassImage(lightField, view, this->Pass, rgb);
+    vtkNew<vtkUnsignedCharArray> palette;
+    vtkGantryCameraView::GetShownPalette(lightField, internal.Cage, palette);
+    FillPassImage(lightField, palette, view, this->Pass, rgb);
   }
   else if (lightField && views > 0)
   {
@@ -404,6 +410,8 @@ void vtkGantryCameraView::UpdateBoxes()
   const int views = lightField ? lightField->GetRig()->GetNumberOfViews() : 0;
   if (cage && views > 0 && lightField->GetHeight() > 0)
   {
+    vtkNew<vtkUnsignedCharArray> palette;
+    vtkGantryCameraView::GetShownPalette(lightField, cage, palette);
     const int view = std::max(0, std::min(this->View, views - 1));
     const lfd::PinholeCamera& camera = lightField->GetRig()->GetCamera(view);
     const double top = lightField->GetHeight() - 1.0; // OpenCV y to VTK row
@@ -414,7 +422,7 @@ void vtkGantryCameraView::UpdateBoxes()
       {
         continue;
       }
-      const auto colour = LabelColour(lightField->GetPalette(), cage->GetBoxLabel(box));
+      const auto colour = LabelColour(palette, cage->GetBoxLabel(box));
       for (vtkIdType e = 0; e < 12; ++e)
       {
         const vtkIdType* edge = vtkHexahedron::GetEdgeArray(e);
@@ -476,6 +484,24 @@ void vtkGantryCameraView::ResetCamera()
   const double aspect = renderer->GetTiledAspectRatio();
   camera->SetParallelScale(0.5 * std::max<double>(dims[1], dims[0] / std::max(aspect, 1e-6)));
   renderer->ResetCameraClippingRange();
+}
+
+//------------------------------------------------------------------------------
+void vtkGantryCameraView::GetShownPalette(vtkLightField* lightField,
+  vtkDeformationCage* cage,
+  vtkUnsignedCharArray* palette)
+{
+  if (lightField && lightField->GetPalette())
+  {
+    palette->DeepCopy(lightField->GetPalette());
+    return;
+  }
+  int largest = 1;
+  for (vtkIdType box = 0; cage && box < cage->GetNumberOfBoxes(); ++box)
+  {
+    largest = std::max(largest, cage->GetBoxLabel(box));
+  }
+  vtkLabelPalette::BuildDefault(largest, palette);
 }
 
 //------------------------------------------------------------------------------

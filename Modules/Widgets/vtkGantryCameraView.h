@@ -42,6 +42,8 @@
 
 class vtkBoxCoverageCheck;
 class vtkDeformationCage;
+class vtkLightField;
+class vtkUnsignedCharArray;
 class vtkImageData;
 class vtkPolyData;
 
@@ -122,6 +124,16 @@ public:
    * or -1 without a cage, a Label pass or a rig.
    */
   double GetCoverage();
+
+  /**
+   * The colours labels are shown with, into `palette`: the light field's
+   * own palette, or for a light field without one the default palette for
+   * the cage's labels (vtkLabelPalette::BuildDefault), which the cage widget
+   * shows too. `cage` may be null.
+   */
+  static void GetShownPalette(vtkLightField* lightField,
+    vtkDeformationCage* cage,
+    vtkUnsignedCharArray* palette);
 
   /**
    * The coverage check behind the view, up to date (its table, summaries
