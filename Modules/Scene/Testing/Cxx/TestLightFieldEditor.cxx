@@ -115,6 +115,27 @@ std::string Drag(int x0, int y0, int x1, int y1, int steps, bool release)
   }
   return release ? events + Event("LeftButtonReleaseEvent", x1, y1) : events;
 }
+
+/// 4. The timeline: keys at 0 (rest) and 1 (the top corner raised); the pose
+/// at 0.5 is shown without being edited, then edited.
+void CheckTimeline(vtkLightFieldEditor* editor, const std::vector<double>& rest)
+{
+  vtkLightFieldSceneLogic* logic = editor->GetLogic();
+  vtkDeformationCage* cage = logic->GetCage();
+  Check(logic->SetKeyframe(0.0), "key at 0");
+  Check(logic->MovePoint(TopCorner, rest[33], rest[34] + 0.1, rest[35]), "raise the corner");
+  Check(logic->SetKeyframe(1.0), "key at 1");
+  vtkNew<vtkDeformationCage> pose;
+  Check(logic->GetCageAtTime(0.5, nullptr, pose), "the pose at 0.5");
+  Check(editor->ShowTime(0.5) && editor->GetShowingTime(), "the editor shows time 0.5");
+  Check(HandlesOn(editor, pose) && !HandlesOn(editor, cage), "the handles show the pose");
+  Check(!editor->GetWidget()->GetProcessEvents(), "a shown time is not edited");
+  const int keyed = logic->GetNumberOfCommands();
+  Check(editor->EditAtTime(0.5) && !editor->GetShowingTime(), "edit at time 0.5");
+  Check(Points(cage) == Points(pose), "the current cage is the pose");
+  CheckEqual(logic->GetNumberOfCommands(), keyed + 1, "in one command");
+  Check(HandlesOn(editor, cage) && editor->GetWidget()->GetProcessEvents(), "and is edited");
+}
 }
 
 int TestLightFieldEditor(int argc, char* argv[])
@@ -256,21 +277,7 @@ int TestLightFieldEditor(int argc, char* argv[])
   Check(HandlesOn(editor, cage), "the handles match the logic's cage");
   Check(logic->Undo() && Points(cage) == rest, "and its undo restores the rest");
 
-  // 4. The timeline: keys at 0 (rest) and 1 (the top corner raised); the
-  // pose at 0.5 is shown without being edited, then edited.
-  Check(logic->SetKeyframe(0.0), "key at 0");
-  Check(logic->MovePoint(TopCorner, rest[33], rest[34] + 0.1, rest[35]), "raise the corner");
-  Check(logic->SetKeyframe(1.0), "key at 1");
-  vtkNew<vtkDeformationCage> pose;
-  Check(logic->GetCageAtTime(0.5, nullptr, pose), "the pose at 0.5");
-  Check(editor->ShowTime(0.5) && editor->GetShowingTime(), "the editor shows time 0.5");
-  Check(HandlesOn(editor, pose) && !HandlesOn(editor, cage), "the handles show the pose");
-  Check(!editor->GetWidget()->GetProcessEvents(), "a shown time is not edited");
-  const int keyed = logic->GetNumberOfCommands();
-  Check(editor->EditAtTime(0.5) && !editor->GetShowingTime(), "edit at time 0.5");
-  Check(Points(cage) == Points(pose), "the current cage is the pose");
-  CheckEqual(logic->GetNumberOfCommands(), keyed + 1, "in one command");
-  Check(HandlesOn(editor, cage) && editor->GetWidget()->GetProcessEvents(), "and is edited");
+  CheckTimeline(editor, rest);
 
   Check(image == vtkTesting::PASSED || image == vtkTesting::DO_INTERACTOR,
     "the editor's window matches the baseline");

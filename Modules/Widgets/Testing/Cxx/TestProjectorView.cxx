@@ -64,6 +64,39 @@ double SegmentDistance(double x, double y, const double a[2], const double b[2])
     : 0.0;
   return std::hypot(x - a[0] - f * d[0], y - a[1] - f * d[1]);
 }
+
+// The painted mask of projector 1 (`painted`: every mask's RGB bytes, `slice`
+// pixels each) saves as a PNG that reads back equal; a projector the light
+// field has no mask for is refused with one error.
+void CheckWrittenMask(vtkProjectorView* view,
+  const std::vector<unsigned char>& painted,
+  vtkIdType slice)
+{
+  const std::string file = std::string(LFD_TEST_TEMP_DIR) + "/TestProjectorView-mask1.png";
+  lfdtest::Check(view->WriteMask(1, file.c_str()), "mask written", 1, 1);
+  vtkNew<vtkImageFileReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkDataArray* read = reader->GetOutput()->GetPointData()->GetScalars();
+  int readErrors = read && read->GetNumberOfTuples() == slice ? 0 : 1;
+  for (vtkIdType q = 0; readErrors == 0 && q < slice; ++q)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      readErrors += read->GetComponent(q, c) == painted[3 * (slice + q) + c] ? 0 : 1;
+    }
+  }
+  lfdtest::Check(readErrors == 0, "PNG bytes different from the mask", readErrors, 0);
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(view);
+  const bool written = view->WriteMask(5, file.c_str());
+  lfdtest::Check(!written &&
+      std::string(errors->GetErrorMessage()).find("the light field has no mask for projector 5") !=
+        std::string::npos,
+    "projector 5 refused",
+    written,
+    0);
+}
 }
 
 int TestProjectorView(int argc, char* argv[])
@@ -199,31 +232,7 @@ int TestProjectorView(int argc, char* argv[])
   lfdtest::Check(differing > 0, "coded bytes changed by the stroke", differing, 0);
   std::cout << "coded view re-rendered in " << view->GetLastSimulationTime() << " ms\n";
 
-  // The painted mask saves as a PNG that reads back equal.
-  const std::string file = std::string(LFD_TEST_TEMP_DIR) + "/TestProjectorView-mask1.png";
-  lfdtest::Check(view->WriteMask(1, file.c_str()), "mask written", 1, 1);
-  vtkNew<vtkImageFileReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkDataArray* read = reader->GetOutput()->GetPointData()->GetScalars();
-  int readErrors = read && read->GetNumberOfTuples() == slice ? 0 : 1;
-  for (vtkIdType q = 0; readErrors == 0 && q < slice; ++q)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      readErrors += read->GetComponent(q, c) == painted[3 * (slice + q) + c] ? 0 : 1;
-    }
-  }
-  lfdtest::Check(readErrors == 0, "PNG bytes different from the mask", readErrors, 0);
-  vtkNew<vtkLightFieldErrorObserver> errors;
-  errors->Observe(view);
-  const bool written = view->WriteMask(5, file.c_str());
-  lfdtest::Check(!written &&
-      std::string(errors->GetErrorMessage()).find("the light field has no mask for projector 5") !=
-        std::string::npos,
-    "projector 5 refused",
-    written,
-    0);
+  CheckWrittenMask(view, painted, slice);
 
   // Regression image with the painted stroke, then undo restores the masks
   // byte for byte, redo repaints them.
