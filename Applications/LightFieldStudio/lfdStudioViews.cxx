@@ -146,6 +146,8 @@ void lfdStudioViews::SetLightField(vtkLightField* lightField)
   {
     this->Rig->ClearObjectBounds();
   }
+  // A synthetic capture's object, re-rendered live under the painted masks.
+  this->Projector->SimulateRecordedObject();
   this->SetCameraView(this->GetCameraView());
   this->SetProjector(this->GetProjector());
   this->SetLayout(this->CurrentLayout);
@@ -180,6 +182,7 @@ void lfdStudioViews::SetCameraView(int view)
   const int views = this->LightField ? this->LightField->GetNumberOfViews() : 0;
   view = std::clamp(view, 0, std::max(views - 1, 0));
   this->Camera->SetView(view);
+  this->Projector->SetSimulationView(view);
   this->Rig->SetCurrentView(this->LightField ? view : -1);
 }
 

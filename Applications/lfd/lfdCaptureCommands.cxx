@@ -113,6 +113,10 @@ vtkSmartPointer<vtkLightField> Capture(vtkPolyData* mesh,
   }
   capture->SetAxis(options.Axis[0], options.Axis[1], options.Axis[2]);
   capture->SetSceneFixedLight(options.SceneFixedLight);
+  if (options.Mesh.empty())
+  {
+    capture->SetObjectName(options.Object.c_str());
+  }
   capture->SetCaptureDepth(!options.NoDepth);
   if (options.Projectors > 0)
   {

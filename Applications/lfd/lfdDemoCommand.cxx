@@ -184,6 +184,7 @@ void Demo(const std::string& sceneName,
     const std::string suffix = sceneFixedLight ? "_fixed_light" : "";
     double start = vtkTimerLog::GetUniversalTime();
     SynthOptions options = capture;
+    options.Object = demo->Object;
     options.SceneFixedLight = sceneFixedLight;
     auto lightField = Capture(mesh, texture, options);
     const double captureTime = Seconds(start);

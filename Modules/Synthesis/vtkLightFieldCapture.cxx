@@ -21,6 +21,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProceduralObjectSource.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -580,7 +581,15 @@ PassBuffers SetUpOutput(vtkLightFieldCapture* capture,
   std::ostringstream provenance;
   provenance << "{\"generator\": \"vtkLightFieldCapture\", \"light\": \""
              << (capture->GetSceneFixedLight() ? "scene-fixed" : "coaxial")
-             << "\", \"ambient\": " << capture->GetAmbient() << "}";
+             << "\", \"ambient\": " << capture->GetAmbient();
+  // Built-in object names are plain words (vtkProceduralObjectSource): no
+  // JSON escaping needed; anything else is not recorded.
+  const char* object = capture->GetObjectName();
+  if (object && vtkProceduralObjectSource::GetObjectFromString(object) >= 0)
+  {
+    provenance << ", \"object\": \"" << object << "\"";
+  }
+  provenance << "}";
   output->SetProvenance(provenance.str().c_str());
   auto bytes = [output](int pass)
   { return static_cast<unsigned char*>(output->AllocatePass(pass)->GetVoidPointer(0)); };
@@ -679,6 +688,7 @@ vtkLightFieldCapture::~vtkLightFieldCapture()
   this->SetRig(nullptr);
   this->SetRowHeights(nullptr);
   this->SetProjectors(nullptr);
+  this->SetObjectName(nullptr);
   this->SetProjectorMasks(nullptr);
   this->SetPalette(nullptr);
 }
@@ -1073,6 +1083,7 @@ void vtkLightFieldCapture::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CaptureLabel: " << this->CaptureLabel << "\n";
   os << indent << "CaptureDepth: " << this->CaptureDepth << "\n";
   os << indent << "SceneFixedLight: " << this->SceneFixedLight << "\n";
+  os << indent << "ObjectName: " << (this->ObjectName ? this->ObjectName : "(none)") << "\n";
   os << indent << "Ambient: " << this->Ambient << "\n";
   os << indent << "NumberOfProjectors: " << this->NumberOfProjectors << "\n";
   os << indent << "ProjectorWidth: " << this->ProjectorWidth << "\n";

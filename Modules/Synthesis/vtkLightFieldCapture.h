@@ -198,6 +198,18 @@ public:
 
   ///@{
   /**
+   * The name of the built-in object captured (vtkProceduralObjectSource's
+   * names: "fish", "figure", ...), recorded in the output's provenance as
+   * "object" so that a front end can rebuild it (the Studio's live
+   * projector simulation, vtkProjectorView). Default nullptr: a mesh of the
+   * user's, not recorded.
+   */
+  vtkSetStringMacro(ObjectName);
+  vtkGetStringMacro(ObjectName);
+  ///@}
+
+  ///@{
+  /**
    * Ambient coefficient of the Coaxial pass; the diffuse coefficient is
    * 1 - Ambient. Default 0.1.
    */
@@ -328,6 +340,7 @@ protected:
   bool CaptureLabel = true;
   bool CaptureDepth = true;
   bool SceneFixedLight = false;
+  char* ObjectName = nullptr;
   double Ambient = 0.1;
   vtkCameraRig* Rig = nullptr;
   int NumberOfProjectors = 0;

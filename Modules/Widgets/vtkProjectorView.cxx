@@ -1,5 +1,6 @@
 #include "vtkProjectorView.h"
 
+#include "lfdJsonFields.h"
 #include "lfdPinholeCamera.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
@@ -14,6 +15,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkProceduralObjectSource.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
@@ -145,6 +147,34 @@ void vtkProjectorView::SetSimulationMesh(vtkPolyData* mesh)
   this->Internal->Mesh = mesh;
   this->Internal->ShownTime = 0;
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkProjectorView::SimulateRecordedObject()
+{
+  vtkLightField* lightField = this->GetLightField();
+  const char* provenance = lightField ? lightField->GetProvenance() : nullptr;
+  lfd::io::Json document;
+  std::string error;
+  int object = -1;
+  if (provenance && lfd::io::ParseJsonText(provenance, document, error) &&
+    document.is_object() && document.contains("object") && document["object"].is_string())
+  {
+    object = vtkProceduralObjectSource::GetObjectFromString(
+      document["object"].get<std::string>().c_str());
+  }
+  if (object < 0)
+  {
+    this->SetSimulationMesh(nullptr);
+    this->SetSimulationTexture(nullptr);
+    return false;
+  }
+  vtkNew<vtkProceduralObjectSource> source;
+  source->SetObject(object);
+  source->Update();
+  this->SetSimulationMesh(source->GetOutput());
+  this->SetSimulationTexture(source->GetTextureOutput());
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -99,6 +99,16 @@ public:
   void SetSimulationTexture(vtkImageData* texture);
   ///@}
 
+  /**
+   * Simulates the object the light field records in its provenance: a
+   * capture of a built-in object (`lfd synth --object NAME`, `lfd demo`)
+   * records "object": NAME, and this rebuilds it with
+   * vtkProceduralObjectSource as the simulation mesh and texture. Returns
+   * false, and clears them, when the light field records none (a mesh of
+   * the user's, a real capture).
+   */
+  bool SimulateRecordedObject();
+
   ///@{
   /**
    * The camera view whose coded pass is re-rendered (default 0).

@@ -509,6 +509,8 @@ private Q_SLOTS:
     vtkProjectorView* projector = this->Window->GetViews()->GetProjectorView();
     QCOMPARE(projector->GetBrushLabel(), 3);
     QCOMPARE(projector->GetBrushRadius(), 3.0);
+    // `lfd synth` recorded the fish in the provenance: it is simulated.
+    QVERIFY(projector->GetSimulationMesh() != nullptr);
     vtkLightField* lightField = this->Window->GetViews()->GetLightField();
     const QByteArray before = MaskBytes(lightField);
     const int* size = projector->GetRenderer()->GetSize();
@@ -523,6 +525,8 @@ private Q_SLOTS:
     QCOMPARE(this->UndoText(), QString("Undo Paint projector mask"));
     const QByteArray painted = MaskBytes(lightField);
     QVERIFY(painted != before);
+    // The coded pass of the current view was re-rendered under the stroke.
+    QVERIFY(projector->GetSimulatedImage()->GetNumberOfPoints() > 0);
     QTest::qWait(100);
     this->Window->grab().save(this->Temp + "/studio_four_up.png");
     // Save Projector Masks writes one image per projector.
