@@ -157,11 +157,11 @@ bool vtkProjectorView::SimulateRecordedObject()
   lfd::io::Json document;
   std::string error;
   int object = -1;
-  if (provenance && lfd::io::ParseJsonText(provenance, document, error) &&
-    document.is_object() && document.contains("object") && document["object"].is_string())
+  if (provenance && lfd::io::ParseJsonText(provenance, document, error) && document.is_object() &&
+    document.contains("object") && document["object"].is_string())
   {
-    object = vtkProceduralObjectSource::GetObjectFromString(
-      document["object"].get<std::string>().c_str());
+    object =
+      vtkProceduralObjectSource::GetObjectFromString(document["object"].get<std::string>().c_str());
   }
   if (object < 0)
   {
