@@ -3,6 +3,8 @@
 #include "lfdStudioViews.h"
 
 #include "QVTKOpenGLNativeWidget.h"
+#include "vtkCageRepresentation.h"
+#include "vtkCageWidget.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
@@ -224,12 +226,24 @@ void lfdStudioMainWindow::CreateBoxesDock()
   auto* layout = new QVBoxLayout(panel);
   this->BoxTable = new QTableWidget(0, 2);
   this->BoxTable->setObjectName("Boxes");
-  this->BoxTable->setHorizontalHeaderLabels({ tr("Box"), tr("Label") });
+  this->BoxTable->setHorizontalHeaderLabels({ tr("Box (shown)"), tr("Label") });
   this->BoxTable->horizontalHeader()->setStretchLastSection(true);
   this->BoxTable->setSelectionBehavior(QAbstractItemView::SelectRows);
   this->BoxTable->setSelectionMode(QAbstractItemView::SingleSelection);
   this->BoxTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
   layout->addWidget(this->BoxTable);
+  // The check box of a row shows or hides that box in the cage widget.
+  QObject::connect(this->BoxTable,
+    &QTableWidget::itemChanged,
+    [this](QTableWidgetItem* item)
+    {
+      if (item->column() == 0)
+      {
+        this->Views->GetEditor()->GetWidget()->GetCageRepresentation()->SetBoxVisibility(
+          item->row(), item->checkState() == Qt::Checked);
+        this->Render();
+      }
+    });
 
   auto* row = new QHBoxLayout;
   auto* add = new QPushButton(tr("Add"));
@@ -752,6 +766,11 @@ void lfdStudioMainWindow::CageModified(vtkObject*, unsigned long, void*)
   for (int box = 0; box < boxes; ++box)
   {
     auto* name = new QTableWidgetItem(QString::number(box));
+    name->setFlags(name->flags() | Qt::ItemIsUserCheckable);
+    name->setCheckState(
+      this->Views->GetEditor()->GetWidget()->GetCageRepresentation()->GetBoxVisibility(box)
+        ? Qt::Checked
+        : Qt::Unchecked);
     auto* label = new QTableWidgetItem(QString::number(cage->GetBoxLabel(box)));
     unsigned char rgb[3];
     this->Views->GetLabelColour(cage->GetBoxLabel(box), rgb);

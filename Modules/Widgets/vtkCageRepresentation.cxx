@@ -7,7 +7,9 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDeformationCage.h"
+#include "vtkDoubleArray.h"
 #include "vtkGlyph3D.h"
 #include "vtkHexahedron.h"
 #include "vtkIdList.h"
@@ -116,6 +118,17 @@ public:
   std::vector<std::array<vtkIdType, 8>> Boxes;
   std::vector<int> Labels;
   std::vector<std::vector<vtkIdType>> PointBoxes;
+  std::vector<vtkIdType> BoxIds;       // the cage's box of each of Boxes
+  std::vector<char> HiddenBoxes;       // by the cage's box index
+  vtkNew<vtkDoubleArray> HandleScales; // 0 hides a handle's glyph
+
+  bool BoxShown(size_t b) const { return !this->HiddenBoxes[this->BoxIds[b]]; }
+  bool PointShown(vtkIdType id) const
+  {
+    const std::vector<vtkIdType>& boxes = this->PointBoxes[id];
+    return boxes.empty() ||
+      std::any_of(boxes.begin(), boxes.end(), [this](vtkIdType b) { return this->BoxShown(b); });
+  }
   std::vector<char> Selected;
   double Diagonal = 1.0;    // of the rest cage's bounds: tolerances
   double BoxDiagonal = 1.0; // mean over the rest boxes: the handle size
@@ -160,11 +173,18 @@ public:
     this->Handles->SetPoints(this->Points);
     this->HandleColors->SetNumberOfComponents(3);
     this->Handles->GetPointData()->SetScalars(this->HandleColors);
+    // Scale 1 shows a handle, 0 collapses the glyph of a hidden one.
+    this->HandleScales->SetName("HandleScale");
+    this->Handles->GetPointData()->AddArray(this->HandleScales);
     this->Sphere->SetThetaResolution(12);
     this->Sphere->SetPhiResolution(8);
     this->Glyph->SetInputData(this->Handles);
     this->Glyph->SetSourceConnection(this->Sphere->GetOutputPort());
-    this->Glyph->SetScaleModeToDataScalingOff();
+    this->Glyph->SetScaleModeToScaleByScalar();
+    this->Glyph->SetInputArrayToProcess(
+      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "HandleScale");
+    this->Glyph->SetInputArrayToProcess(
+      3, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
     this->Glyph->SetColorModeToColorByScalar();
     this->HandleMapper->SetInputConnection(this->Glyph->GetOutputPort());
     this->HandleMapper->SetColorModeToDirectScalars();
@@ -333,8 +353,13 @@ void vtkCageRepresentation::SyncFromCage(bool force)
   }
   in.Boxes.clear();
   in.Labels.clear();
+  in.BoxIds.clear();
   in.PointBoxes.assign(n, {});
   const vtkIdType numberOfBoxes = this->Cage ? this->Cage->GetNumberOfBoxes() : 0;
+  if (static_cast<vtkIdType>(in.HiddenBoxes.size()) != numberOfBoxes)
+  {
+    in.HiddenBoxes.assign(numberOfBoxes, 0);
+  }
   vtkNew<vtkIdList> cellIds;
   for (vtkIdType b = 0; b < numberOfBoxes; ++b)
   {
@@ -353,6 +378,7 @@ void vtkCageRepresentation::SyncFromCage(bool force)
     }
     const vtkIdType index = static_cast<vtkIdType>(in.Boxes.size());
     in.Boxes.push_back(corners);
+    in.BoxIds.push_back(b);
     in.Labels.push_back(this->Cage->GetBoxLabel(b));
     for (vtkIdType id : corners)
     {
@@ -528,11 +554,37 @@ bool vtkCageRepresentation::RunEdit()
 }
 
 //------------------------------------------------------------------------------
+void vtkCageRepresentation::SetBoxVisibility(vtkIdType box, bool visible)
+{
+  this->SyncFromCage(false);
+  vtkInternals& in = *this->Internals;
+  if (box < 0 || box >= static_cast<vtkIdType>(in.HiddenBoxes.size()))
+  {
+    vtkErrorMacro(
+      "SetBoxVisibility: no box " << box << " in a cage of " << in.HiddenBoxes.size() << " boxes.");
+    return;
+  }
+  if (in.HiddenBoxes[box] != (visible ? 0 : 1))
+  {
+    in.HiddenBoxes[box] = visible ? 0 : 1;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkCageRepresentation::GetBoxVisibility(vtkIdType box)
+{
+  this->SyncFromCage(false);
+  const vtkInternals& in = *this->Internals;
+  return box >= 0 && box < static_cast<vtkIdType>(in.HiddenBoxes.size()) && !in.HiddenBoxes[box];
+}
+
+//------------------------------------------------------------------------------
 bool vtkCageRepresentation::IsPointVisible(vtkIdType id)
 {
   this->SyncFromCage(false);
   const vtkInternals& in = *this->Internals;
-  if (!this->Renderer || id < 0 || id >= in.NumberOfPoints())
+  if (!this->Renderer || id < 0 || id >= in.NumberOfPoints() || !in.PointShown(id))
   {
     return false;
   }
@@ -559,7 +611,7 @@ bool vtkCageRepresentation::IsPointVisible(vtkIdType id)
   const std::vector<vtkIdType>& own = in.PointBoxes[id];
   for (vtkIdType b = 0; b < static_cast<vtkIdType>(in.Boxes.size()); ++b)
   {
-    if (std::find(own.begin(), own.end(), b) != own.end())
+    if (!in.BoxShown(b) || std::find(own.begin(), own.end(), b) != own.end())
     {
       continue;
     }
@@ -1332,11 +1384,13 @@ void vtkCageRepresentation::UpdateGeometry()
   const vtkIdType n = in.NumberOfPoints();
   in.Points->SetNumberOfPoints(n);
   in.HandleColors->SetNumberOfTuples(n);
+  in.HandleScales->SetNumberOfTuples(n);
   vtkMath::UninitializeBounds(in.Bounds);
   for (vtkIdType i = 0; i < n; ++i)
   {
     const glm::dvec3& p = in.Positions[i];
     in.Points->SetPoint(i, p.x, p.y, p.z);
+    in.HandleScales->SetValue(i, in.PointShown(i) ? 1.0 : 0.0);
     const double* rgb = in.Selected[i] ? this->SelectedColor : this->HandleColor;
     rgb = i == this->HoverPointId ? this->HoverColor : rgb;
     in.HandleColors->SetTypedTuple(i,
@@ -1352,6 +1406,7 @@ void vtkCageRepresentation::UpdateGeometry()
   }
   in.Points->Modified();
   in.HandleColors->Modified();
+  in.HandleScales->Modified();
   in.Handles->Modified();
   in.Sphere->SetRadius(this->HandleSize * in.BoxDiagonal);
 
@@ -1360,7 +1415,7 @@ void vtkCageRepresentation::UpdateGeometry()
   std::map<std::pair<vtkIdType, vtkIdType>, int> edges;
   for (size_t b = 0; b < in.Boxes.size(); ++b)
   {
-    for (vtkIdType edge = 0; edge < 12; ++edge)
+    for (vtkIdType edge = 0; in.BoxShown(b) && edge < 12; ++edge)
     {
       const vtkIdType* e = vtkHexahedron::GetEdgeArray(edge);
       const vtkIdType p0 = in.Boxes[b][e[0]];

@@ -268,10 +268,23 @@ public:
   vtkIdType PickPoint(double x, double y);
 
   /**
-   * Whether point `id` is visible from the renderer's camera: not behind a
-   * face of a box that does not use it, nor behind the occluder depth.
+   * Whether point `id` is visible from the renderer's camera: used by a
+   * shown box (see SetBoxVisibility), not behind a face of a shown box that
+   * does not use it, nor behind the occluder depth.
    */
   bool IsPointVisible(vtkIdType id);
+
+  ///@{
+  /**
+   * Shows or hides box `box` of the cage (default: every box shown), as
+   * Blender hides parts of a lattice: a hidden box draws no edges and hides
+   * nothing behind it, and a handle whose boxes are all hidden is neither
+   * drawn nor picked. The cage is not changed. A cage with another number
+   * of boxes shows them all again.
+   */
+  void SetBoxVisibility(vtkIdType box, bool visible);
+  bool GetBoxVisibility(vtkIdType box);
+  ///@}
 
   /**
    * The point under the cursor (updated by ComputeInteractionState()), -1

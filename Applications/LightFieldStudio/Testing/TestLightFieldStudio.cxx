@@ -457,6 +457,14 @@ private Q_SLOTS:
   void boxesDock()
   {
     auto* boxes = this->Window->findChild<QTableWidget*>("Boxes");
+    // A row's check box hides and shows its box in the cage widget.
+    vtkCageRepresentation* representation =
+      this->Window->GetViews()->GetEditor()->GetWidget()->GetCageRepresentation();
+    QCOMPARE(boxes->item(0, 0)->checkState(), Qt::Checked);
+    boxes->item(0, 0)->setCheckState(Qt::Unchecked);
+    QVERIFY(!representation->GetBoxVisibility(0) && representation->GetBoxVisibility(1));
+    boxes->item(0, 0)->setCheckState(Qt::Checked);
+    QVERIFY(representation->GetBoxVisibility(0));
     QPushButton* add = Button(this->Window, "Add");
     QVERIFY(add);
     add->click();

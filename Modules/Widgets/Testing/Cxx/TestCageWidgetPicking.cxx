@@ -65,6 +65,16 @@ int TestCageWidgetPicking(int, char*[])
   check(!rep->IsPointVisible(8), "corner 8 is hidden behind the front box");
   check(rep->IsPointVisible(4), "corner 4 is visible");
   check(rep->PickPoint(x, y) == 4, "PickPoint takes the visible corner 4");
+  // A hidden front box hides nothing: a corner of box 1 is picked under the
+  // cursor (8, or 12 in front of it along the same line of sight), never 4.
+  rep->SetBoxVisibility(0, false);
+  check(!rep->GetBoxVisibility(0) && rep->GetBoxVisibility(1), "box 0 hidden, box 1 shown");
+  check(!rep->IsPointVisible(4) && rep->IsPointVisible(8), "hiding box 0 hides corner 4, shows 8");
+  const vtkIdType behind = rep->PickPoint(x, y);
+  check(behind == 8 || behind == 12,
+    "PickPoint takes a corner of box 1 with box 0 hidden: " + std::to_string(behind));
+  rep->SetBoxVisibility(0, true);
+  check(rep->PickPoint(x, y) == 4, "shown again, corner 4 is picked");
   scene.Play(lfdtest::Click(x, y));
   check(lfdtest::SelectedIds(rep) == "4", "a click selects corner 4: " + lfdtest::SelectedIds(rep));
 
