@@ -1,5 +1,7 @@
 #include "vtkLightFieldSceneLogic.h"
 
+#include "lfdProjectorMasks.h"
+
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
@@ -1297,14 +1299,7 @@ bool vtkLightFieldSceneLogic::SetProjectorMask(int projector, vtkImageData* mask
 {
   Internals& internal = *this->Internal;
   vtkImageData* masks = internal.LightField ? internal.LightField->GetProjectorMasks() : nullptr;
-  auto rgbOf = [](vtkImageData* image) -> vtkUnsignedCharArray*
-  {
-    vtkDataArray* data = image->GetPointData()->GetArray("Mask");
-    auto* rgb =
-      vtkUnsignedCharArray::SafeDownCast(data ? data : image->GetPointData()->GetScalars());
-    return rgb && rgb->GetNumberOfComponents() == 3 ? rgb : nullptr;
-  };
-  vtkUnsignedCharArray* target = masks ? rgbOf(masks) : nullptr;
+  vtkUnsignedCharArray* target = masks ? lfd::GetMaskColours(masks) : nullptr;
   if (!target)
   {
     return this->Refuse(
@@ -1316,7 +1311,7 @@ bool vtkLightFieldSceneLogic::SetProjectorMask(int projector, vtkImageData* mask
     return this->Refuse(this->Where() + "SetProjectorMask: projector " + std::to_string(projector) +
       " does not exist (the light field has " + std::to_string(dims[2]) + ")");
   }
-  vtkUnsignedCharArray* source = mask ? rgbOf(mask) : nullptr;
+  vtkUnsignedCharArray* source = mask ? lfd::GetMaskColours(mask) : nullptr;
   const int* size = mask ? mask->GetDimensions() : nullptr;
   if (!source || size[0] != dims[0] || size[1] != dims[1] || size[2] != 1)
   {

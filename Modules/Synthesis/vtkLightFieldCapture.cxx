@@ -2,6 +2,7 @@
 
 #include "lfdPerspectiveDepth.h"
 #include "lfdPinholeCamera.h"
+#include "lfdProjectorMasks.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
@@ -128,11 +129,9 @@ std::string PrepareProjectorMasks(vtkPolyData* mesh,
   if (painted)
   {
     const int* dims = painted->GetDimensions();
-    vtkDataArray* colours = painted->GetPointData()->GetArray("Mask");
-    colours = colours ? colours : painted->GetPointData()->GetScalars();
-    maskArray = vtkUnsignedCharArray::SafeDownCast(colours);
-    if (!maskArray || maskArray->GetNumberOfComponents() != 3 || dims[0] != projectorWidth ||
-      dims[1] != projectorHeight || dims[2] != projectorCount)
+    maskArray = lfd::GetMaskColours(painted);
+    if (!maskArray || dims[0] != projectorWidth || dims[1] != projectorHeight ||
+      dims[2] != projectorCount)
     {
       return "vtkLightFieldCapture: the projector masks are " + std::to_string(dims[0]) + "x" +
         std::to_string(dims[1]) + "x" + std::to_string(dims[2]) +

@@ -2,6 +2,7 @@
 
 #include "lfdJsonFields.h"
 #include "lfdPinholeCamera.h"
+#include "lfdProjectorMasks.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkImageActor.h"
@@ -28,18 +29,6 @@ vtkStandardNewMacro(vtkProjectorView);
 
 namespace
 {
-// The RGB array of a mask stack: "Mask", or the scalars (vtkLightField).
-vtkUnsignedCharArray* MaskArray(vtkImageData* masks)
-{
-  if (!masks)
-  {
-    return nullptr;
-  }
-  vtkDataArray* data = masks->GetPointData()->GetArray("Mask");
-  auto* rgb = vtkUnsignedCharArray::SafeDownCast(data ? data : masks->GetPointData()->GetScalars());
-  return rgb && rgb->GetNumberOfComponents() == 3 ? rgb : nullptr;
-}
-
 // Slice `slice` of an RGB image stack into `image` (W x H x 1, "Mask").
 void CopySlice(vtkImageData* stack, int slice, vtkImageData* image)
 {
@@ -50,7 +39,7 @@ void CopySlice(vtkImageData* stack, int slice, vtkImageData* image)
   rgb->SetName("Mask");
   rgb->SetNumberOfComponents(3);
   rgb->SetNumberOfTuples(pixels);
-  const unsigned char* from = MaskArray(stack)->GetPointer(3 * slice * pixels);
+  const unsigned char* from = lfd::GetMaskColours(stack)->GetPointer(3 * slice * pixels);
   std::copy_n(from, 3 * pixels, rgb->GetPointer(0));
   image->GetPointData()->SetScalars(rgb);
 }
@@ -92,14 +81,14 @@ struct vtkProjectorView::Internals
   vtkMTimeType MasksTime() const
   {
     vtkImageData* masks = this->Masks();
-    vtkUnsignedCharArray* rgb = MaskArray(masks);
+    vtkUnsignedCharArray* rgb = lfd::GetMaskColours(masks);
     return masks && rgb ? std::max(masks->GetMTime(), rgb->GetMTime()) : 1;
   }
 
   bool HasMask(int projector) const
   {
     vtkImageData* masks = this->Masks();
-    return MaskArray(masks) && projector >= 0 && projector < masks->GetDimensions()[2];
+    return lfd::GetMaskColours(masks) && projector >= 0 && projector < masks->GetDimensions()[2];
   }
 };
 
@@ -330,7 +319,8 @@ void vtkProjectorView::ContinueStroke(int x, int y)
   {
     palette->GetTypedTuple(this->BrushLabel, colour);
   }
-  unsigned char* rgb = MaskArray(internal.Working)->GetPointer(3 * this->Projector * pixels);
+  unsigned char* rgb =
+    lfd::GetMaskColours(internal.Working)->GetPointer(3 * this->Projector * pixels);
   // The brush sweeps a capsule: every pixel within BrushRadius of the
   // segment from the last position to this one.
   const double r = this->BrushRadius;
