@@ -16,6 +16,10 @@ packages=(
   ffmpeg                   # MP4 export of animations (lfd animate, the Studio)
   libopenimageio-dev openimageio-tools
   libglm-dev nlohmann-json3-dev libcli11-dev libopencv-dev
+  libopencv-contrib-dev    # ChArUco and Gray codes (Modules/Calibration)
+  libmodbus-dev            # the gantry over Modbus TCP (Modules/Acquisition)
+  libaravis-dev aravis-tools libusb-1.0-0-dev   # GigE Vision camera; pkg-config aravis-0.8 needs libusb
+  colmap                   # lfd import colmap, tested with the real colmap
   xvfb xauth libx11-dev    # lfd asks the X server before opening an OpenGL window
   clang-14 libclang-rt-14-dev   # the sanitizer and fuzz suite (lfd-SanitizerSuite)
 )
