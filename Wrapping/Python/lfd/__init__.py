@@ -15,3 +15,4 @@ from .lfdRendering import *  # noqa: F401,F403
 from .lfdEvaluation import *  # noqa: F401,F403
 from .lfdScene import *  # noqa: F401,F403
 from .lfdWidgets import *  # noqa: F401,F403
+from .lfdAcquisition import *  # noqa: F401,F403
