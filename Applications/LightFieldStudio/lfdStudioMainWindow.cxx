@@ -387,12 +387,14 @@ void lfdStudioMainWindow::CreateTimelineDock()
   connect(this->PlayAction, &QAction::toggled, this, &lfdStudioMainWindow::SetPlaying);
   this->LoopAction = toolbar->addAction(tr("Loop"));
   this->LoopAction->setCheckable(true);
-  auto* interpolation = new QComboBox;
-  interpolation->setObjectName("Interpolation");
-  // Indices are vtkKeyframeInterpolator's: LINEAR = 0, CATMULL_ROM = 1.
-  interpolation->addItems({ tr("Linear"), tr("Catmull-Rom") });
-  interpolation->setCurrentIndex(this->Logic->GetInterpolation());
-  connect(interpolation,
+  this->Interpolation = new QComboBox;
+  this->Interpolation->setObjectName("Interpolation");
+  // Indices are vtkKeyframeInterpolator's: LINEAR = 0, CATMULL_ROM = 1. The
+  // choice is the scene's (scene.json "interpolation"), an undoable edit;
+  // SettingsModified() shows it after a load, an undo or a redo.
+  this->Interpolation->addItems({ tr("Linear"), tr("Catmull-Rom") });
+  this->Interpolation->setCurrentIndex(this->Logic->GetInterpolation());
+  connect(this->Interpolation,
     QOverload<int>::of(&QComboBox::currentIndexChanged),
     this,
     [this](int index)
@@ -400,7 +402,7 @@ void lfdStudioMainWindow::CreateTimelineDock()
       this->Logic->SetInterpolation(index);
       this->ShowTime(-1.0);
     });
-  toolbar->addWidget(interpolation);
+  toolbar->addWidget(this->Interpolation);
   layout->addWidget(toolbar);
 
   this->Scrub = new QSlider(Qt::Horizontal);
@@ -802,9 +804,11 @@ void lfdStudioMainWindow::SettingsModified(vtkObject*, unsigned long, void*)
   const QSignalBlocker b1(this->FocalDistance);
   const QSignalBlocker b2(this->Subdivision);
   const QSignalBlocker b3(this->WidenedSearch);
+  const QSignalBlocker b4(this->Interpolation);
   this->FocalDistance->setValue(scene->GetFocalDistance());
   this->Subdivision->setValue(scene->GetSubdivision());
   this->WidenedSearch->setValue(scene->GetWidenedSearch());
+  this->Interpolation->setCurrentIndex(scene->GetInterpolation());
   this->Render();
 }
 

@@ -157,6 +157,7 @@ private:
   QDoubleSpinBox* FocalDistance = nullptr;
   QSpinBox* Subdivision = nullptr;
   QSpinBox* WidenedSearch = nullptr;
+  QComboBox* Interpolation = nullptr;
   QListWidget* KeyList = nullptr;
   QDoubleSpinBox* KeyTime = nullptr;
   QSlider* Scrub = nullptr;

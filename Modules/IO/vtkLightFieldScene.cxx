@@ -255,6 +255,23 @@ std::vector<Keyframe> ParseKeyframes(const Json& list, size_t cagePoints)
   return keyframes;
 }
 
+// The keyframes' "interpolation": its names in scene.json, by value.
+const char* const InterpolationNames[] = { "linear", "catmull-rom" };
+
+int ParseInterpolation(const Json& value)
+{
+  const std::string name = lfd::io::GetString(value, "interpolation");
+  for (int i = 0; i < 2; ++i)
+  {
+    if (name == InterpolationNames[i])
+    {
+      return i;
+    }
+  }
+  throw FieldError(
+    "interpolation", "expected \"linear\" or \"catmull-rom\", found " + lfd::io::Describe(value));
+}
+
 // The view "camera" and the rendered image size.
 void ParseCamera(const Json& cam, vtkCamera* camera, int& width, int& height)
 {
@@ -391,6 +408,7 @@ void vtkLightFieldScene::Initialize()
   this->WidenedSearch = 2;
   this->ObjectThreshold = 10.0;
   this->Background[0] = this->Background[1] = this->Background[2] = 0.0;
+  this->Interpolation = INTERPOLATION_CATMULL_ROM;
   this->Modified();
 }
 
@@ -524,6 +542,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
   bool hasLightField = false;
   auto cage = vtkSmartPointer<vtkUnstructuredGrid>::New();
   std::vector<Keyframe> keyframes;
+  int interpolation = INTERPOLATION_CATMULL_ROM;
   auto camera = vtkSmartPointer<vtkCamera>::New();
   int width = 512, height = 512;
   RenderSettings settings;
@@ -544,6 +563,10 @@ bool vtkLightFieldScene::Read(const char* fileName)
     {
       keyframes = ParseKeyframes(*list, cagePoints);
     }
+    if (const Json* value = lfd::io::FindMember(document, "", "interpolation"))
+    {
+      interpolation = ParseInterpolation(*value);
+    }
     if (const Json* cam = lfd::io::FindMember(document, "", "camera"))
     {
       ParseCamera(*cam, camera, width, height);
@@ -563,6 +586,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
   this->SetLightFieldPath(hasLightField ? lightField.c_str() : nullptr);
   this->Internal->Cage = cage;
   this->Internal->Keyframes = std::move(keyframes);
+  this->Interpolation = interpolation;
   this->Internal->Camera = camera;
   this->Width = width;
   this->Height = height;
@@ -704,6 +728,12 @@ bool vtkLightFieldScene::WriteFile(const char* fileName)
     }
     document["keyframes"] = list;
   }
+  // Written with keyframes, or when it is not the default: a scene with
+  // neither writes as it did before the field existed.
+  if (!this->Internal->Keyframes.empty() || this->Interpolation != INTERPOLATION_CATMULL_ROM)
+  {
+    document["interpolation"] = InterpolationNames[this->Interpolation];
+  }
   vtkCamera* camera = this->Internal->Camera;
   Json cameraJson;
   cameraJson["position"] = VectorToJson(camera->GetPosition());
@@ -752,6 +782,7 @@ void vtkLightFieldScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Cage: " << this->Internal->Cage->GetNumberOfPoints() << " points, "
      << this->Internal->Cage->GetNumberOfCells() << " boxes\n";
   os << indent << "Keyframes: " << this->Internal->Keyframes.size() << "\n";
+  os << indent << "Interpolation: " << InterpolationNames[this->Interpolation] << "\n";
   for (const Keyframe& keyframe : this->Internal->Keyframes)
   {
     os << indent.GetNextIndent() << "time " << keyframe.Time << ": "

@@ -15,7 +15,8 @@
  *   doubles) holds the rest positions; the cell array "Label" (int) the label
  *   of each box. A file without `points` gets points equal to the rest
  *   positions; a file without `cage` gives an empty grid (HasCage() false).
- * - Keyframes: (time, cage point positions), in file order.
+ * - Keyframes: (time, cage point positions), in file order, and how they
+ *   are interpolated (Interpolation: linear or Catmull-Rom, the default).
  * - Camera: a vtkCamera (position, focal point, view up, view angle in
  *   degrees) and the image Width x Height (default 512 x 512, 30 degrees).
  * - Render settings: FocalDistance (default 0), Subdivision (k x k x k
@@ -149,6 +150,28 @@ public:
   ///@}
 
   /**
+   * How the keyframes are interpolated over time ("interpolation" in
+   * scene.json). The values are vtkKeyframeInterpolator's (Deformation),
+   * which the scene logic hands them to.
+   */
+  enum InterpolationTypes
+  {
+    INTERPOLATION_LINEAR = 0,
+    INTERPOLATION_CATMULL_ROM = 1
+  };
+
+  ///@{
+  /**
+   * Keyframe interpolation, one of InterpolationTypes. Default
+   * INTERPOLATION_CATMULL_ROM (what `lfd animate` always rendered).
+   */
+  vtkSetClampMacro(Interpolation, int, INTERPOLATION_LINEAR, INTERPOLATION_CATMULL_ROM);
+  vtkGetMacro(Interpolation, int);
+  void SetInterpolationToLinear() { this->SetInterpolation(INTERPOLATION_LINEAR); }
+  void SetInterpolationToCatmullRom() { this->SetInterpolation(INTERPOLATION_CATMULL_ROM); }
+  ///@}
+
+  /**
    * The view camera (never null).
    */
   vtkCamera* GetCamera();
@@ -223,6 +246,7 @@ protected:
   int WidenedSearch = 2;
   double ObjectThreshold = 10.0;
   double Background[3] = { 0.0, 0.0, 0.0 };
+  int Interpolation = INTERPOLATION_CATMULL_ROM;
 
 private:
   vtkLightFieldScene(const vtkLightFieldScene&) = delete;

@@ -33,6 +33,14 @@
 
 vtkStandardNewMacro(vtkLightFieldSceneLogic);
 
+// The scene (IO) stores the keyframe interpolation as an int that this
+// logic hands to the interpolator (Deformation) unchanged.
+static_assert(static_cast<int>(vtkLightFieldScene::INTERPOLATION_LINEAR) ==
+      static_cast<int>(vtkKeyframeInterpolator::LINEAR) &&
+    static_cast<int>(vtkLightFieldScene::INTERPOLATION_CATMULL_ROM) ==
+      static_cast<int>(vtkKeyframeInterpolator::CATMULL_ROM),
+  "scene.json's interpolation values are vtkKeyframeInterpolator's");
+
 namespace
 {
 /// Everything a structural cage edit can change: the boxes and their points
@@ -164,6 +172,7 @@ struct SettingsState
   double ObjectThreshold = 0.0;
   std::array<double, 3> Background{};
   vtkSmartPointer<vtkCamera> Camera;
+  int Interpolation = 0;
 };
 
 SettingsState CaptureSettings(vtkLightFieldScene* scene)
@@ -176,6 +185,7 @@ SettingsState CaptureSettings(vtkLightFieldScene* scene)
   state.WidenedSearch = scene->GetWidenedSearch();
   state.ObjectThreshold = scene->GetObjectThreshold();
   scene->GetBackground(state.Background.data());
+  state.Interpolation = scene->GetInterpolation();
   state.Camera = vtkSmartPointer<vtkCamera>::New();
   state.Camera->DeepCopy(scene->GetCamera());
   return state;
@@ -190,6 +200,7 @@ void RestoreSettings(const SettingsState& state, vtkLightFieldScene* scene)
   scene->SetWidenedSearch(state.WidenedSearch);
   scene->SetObjectThreshold(state.ObjectThreshold);
   scene->SetBackground(state.Background.data());
+  scene->SetInterpolation(state.Interpolation);
   scene->GetCamera()->DeepCopy(state.Camera);
 }
 
@@ -765,7 +776,7 @@ bool vtkLightFieldSceneLogic::FillCage(const double* time,
   if (time && scene->GetNumberOfKeyframes() > 0)
   {
     vtkNew<vtkKeyframeInterpolator> keyframes;
-    keyframes->SetInterpolation(this->Interpolation);
+    keyframes->SetInterpolation(scene->GetInterpolation());
     for (int k = 0; k < scene->GetNumberOfKeyframes(); ++k)
     {
       if (!keyframes->AddKeyframe(scene->GetKeyframeTime(k), scene->GetKeyframePoints(k)))
@@ -782,6 +793,27 @@ bool vtkLightFieldSceneLogic::FillCage(const double* time,
   }
   const std::string why = cage->Validate(lightField);
   return why.empty() || this->Refuse(this->Where() + why);
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldSceneLogic::SetInterpolation(int interpolation)
+{
+  return this->Internal->EditSettings(this,
+    "Set interpolation",
+    [interpolation](vtkLightFieldScene* scene)
+    {
+      scene->SetInterpolation(interpolation);
+      return scene->GetInterpolation() == interpolation
+        ? std::string()
+        : "field \"interpolation\": expected 0 (linear) or 1 (Catmull-Rom), found " +
+          std::to_string(interpolation);
+    });
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldSceneLogic::GetInterpolation()
+{
+  return this->Internal->Scene->GetInterpolation();
 }
 
 //------------------------------------------------------------------------------
@@ -1433,7 +1465,6 @@ void vtkLightFieldSceneLogic::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "Scene: " << (internal.Scene->GetFileName() ? internal.Scene->GetFileName() : "(unsaved)")
      << "\n";
-  os << indent << "Interpolation: " << this->Interpolation << "\n";
   os << indent << "Cage: " << internal.Cage->GetNumberOfBoxes() << " boxes on "
      << internal.Cage->GetNumberOfPoints() << " points\n";
   os << indent << "LightField: "

@@ -166,12 +166,13 @@ public:
   /**
    * How GetCageAtTime() (and so an animation export of this logic)
    * interpolates the keyframes: vtkKeyframeInterpolator::CATMULL_ROM (the
-   * default, what `lfd animate` renders) or vtkKeyframeInterpolator::LINEAR
-   * (the Studio's timeline choice; not part of scene.json, not an undoable
-   * command).
+   * default, what `lfd animate` always rendered) or
+   * vtkKeyframeInterpolator::LINEAR. It is the scene's (saved in scene.json
+   * as "interpolation"); SetInterpolation() is an undoable command, refused
+   * for a value that is neither.
    */
-  vtkSetClampMacro(Interpolation, int, 0, 1);
-  vtkGetMacro(Interpolation, int);
+  bool SetInterpolation(int interpolation);
+  int GetInterpolation();
   ///@}
 
   /**
@@ -381,7 +382,6 @@ protected:
   ~vtkLightFieldSceneLogic() override;
 
   vtkIdType NumberOfBoxesLastValidated = 0;
-  int Interpolation = 1; // vtkKeyframeInterpolator::CATMULL_ROM
 
 private:
   vtkLightFieldSceneLogic(const vtkLightFieldSceneLogic&) = delete;

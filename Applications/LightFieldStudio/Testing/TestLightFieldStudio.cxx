@@ -295,9 +295,15 @@ private Q_SLOTS:
     QCOMPARE(this->Logic()->GetNumberOfCommands(), 4);
     QCOMPARE(this->UndoText(), QString("Undo Set keyframe"));
     QCOMPARE(this->Window->findChild<QListWidget*>("Keyframes")->count(), 9);
+    // The timeline's interpolation is the scene's: one undoable edit, saved
+    // in scene.json (the baseline holds "linear").
+    this->Window->findChild<QComboBox*>("Interpolation")->setCurrentIndex(0);
+    QCOMPARE(this->Logic()->GetInterpolation(), 0);
+    QCOMPARE(this->Logic()->GetNumberOfCommands(), 5);
+    QCOMPARE(this->UndoText(), QString("Undo Set interpolation"));
     // Scrubbing shows the interpolated cage, edits nothing.
     this->Window->findChild<QSlider*>("Scrub")->setValue(500);
-    QCOMPARE(this->Logic()->GetNumberOfCommands(), 4);
+    QCOMPARE(this->Logic()->GetNumberOfCommands(), 5);
   }
 
   void saveEqualsBaseline()
@@ -379,7 +385,7 @@ private Q_SLOTS:
     QCOMPARE(views->GetCameraView(), nearest);
     QCOMPARE(views->GetRigView()->GetCurrentView(), nearest);
     // Selecting a view edits nothing.
-    QCOMPARE(this->Logic()->GetNumberOfCommands(), 4);
+    QCOMPARE(this->Logic()->GetNumberOfCommands(), 5);
 
     // Paper section 4.1: the projected rest boxes cover the labelled pixels
     // of the fish in every view (as `lfd split check` reports).
@@ -429,7 +435,7 @@ private Q_SLOTS:
       this->Window->Undo();
       ++undone;
     }
-    QCOMPARE(undone, 4);
+    QCOMPARE(undone, 5);
     QCOMPARE(this->Status(), QString("Undid Move 1 point"));
     QVERIFY(!this->Window->findChild<QAction*>("Undo")->isEnabled());
     QCOMPARE(this->Window->findChild<QAction*>("Redo")->text(), QString("Redo Move 1 point"));

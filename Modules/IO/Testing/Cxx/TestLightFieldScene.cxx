@@ -109,7 +109,10 @@ int TestLightFieldScene(int, char*[])
   scene->SetSubdivision(3);
   scene->SetWidenedSearch(0);
   scene->SetBackground(0.25, 0.5, 1.0);
+  scene->SetInterpolationToLinear();
   Check(scene->Write(file.c_str()), "Write " + file);
+  Check(lfdtest::ReadText(file).find("\"interpolation\": \"linear\"") != std::string::npos,
+    "interpolation written by name");
   CheckEqual(lfdtest::CountEntries(folder, "scene.tmp-"), 0, "temporary files left");
 
   vtkNew<vtkLightFieldScene> read;
@@ -159,6 +162,9 @@ int TestLightFieldScene(int, char*[])
   CheckEqual(read->GetWidenedSearch(), 0, "widened search");
   CheckEqual(read->GetBackground()[0], 0.25, "background red");
   CheckEqual(read->GetBackground()[2], 1.0, "background blue");
+  CheckEqual(read->GetInterpolation(),
+    static_cast<int>(vtkLightFieldScene::INTERPOLATION_LINEAR),
+    "interpolation read back");
 
   // A second write of what was read gives the same bytes.
   const std::string again = folder + "/again.json";
@@ -183,6 +189,15 @@ int TestLightFieldScene(int, char*[])
   CheckEqual(plain->GetSubdivision(), 1, "default subdivision");
   CheckEqual(plain->GetWidenedSearch(), 2, "default widened search");
   CheckEqual(plain->GetFocalDistance(), 0.0, "default focal distance");
+  CheckEqual(plain->GetInterpolation(),
+    static_cast<int>(vtkLightFieldScene::INTERPOLATION_CATMULL_ROM),
+    "default interpolation");
+  // Without keyframes, at the default, the field is not written (files of
+  // scenes without an animation keep their bytes).
+  const std::string plainAgain = folder + "/plain-again.json";
+  Check(plain->Write(plainAgain.c_str()), "write the minimal scene");
+  Check(lfdtest::ReadText(plainAgain).find("interpolation") == std::string::npos,
+    "no interpolation field without keyframes at the default");
 
   const std::string restOnly = folder + "/rest.json";
   lfdtest::WriteText(restOnly,

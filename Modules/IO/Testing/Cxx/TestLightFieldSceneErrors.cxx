@@ -112,6 +112,12 @@ int TestLightFieldSceneErrors(int, char*[])
   expectFailure("camera position of 2",
     Scene(Cage("", Box), ", \"camera\": {\"position\": [0, 1]}"),
     { "\"camera.position\"", "3 numbers" });
+  expectFailure("unknown interpolation",
+    Scene(Cage("", Box), ", \"interpolation\": \"cubic\""),
+    { "\"interpolation\"", "expected \"linear\" or \"catmull-rom\", found the string \"cubic\"" });
+  expectFailure("interpolation not a string",
+    Scene(Cage("", Box), ", \"interpolation\": 1"),
+    { "\"interpolation\"" });
   expectFailure("keyframes without a cage",
     "{\"format\": \"lfd-scene\", \"version\": 1, \"keyframes\": [{\"time\": 0, \"points\": []}]}",
     { "\"keyframes\"", "no cage" });

@@ -296,11 +296,23 @@ void TestBuildsAndTime(Logic* logic)
   Check(logic->GetCageAtTime(0.5, nullptr, atTime), "the cage at time 0.5");
   atTime->GetDeformedPoint(41, p);
   lfdtest::CheckRange(p[1] - rest[1], 0.040625 - 1e-6, 0.040625 + 1e-6, "Catmull-Rom at 0.5");
-  logic->SetInterpolation(vtkKeyframeInterpolator::LINEAR);
+  Check(logic->SetInterpolation(vtkKeyframeInterpolator::LINEAR), "set linear interpolation");
   Check(logic->GetCageAtTime(0.5, nullptr, atTime), "the linear cage at time 0.5");
   atTime->GetDeformedPoint(41, p);
   lfdtest::CheckRange(p[1] - rest[1], 0.05 - 1e-6, 0.05 + 1e-6, "linear at 0.5");
-  logic->SetInterpolation(vtkKeyframeInterpolator::CATMULL_ROM);
+  // The interpolation is the scene's, one undoable command.
+  CheckEqual(logic->GetScene()->GetInterpolation(),
+    static_cast<int>(vtkLightFieldScene::INTERPOLATION_LINEAR),
+    "the scene's interpolation");
+  CheckEqual(logic->GetUndoName(), std::string("Set interpolation"), "undo name");
+  Check(logic->Undo(), "undo the interpolation");
+  CheckEqual(logic->GetInterpolation(),
+    static_cast<int>(vtkKeyframeInterpolator::CATMULL_ROM),
+    "interpolation after undo");
+  Check(!logic->SetInterpolation(2), "interpolation 2 is refused");
+  CheckEqual(logic->GetInterpolation(),
+    static_cast<int>(vtkKeyframeInterpolator::CATMULL_ROM),
+    "interpolation after a refused edit");
 }
 }
 
