@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -210,6 +212,89 @@ void ConfigureCommands(CLI::App* command)
   }
 }
 
+/// The command named by `path` (its words after `lfd`), or nullptr.
+CLI::App* FindCommand(CLI::App* app, const std::vector<std::string>& path)
+{
+  for (const std::string& word : path)
+  {
+    CLI::App* next = nullptr;
+    for (CLI::App* sub : app->get_subcommands({}))
+    {
+      next = sub->get_name() == word ? sub : next;
+    }
+    if (!next)
+    {
+      return nullptr;
+    }
+    app = next;
+  }
+  return app;
+}
+
+/// Every command's --help under `app` in turn, depth first.
+void PrintAllHelp(const CLI::App* app, const std::string& prefix)
+{
+  for (const CLI::App* sub : app->get_subcommands({}))
+  {
+    if (sub->get_name() != "help")
+    {
+      std::cout << sub->help(prefix) << "\n";
+      PrintAllHelp(sub, prefix + " " + sub->get_name());
+    }
+  }
+}
+
+/// `lfd --help`'s text (app.help() would give the help of the command that
+/// was parsed, `help` itself).
+std::string Overview(const CLI::App& app)
+{
+  return app.get_formatter()->make_help(&app, "lfd", CLI::AppFormatMode::Normal);
+}
+
+/// `lfd help [COMMAND [SUBCOMMAND]]` prints the same text as the command's
+/// --help (one source for both); `lfd help all` every command's, the
+/// reference manual in one page.
+void AddHelpCommand(CLI::App& app, std::vector<Command>& commands)
+{
+  auto topic = std::make_shared<std::vector<std::string>>();
+  auto* help = app.add_subcommand("help",
+    "print the help of a command (lfd help render, lfd help split projector), or of every "
+    "command (lfd help all)");
+  help->add_option("topic", *topic, "a command and its subcommand; 'all' for every command");
+  commands.push_back({ help,
+    [&app, topic]
+    {
+      if (topic->size() == 1 && topic->front() == "all")
+      {
+        std::cout << Overview(app) << "\n";
+        PrintAllHelp(&app, "lfd");
+        return;
+      }
+      const CLI::App* command = FindCommand(&app, *topic);
+      if (!command)
+      {
+        std::string known;
+        for (const CLI::App* sub : app.get_subcommands({}))
+        {
+          known += (known.empty() ? "" : ", ") + sub->get_name();
+        }
+        std::string asked;
+        for (const std::string& word : *topic)
+        {
+          asked += (asked.empty() ? "" : " ") + word;
+        }
+        Fail("help: no command '" + asked + "' (commands: " + known + ")");
+      }
+      std::string prefix = "lfd";
+      for (size_t i = 0; i + 1 < topic->size(); ++i)
+      {
+        prefix += " " + (*topic)[i];
+      }
+      std::cout << (topic->empty() ? Overview(app) : command->help(prefix));
+    },
+    false });
+}
+
 /// The commands, their options and what they run; the run's errors go to
 /// `errors`.
 int Main(int argc, char* argv[], lfd::CommandErrors& errors)
@@ -227,6 +312,7 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
   AddDemoCommand(app, numbers, commands);
   AddSplitCommands(app, numbers, commands);
   AddStudioCommand(app, numbers, commands);
+  AddHelpCommand(app, commands);
 
   ConfigureCommands(&app);
   const std::string unknown = CheckCommandWords(&app, argc, argv);

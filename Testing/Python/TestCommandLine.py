@@ -5,6 +5,7 @@ line naming the file and field, exit status 1, and no output left behind."""
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 
@@ -48,6 +49,19 @@ for sub in (["synth"], ["import", "middlebury"], ["info"], ["render"], ["animate
             ["split", "scanline"], ["split", "propagate"], ["split", "check"]):
     code, out, _ = lfd(*sub, "--help")
     t.check(code == 0 and "Options" in out, "lfd " + " ".join(sub) + " --help", code)
+# `lfd help TOPIC` is the same text as the command's --help; `lfd help all`
+# holds every command's; an unknown topic is one error naming the commands.
+for sub in (["render"], ["split", "projector"]):
+    _, expected, _ = lfd(*sub, "--help")
+    expected = expected.replace("Usage: " + t.LFD + " ", "Usage: lfd ")  # --help names argv[0]
+    code, out, _ = lfd("help", *sub)
+    t.check(code == 0 and out == expected, "lfd help " + " ".join(sub) + " = its --help", out[:80])
+code, out, _ = lfd("help", "all")
+t.check(code == 0 and "Usage: lfd split projector" in out and "Usage: lfd studio" in out,
+        "lfd help all holds every command's help", code)
+expect_error(["help", "nope"], "help: no command 'nope'", "render")
+code, out, _ = lfd("--version")
+t.check(code == 0 and re.fullmatch(r"lfd \d+\.\d+\.\d+\n", out) is not None, "lfd --version", out)
 
 # synth -> info -> render -> eval.
 lf = os.path.join(WORK, "board.lf")
