@@ -1,0 +1,611 @@
+#include "vtkModbusGantry.h"
+
+#include "lfdGantryRegisters.h"
+#include "lfdMotionProfile.h"
+
+#include "vtkObjectFactory.h"
+
+#include <modbus/modbus.h>
+
+#include <arpa/inet.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+#include <thread>
+
+namespace gantry = lfd::gantry;
+
+namespace
+{
+/// "30", "12.5": angles in messages, as a user would type them.
+std::string Degrees(double angle)
+{
+  std::ostringstream text;
+  text << angle << " deg";
+  return text.str();
+}
+
+double Now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+void SetModbusTimeout(modbus_t* context, double seconds)
+{
+  const double whole = std::floor(seconds);
+  modbus_set_response_timeout(context,
+    static_cast<uint32_t>(whole),
+    static_cast<uint32_t>(std::lround((seconds - whole) * 1e6)));
+}
+
+/// A Modbus exception: the controller answered and refused the request.
+bool IsException(int error)
+{
+  return error > MODBUS_ENOBASE && error < MODBUS_ENOBASE + MODBUS_EXCEPTION_MAX;
+}
+}
+
+/// The connection and the motion being waited for.
+class vtkModbusGantry::vtkInternals
+{
+public:
+  modbus_t* Context = nullptr;
+  bool Connected = false;
+  /// Whether the last failure happened while connecting.
+  bool FailedToConnect = false;
+  uint16_t WatchdogCount = 0;
+  /// The motion waited for: "the move to 30 deg", "homing".
+  std::string Motion;
+  double Deadline = 0.0;
+  double DeadlineSeconds = 0.0;
+
+  ~vtkInternals() { this->Close(); }
+
+  void Close()
+  {
+    if (this->Context)
+    {
+      modbus_close(this->Context);
+      modbus_free(this->Context);
+      this->Context = nullptr;
+    }
+    this->Connected = false;
+  }
+
+  /// Connects within the connect timeout; 0 or the errno.
+  int Open(vtkModbusGantry* self)
+  {
+    if (!this->Context)
+    {
+      this->Context = modbus_new_tcp(self->Address, self->Port);
+      if (!this->Context)
+      {
+        return errno;
+      }
+    }
+    // libmodbus waits for a TCP connection as long as for an answer.
+    SetModbusTimeout(this->Context, self->ConnectTimeout);
+    if (modbus_connect(this->Context) == -1)
+    {
+      const int error = errno;
+      modbus_close(this->Context);
+      return error;
+    }
+    SetModbusTimeout(this->Context, self->ResponseTimeout);
+    this->Connected = true;
+    return 0;
+  }
+
+  /**
+   * Sends a request (`request(context)` returns -1 on failure, as libmodbus
+   * calls do) with up to `retries` retries, reconnecting after a failure
+   * that is not the controller's refusal. Returns 0 or the last errno.
+   */
+  template<typename Request>
+  int Transact(vtkModbusGantry* self, Request request, int retries)
+  {
+    int error = 0;
+    for (int attempt = 0; attempt <= retries; ++attempt)
+    {
+      this->FailedToConnect = false;
+      if (!this->Connected)
+      {
+        error = this->Open(self);
+        this->FailedToConnect = error != 0;
+        if (error)
+        {
+          continue;
+        }
+      }
+      if (request(this->Context) != -1)
+      {
+        return 0;
+      }
+      error = errno;
+      if (IsException(error))
+      {
+        return error;
+      }
+      modbus_close(this->Context);
+      this->Connected = false;
+    }
+    return error;
+  }
+};
+
+vtkStandardNewMacro(vtkModbusGantry);
+
+vtkModbusGantry::vtkModbusGantry()
+  : Internals(new vtkInternals)
+{
+}
+
+vtkModbusGantry::~vtkModbusGantry()
+{
+  this->SetAddress(nullptr);
+}
+
+std::string vtkModbusGantry::GetDeviceName() const
+{
+  return "gantry " + std::string(this->Address ? this->Address : "(no address)") + ":" +
+    std::to_string(this->Port);
+}
+
+namespace
+{
+/// Why a request failed, from its errno, for one message.
+std::string DescribeFailure(int error,
+  bool connecting,
+  double connectTimeout,
+  double responseTimeout,
+  int attempts)
+{
+  std::ostringstream text;
+  const std::string tries = attempts == 1 ? "1 attempt" : std::to_string(attempts) + " attempts";
+  if (IsException(error))
+  {
+    text << "the controller refused the request: " << modbus_strerror(error);
+  }
+  else if (connecting)
+  {
+    text << "cannot connect";
+    if (error == ETIMEDOUT || error == EINPROGRESS)
+    {
+      text << " within " << connectTimeout << " s";
+    }
+    text << ": " << modbus_strerror(error) << " (" << tries << ")";
+  }
+  else if (error == ETIMEDOUT)
+  {
+    text << "no answer within " << responseTimeout << " s (" << modbus_strerror(error) << "; "
+         << tries << ")";
+  }
+  else
+  {
+    text << "communication failed: " << modbus_strerror(error) << " (" << tries << ")";
+  }
+  return text.str();
+}
+}
+
+void vtkModbusGantry::Refuse(const std::string& reason)
+{
+  vtkErrorMacro(<< this->GetDeviceName() << ": " << reason);
+}
+
+void vtkModbusGantry::RefuseRequest(int error, const std::string& during)
+{
+  this->Refuse(DescribeFailure(error,
+                 this->Internals->FailedToConnect,
+                 this->ConnectTimeout,
+                 this->ResponseTimeout,
+                 this->Retries + 1) +
+    (during.empty() ? "" : " during " + during));
+}
+
+namespace
+{
+/// The settings' ranges: the registers' units and sizes, and sane waits.
+struct SettingCheck
+{
+  const char* Name;
+  double Value;
+  double Lowest;
+  double Highest;
+  bool LowestIncluded;
+  const char* Unit;
+};
+}
+
+bool vtkModbusGantry::Connect()
+{
+  this->Disconnect();
+  in_addr parsed{};
+  if (!this->Address || inet_pton(AF_INET, this->Address, &parsed) != 1)
+  {
+    this->Refuse("Address '" + std::string(this->Address ? this->Address : "") +
+      "' is not an IPv4 address (e.g. 192.168.1.20)");
+    return false;
+  }
+  const SettingCheck checks[] = {
+    { "Port", static_cast<double>(this->Port), 1.0, 65535.0, true, "" },
+    { "ConnectTimeout", this->ConnectTimeout, 0.0, 3600.0, false, " s" },
+    { "ResponseTimeout", this->ResponseTimeout, 0.0, 3600.0, false, " s" },
+    { "Retries", static_cast<double>(this->Retries), 0.0, 100.0, true, "" },
+    { "Velocity", this->Velocity, 0.0, 65535 * gantry::VelocityUnit, false, " degree/s" },
+    { "Acceleration",
+      this->Acceleration,
+      0.0,
+      65535 * gantry::AccelerationUnit,
+      false,
+      " degree/s^2" },
+    { "SoftLimits[0]", this->SoftLimits[0], -100000.0, 100000.0, true, " deg" },
+    { "SoftLimits[1]", this->SoftLimits[1], -100000.0, 100000.0, true, " deg" },
+    { "WatchdogTimeout", this->WatchdogTimeout, 0.0, 65.535, true, " s" },
+    { "DeadlineFactor", this->DeadlineFactor, 1.0, 100.0, true, "" },
+    { "DeadlineMargin", this->DeadlineMargin, 0.0, 3600.0, true, " s" },
+    { "PollInterval", this->PollInterval, 0.0, 1.0, false, " s" },
+  };
+  for (const SettingCheck& check : checks)
+  {
+    // !(a <= b) also refuses NaN.
+    const bool low =
+      check.LowestIncluded ? !(check.Value >= check.Lowest) : !(check.Value > check.Lowest);
+    if (low || !(check.Value <= check.Highest))
+    {
+      std::ostringstream reason;
+      reason << check.Name << " " << check.Value << check.Unit << " is out of range "
+             << (check.LowestIncluded ? "[" : "(") << check.Lowest << ", " << check.Highest << "]";
+      this->Refuse(reason.str());
+      return false;
+    }
+  }
+  if (!(this->SoftLimits[0] < this->SoftLimits[1]))
+  {
+    std::ostringstream reason;
+    reason << "SoftLimits [" << this->SoftLimits[0] << ", " << this->SoftLimits[1]
+           << "] deg: the minimum is not below the maximum";
+    this->Refuse(reason.str());
+    return false;
+  }
+  uint16_t identity[2] = { 0, 0 };
+  const int error = this->Internals->Transact(
+    this,
+    [&](modbus_t* context)
+    { return modbus_read_registers(context, gantry::Identity, 2, identity); },
+    this->Retries);
+  if (error)
+  {
+    this->RefuseRequest(error, "");
+    this->Disconnect();
+    return false;
+  }
+  if (identity[0] != gantry::IdentityValue || identity[1] != gantry::MapVersionValue)
+  {
+    std::ostringstream reason;
+    reason << "not an lfd gantry controller: registers " << gantry::Identity << "-"
+           << gantry::MapVersion << " read " << identity[0] << ", " << identity[1] << " (expected "
+           << gantry::IdentityValue << ", " << gantry::MapVersionValue
+           << ": see the register map in Data/README.md)";
+    this->Refuse(reason.str());
+    this->Disconnect();
+    return false;
+  }
+  return true;
+}
+
+void vtkModbusGantry::Disconnect()
+{
+  this->Internals->Close();
+}
+
+bool vtkModbusGantry::IsConnected() const
+{
+  return this->Internals->Connected;
+}
+
+bool vtkModbusGantry::IsReady() const
+{
+  return (this->StatusWord & gantry::ReadyBit) != 0;
+}
+
+bool vtkModbusGantry::IsMoving() const
+{
+  return (this->StatusWord & gantry::MovingBit) != 0;
+}
+
+bool vtkModbusGantry::IsInPosition() const
+{
+  return (this->StatusWord & gantry::InPositionBit) != 0;
+}
+
+bool vtkModbusGantry::IsHomed() const
+{
+  return (this->StatusWord & gantry::HomedBit) != 0;
+}
+
+bool vtkModbusGantry::UpdateState()
+{
+  vtkInternals& internals = *this->Internals;
+  if (!internals.Context)
+  {
+    this->Refuse("not connected (call Connect() first)");
+    return false;
+  }
+  // One request refreshes the watchdog and reads the state (function 23).
+  uint16_t registers[4];
+  const int error = internals.Transact(
+    this,
+    [&](modbus_t* context)
+    {
+      const uint16_t count = ++internals.WatchdogCount;
+      return modbus_write_and_read_registers(
+        context, gantry::Watchdog, 1, &count, gantry::StatusWord, 4, registers);
+    },
+    this->Retries);
+  if (error)
+  {
+    this->RefuseRequest(error, this->Internals->Motion);
+    return false;
+  }
+  this->StatusWord = registers[0];
+  this->FaultCode = registers[1];
+  this->ActualAngle = gantry::GetInt32(registers + 2) * gantry::PositionUnit;
+  return true;
+}
+
+bool vtkModbusGantry::Command(int control, const std::string& during)
+{
+  const int error = this->Internals->Transact(
+    this,
+    [&](modbus_t* context) { return modbus_write_register(context, gantry::ControlWord, control); },
+    this->Retries);
+  if (error)
+  {
+    this->RefuseRequest(error, during);
+    return false;
+  }
+  return true;
+}
+
+bool vtkModbusGantry::Enable()
+{
+  if (!this->UpdateState())
+  {
+    return false;
+  }
+  if (this->FaultCode != gantry::NoFault)
+  {
+    this->Refuse("drive fault " + std::to_string(this->FaultCode) + " (" +
+      gantry::DescribeFault(this->FaultCode) + "): reset it first");
+    return false;
+  }
+  uint16_t registers[gantry::Watchdog - gantry::Velocity];
+  registers[0] = static_cast<uint16_t>(std::lround(this->Velocity / gantry::VelocityUnit));
+  registers[1] = static_cast<uint16_t>(std::lround(this->Acceleration / gantry::AccelerationUnit));
+  gantry::SetInt32(registers + gantry::SoftLimitMinimum - gantry::Velocity,
+    static_cast<int32_t>(std::lround(this->SoftLimits[0] / gantry::PositionUnit)));
+  gantry::SetInt32(registers + gantry::SoftLimitMaximum - gantry::Velocity,
+    static_cast<int32_t>(std::lround(this->SoftLimits[1] / gantry::PositionUnit)));
+  registers[gantry::WatchdogTimeout - gantry::Velocity] =
+    static_cast<uint16_t>(std::lround(this->WatchdogTimeout * 1000.0));
+  const int error = this->Internals->Transact(
+    this,
+    [&](modbus_t* context)
+    {
+      return modbus_write_registers(
+        context, gantry::Velocity, gantry::Watchdog - gantry::Velocity, registers);
+    },
+    this->Retries);
+  if (error)
+  {
+    this->RefuseRequest(error, "");
+    return false;
+  }
+  if (!this->Command(gantry::EnableBit, "") || !this->UpdateState())
+  {
+    return false;
+  }
+  if (!this->IsReady())
+  {
+    this->Refuse("not ready after enabling (status word " + std::to_string(this->StatusWord) + ")");
+    return false;
+  }
+  return true;
+}
+
+bool vtkModbusGantry::CheckReady(bool homed, const std::string& motion)
+{
+  this->Internals->Motion.clear();
+  if (!this->UpdateState())
+  {
+    return false;
+  }
+  if (this->FaultCode != gantry::NoFault)
+  {
+    this->Refuse("cannot start " + motion + ": drive fault " + std::to_string(this->FaultCode) +
+      " (" + gantry::DescribeFault(this->FaultCode) + "): reset it first");
+    return false;
+  }
+  if (!this->IsReady())
+  {
+    this->Refuse("cannot start " + motion + ": the axis is not enabled (call Enable() first)");
+    return false;
+  }
+  if (this->IsMoving())
+  {
+    this->Refuse("cannot start " + motion + ": the axis is still moving");
+    return false;
+  }
+  if (homed && !this->IsHomed())
+  {
+    this->Refuse("cannot start " + motion + ": the axis is not homed (call Home() first)");
+    return false;
+  }
+  return true;
+}
+
+bool vtkModbusGantry::BeginMotion(double target,
+  double velocity,
+  int control,
+  const std::string& motion)
+{
+  const double duration =
+    lfd::MotionProfile::Trapezoid(0.0, this->ActualAngle, target, velocity, this->Acceleration)
+      .GetDuration();
+  this->Internals->DeadlineSeconds = this->DeadlineFactor * duration + this->DeadlineMargin;
+  this->Internals->Deadline = Now() + this->Internals->DeadlineSeconds;
+  if (!this->Command(gantry::EnableBit | control, motion))
+  {
+    return false;
+  }
+  this->Internals->Motion = motion;
+  return true;
+}
+
+bool vtkModbusGantry::Home()
+{
+  return this->CheckReady(false, "homing") &&
+    this->BeginMotion(0.0, 0.5 * this->Velocity, gantry::HomeBit, "homing") &&
+    this->WaitInPosition();
+}
+
+bool vtkModbusGantry::MoveTo(double angle)
+{
+  return this->StartMove(angle) && this->WaitInPosition();
+}
+
+bool vtkModbusGantry::StartMove(double angle)
+{
+  const std::string motion = "the move to " + Degrees(angle);
+  if (!this->CheckReady(true, motion))
+  {
+    return false;
+  }
+  // !(a <= b) also refuses NaN.
+  if (!(angle >= this->SoftLimits[0] && angle <= this->SoftLimits[1]))
+  {
+    this->Refuse("cannot start " + motion + ": outside the soft limits [" +
+      Degrees(this->SoftLimits[0]) + ", " + Degrees(this->SoftLimits[1]) + "]");
+    return false;
+  }
+  uint16_t target[2];
+  gantry::SetInt32(target, static_cast<int32_t>(std::lround(angle / gantry::PositionUnit)));
+  const int error = this->Internals->Transact(
+    this,
+    [&](modbus_t* context)
+    { return modbus_write_registers(context, gantry::TargetPosition, 2, target); },
+    this->Retries);
+  if (error)
+  {
+    this->RefuseRequest(error, motion);
+    return false;
+  }
+  return this->BeginMotion(angle, this->Velocity, gantry::StartBit, motion);
+}
+
+bool vtkModbusGantry::WaitInPosition()
+{
+  const bool arrived = this->PollMotion();
+  // Later failures are no longer "during" this motion.
+  this->Internals->Motion.clear();
+  return arrived;
+}
+
+bool vtkModbusGantry::PollMotion()
+{
+  vtkInternals& internals = *this->Internals;
+  const std::string motion = internals.Motion.empty() ? "a motion" : internals.Motion;
+  for (;;)
+  {
+    if (!this->UpdateState())
+    {
+      // Best effort, once: the controller's watchdog stops the axis when
+      // this does not reach it either.
+      internals.Transact(
+        this,
+        [](modbus_t* context)
+        { return modbus_write_register(context, gantry::ControlWord, gantry::QuickStopBit); },
+        0);
+      return false;
+    }
+    if (this->FaultCode != gantry::NoFault)
+    {
+      // The controller quick-stopped the axis itself (its fault reaction).
+      this->Refuse("drive fault " + std::to_string(this->FaultCode) + " (" +
+        gantry::DescribeFault(this->FaultCode) + ") during " + motion);
+      return false;
+    }
+    if (!this->IsMoving())
+    {
+      if (this->IsInPosition())
+      {
+        return true;
+      }
+      this->Refuse(
+        motion + " stopped before reaching its target, at " + Degrees(this->ActualAngle));
+      return false;
+    }
+    if (Now() > internals.Deadline)
+    {
+      std::ostringstream reason;
+      reason << motion << " was not in position within its deadline of "
+             << internals.DeadlineSeconds << " s; quick-stopped";
+      if (this->Command(gantry::EnableBit | gantry::QuickStopBit, motion))
+      {
+        this->Refuse(reason.str());
+      }
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::duration<double>(this->PollInterval));
+  }
+}
+
+bool vtkModbusGantry::Stop()
+{
+  return this->Command(gantry::EnableBit | gantry::StopBit, "");
+}
+
+bool vtkModbusGantry::QuickStop()
+{
+  return this->Command(gantry::EnableBit | gantry::QuickStopBit, "");
+}
+
+bool vtkModbusGantry::ResetFault()
+{
+  if (!this->Command(gantry::FaultResetBit, "") || !this->UpdateState())
+  {
+    return false;
+  }
+  if (this->FaultCode != gantry::NoFault)
+  {
+    this->Refuse("drive fault " + std::to_string(this->FaultCode) + " (" +
+      gantry::DescribeFault(this->FaultCode) + ") persists after a reset");
+    return false;
+  }
+  return true;
+}
+
+void vtkModbusGantry::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Address: " << (this->Address ? this->Address : "(none)") << "\n";
+  os << indent << "Port: " << this->Port << "\n";
+  os << indent << "ConnectTimeout: " << this->ConnectTimeout << " s\n";
+  os << indent << "ResponseTimeout: " << this->ResponseTimeout << " s\n";
+  os << indent << "Retries: " << this->Retries << "\n";
+  os << indent << "Velocity: " << this->Velocity << " degree/s\n";
+  os << indent << "Acceleration: " << this->Acceleration << " degree/s^2\n";
+  os << indent << "SoftLimits: " << this->SoftLimits[0] << ", " << this->SoftLimits[1] << "\n";
+  os << indent << "WatchdogTimeout: " << this->WatchdogTimeout << " s\n";
+  os << indent << "DeadlineFactor: " << this->DeadlineFactor << "\n";
+  os << indent << "DeadlineMargin: " << this->DeadlineMargin << " s\n";
+  os << indent << "PollInterval: " << this->PollInterval << " s\n";
+  os << indent << "Connected: " << (this->IsConnected() ? "yes" : "no") << "\n";
+  os << indent << "ActualAngle: " << this->ActualAngle << "\n";
+  os << indent << "StatusWord: " << this->StatusWord << "\n";
+  os << indent << "FaultCode: " << this->FaultCode << "\n";
+}
