@@ -174,6 +174,7 @@ void AddSimulatorCommand(CLI::App& app, NumericOptions& numbers, std::vector<Com
 /// The connection options every `lfd gantry` command takes.
 struct ClientOptions
 {
+  std::string Config;
   std::string Address = "127.0.0.1";
   int Port = 502;
   double Timeout = 0.5;
@@ -181,6 +182,9 @@ struct ClientOptions
   double Velocity = 30.0;
   double Acceleration = 60.0;
   double Angle = 0.0;
+  /// The options above as given on the command line (with --config, only
+  /// those given override the description).
+  std::vector<CLI::Option*> Given;
 };
 
 /// "gantry 127.0.0.1:1502: at 30 deg, ready, homed, in position".
@@ -213,12 +217,6 @@ enum class GantryAction
 void RunGantry(const ClientOptions& options, GantryAction action)
 {
   vtkNew<vtkModbusGantry> device;
-  device->SetAddress(options.Address.c_str());
-  device->SetPort(options.Port);
-  device->SetResponseTimeout(options.Timeout);
-  device->SetRetries(options.Retries);
-  device->SetVelocity(options.Velocity);
-  device->SetAcceleration(options.Acceleration);
   StepErrors errors;
   errors->Observe(device);
   const auto check = [&](bool done)
@@ -229,6 +227,36 @@ void RunGantry(const ClientOptions& options, GantryAction action)
       Fail(device->GetDeviceName() + ": failed");
     }
   };
+  const bool described = !options.Config.empty();
+  if (described)
+  {
+    check(device->ReadConfiguration(options.Config.c_str()));
+  }
+  const auto given = [&](size_t i) { return !described || options.Given[i]->count() > 0; };
+  if (given(0))
+  {
+    device->SetAddress(options.Address.c_str());
+  }
+  if (given(1))
+  {
+    device->SetPort(options.Port);
+  }
+  if (given(2))
+  {
+    device->SetResponseTimeout(options.Timeout);
+  }
+  if (given(3))
+  {
+    device->SetRetries(options.Retries);
+  }
+  if (given(4))
+  {
+    device->SetVelocity(options.Velocity);
+  }
+  if (given(5))
+  {
+    device->SetAcceleration(options.Acceleration);
+  }
   check(device->Connect());
   switch (action)
   {
@@ -272,15 +300,21 @@ void AddGantryCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
   {
     auto options = std::make_shared<ClientOptions>();
     auto* command = group->add_subcommand(leaf.Name, leaf.Help);
-    command->add_option("--address", options->Address, "the controller's IPv4 address")
-      ->capture_default_str();
-    numbers.Add(command, "--port", options->Port, 1, 65535, "the controller's Modbus TCP port");
-    numbers.Add(
-      command, "--timeout", options->Timeout, 0.001, 3600.0, "seconds to wait for each answer");
-    numbers.Add(
-      command, "--retries", options->Retries, 0, 100, "retries of a request that got no answer");
-    numbers.Add(command, "--velocity", options->Velocity, 0.01, 655.35, "degree/s");
-    numbers.Add(command, "--acceleration", options->Acceleration, 0.1, 6553.5, "degree/s^2");
+    command->add_option("--config",
+      options->Config,
+      "the gantry description (gantry.json, Data/README.md); the options below given as well "
+      "override it");
+    options->Given = {
+      command->add_option("--address", options->Address, "the controller's IPv4 address")
+        ->capture_default_str(),
+      numbers.Add(command, "--port", options->Port, 1, 65535, "the controller's Modbus TCP port"),
+      numbers.Add(
+        command, "--timeout", options->Timeout, 0.001, 3600.0, "seconds to wait for each answer"),
+      numbers.Add(
+        command, "--retries", options->Retries, 0, 100, "retries of a request that got no answer"),
+      numbers.Add(command, "--velocity", options->Velocity, 0.01, 655.35, "degree/s"),
+      numbers.Add(command, "--acceleration", options->Acceleration, 0.1, 6553.5, "degree/s^2"),
+    };
     if (leaf.Action == GantryAction::Move)
     {
       numbers.AddReal(command, "angle", options->Angle, "target angle in degrees")->required();

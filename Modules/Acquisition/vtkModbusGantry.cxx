@@ -1,8 +1,10 @@
 #include "vtkModbusGantry.h"
 
 #include "lfdGantryRegisters.h"
+#include "lfdJsonFields.h"
 #include "lfdMotionProfile.h"
 
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 
 #include <modbus/modbus.h>
@@ -212,6 +214,7 @@ namespace
 struct SettingCheck
 {
   const char* Name;
+  const char* Field;
   double Value;
   double Lowest;
   double Highest;
@@ -220,34 +223,42 @@ struct SettingCheck
 };
 }
 
-bool vtkModbusGantry::Connect()
+std::string vtkModbusGantry::CheckSettings(bool fileFields) const
 {
-  this->Disconnect();
+  // The property's name, or the gantry description's field.
+  const auto name = [fileFields](const char* property, const char* field)
+  { return fileFields ? "field \"" + std::string(field) + "\": " : std::string(property) + " "; };
   in_addr parsed{};
   if (!this->Address || inet_pton(AF_INET, this->Address, &parsed) != 1)
   {
-    this->Refuse("Address '" + std::string(this->Address ? this->Address : "") +
-      "' is not an IPv4 address (e.g. 192.168.1.20)");
-    return false;
+    return name("Address", "address") + "'" + std::string(this->Address ? this->Address : "") +
+      "' is not an IPv4 address (e.g. 192.168.1.20)";
   }
   const SettingCheck checks[] = {
-    { "Port", static_cast<double>(this->Port), 1.0, 65535.0, true, "" },
-    { "ConnectTimeout", this->ConnectTimeout, 0.0, 3600.0, false, " s" },
-    { "ResponseTimeout", this->ResponseTimeout, 0.0, 3600.0, false, " s" },
-    { "Retries", static_cast<double>(this->Retries), 0.0, 100.0, true, "" },
-    { "Velocity", this->Velocity, 0.0, 65535 * gantry::VelocityUnit, false, " degree/s" },
+    { "Port", "port", static_cast<double>(this->Port), 1.0, 65535.0, true, "" },
+    { "ConnectTimeout", "connect_timeout", this->ConnectTimeout, 0.0, 3600.0, false, " s" },
+    { "ResponseTimeout", "response_timeout", this->ResponseTimeout, 0.0, 3600.0, false, " s" },
+    { "Retries", "retries", static_cast<double>(this->Retries), 0.0, 100.0, true, "" },
+    { "Velocity",
+      "velocity",
+      this->Velocity,
+      0.0,
+      65535 * gantry::VelocityUnit,
+      false,
+      " degree/s" },
     { "Acceleration",
+      "acceleration",
       this->Acceleration,
       0.0,
       65535 * gantry::AccelerationUnit,
       false,
       " degree/s^2" },
-    { "SoftLimits[0]", this->SoftLimits[0], -100000.0, 100000.0, true, " deg" },
-    { "SoftLimits[1]", this->SoftLimits[1], -100000.0, 100000.0, true, " deg" },
-    { "WatchdogTimeout", this->WatchdogTimeout, 0.0, 65.535, true, " s" },
-    { "DeadlineFactor", this->DeadlineFactor, 1.0, 100.0, true, "" },
-    { "DeadlineMargin", this->DeadlineMargin, 0.0, 3600.0, true, " s" },
-    { "PollInterval", this->PollInterval, 0.0, 1.0, false, " s" },
+    { "SoftLimits[0]", "soft_limits[0]", this->SoftLimits[0], -100000.0, 100000.0, true, " deg" },
+    { "SoftLimits[1]", "soft_limits[1]", this->SoftLimits[1], -100000.0, 100000.0, true, " deg" },
+    { "WatchdogTimeout", "watchdog_timeout", this->WatchdogTimeout, 0.0, 65.535, true, " s" },
+    { "DeadlineFactor", "deadline_factor", this->DeadlineFactor, 1.0, 100.0, true, "" },
+    { "DeadlineMargin", "deadline_margin", this->DeadlineMargin, 0.0, 3600.0, true, " s" },
+    { "PollInterval", "poll_interval", this->PollInterval, 0.0, 1.0, false, " s" },
   };
   for (const SettingCheck& check : checks)
   {
@@ -257,18 +268,110 @@ bool vtkModbusGantry::Connect()
     if (low || !(check.Value <= check.Highest))
     {
       std::ostringstream reason;
-      reason << check.Name << " " << check.Value << check.Unit << " is out of range "
+      reason << name(check.Name, check.Field) << check.Value << check.Unit << " is out of range "
              << (check.LowestIncluded ? "[" : "(") << check.Lowest << ", " << check.Highest << "]";
-      this->Refuse(reason.str());
-      return false;
+      return reason.str();
     }
   }
   if (!(this->SoftLimits[0] < this->SoftLimits[1]))
   {
     std::ostringstream reason;
-    reason << "SoftLimits [" << this->SoftLimits[0] << ", " << this->SoftLimits[1]
-           << "] deg: the minimum is not below the maximum";
-    this->Refuse(reason.str());
+    reason << (fileFields ? "field \"soft_limits\": " : "SoftLimits ") << "[" << this->SoftLimits[0]
+           << ", " << this->SoftLimits[1] << "] deg: the minimum is not below the maximum";
+    return reason.str();
+  }
+  return std::string();
+}
+
+bool vtkModbusGantry::ReadConfiguration(const char* fileName)
+{
+  namespace io = lfd::io;
+  const std::string path = fileName ? fileName : "";
+  io::Json document;
+  std::string error;
+  if (!io::ParseJsonFile(path, document, error))
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  // Read into a copy: a refused description changes nothing.
+  vtkNew<vtkModbusGantry> read;
+  try
+  {
+    const std::string format = io::GetString(io::RequireMember(document, "", "format"), "format");
+    if (format != "lfd-gantry")
+    {
+      throw io::FieldError("format", "expected \"lfd-gantry\", found \"" + format + "\"");
+    }
+    if (io::GetInteger(io::RequireMember(document, "", "version"), "version", 0, VTK_INT_MAX) != 1)
+    {
+      throw io::FieldError("version", "unsupported version (this reader reads version 1)");
+    }
+    read->SetAddress(io::GetString(io::RequireMember(document, "", "address"), "address").c_str());
+    read->Port =
+      static_cast<int>(io::GetInteger(io::RequireMember(document, "", "port"), "port", 1, 65535));
+    const struct
+    {
+      const char* Field;
+      double vtkModbusGantry::*Value;
+      double Current;
+    } numbers[] = {
+      { "connect_timeout", &vtkModbusGantry::ConnectTimeout, this->ConnectTimeout },
+      { "response_timeout", &vtkModbusGantry::ResponseTimeout, this->ResponseTimeout },
+      { "velocity", &vtkModbusGantry::Velocity, this->Velocity },
+      { "acceleration", &vtkModbusGantry::Acceleration, this->Acceleration },
+      { "watchdog_timeout", &vtkModbusGantry::WatchdogTimeout, this->WatchdogTimeout },
+      { "deadline_factor", &vtkModbusGantry::DeadlineFactor, this->DeadlineFactor },
+      { "deadline_margin", &vtkModbusGantry::DeadlineMargin, this->DeadlineMargin },
+      { "poll_interval", &vtkModbusGantry::PollInterval, this->PollInterval },
+    };
+    for (const auto& number : numbers)
+    {
+      const io::Json* value = io::FindMember(document, "", number.Field);
+      (*read).*number.Value = value ? io::GetNumber(*value, number.Field) : number.Current;
+    }
+    const io::Json* retries = io::FindMember(document, "", "retries");
+    read->Retries =
+      retries ? static_cast<int>(io::GetInteger(*retries, "retries", 0, 100)) : this->Retries;
+    const io::Json* limits = io::FindMember(document, "", "soft_limits");
+    const std::vector<double> soft = limits
+      ? io::GetNumbers(*limits, "soft_limits", 2)
+      : std::vector<double>(this->SoftLimits, this->SoftLimits + 2);
+    read->SetSoftLimits(soft[0], soft[1]);
+    const std::string refused = read->CheckSettings(true);
+    if (!refused.empty())
+    {
+      throw std::runtime_error(refused);
+    }
+  }
+  catch (const std::runtime_error& e)
+  {
+    vtkErrorMacro(<< path << ": " << e.what());
+    return false;
+  }
+  this->SetAddress(read->Address);
+  this->Port = read->Port;
+  this->ConnectTimeout = read->ConnectTimeout;
+  this->ResponseTimeout = read->ResponseTimeout;
+  this->Retries = read->Retries;
+  this->Velocity = read->Velocity;
+  this->Acceleration = read->Acceleration;
+  this->SetSoftLimits(read->SoftLimits);
+  this->WatchdogTimeout = read->WatchdogTimeout;
+  this->DeadlineFactor = read->DeadlineFactor;
+  this->DeadlineMargin = read->DeadlineMargin;
+  this->PollInterval = read->PollInterval;
+  this->Modified();
+  return true;
+}
+
+bool vtkModbusGantry::Connect()
+{
+  this->Disconnect();
+  const std::string refused = this->CheckSettings(false);
+  if (!refused.empty())
+  {
+    this->Refuse(refused);
     return false;
   }
   uint16_t identity[2] = { 0, 0 };

@@ -99,6 +99,15 @@ public:
   ///@}
 
   /**
+   * Reads the settings from a gantry description (gantry.json, format
+   * "lfd-gantry", version 1, Data/README.md): "address" and "port" are
+   * required, the motion and timeout fields optional (absent: the current
+   * values stay). False, with one error naming the file and the field, when
+   * the file is not a valid description; then no setting changes.
+   */
+  bool ReadConfiguration(const char* fileName);
+
+  /**
    * Checks the settings, connects and checks the controller's identity and
    * register map version. Reconnects when already connected.
    */
@@ -208,6 +217,9 @@ private:
   vtkModbusGantry(const vtkModbusGantry&) = delete;
   void operator=(const vtkModbusGantry&) = delete;
 
+  /// "" or why a setting is refused, naming the property or (`fileFields`)
+  /// the gantry description's field.
+  std::string CheckSettings(bool fileFields) const;
   /// The one error of a failed call: the device, then `reason`.
   void Refuse(const std::string& reason);
   /// Refuses with what a failed request's errno means.

@@ -2,7 +2,8 @@
 127.0.0.1 (port LFD_GANTRY_PORT) with an emergency stop armed for the first
 move: homing, the e-stop mid-move (one error line, the axis stopped, the
 fault reported until reset), recovery, a move; the refusals (unreachable
-port, taken port, unknown fault mode); and the README's Python example. The
+port, taken port, unknown fault mode, a description without its port); and
+the README's Python example. The
 other refusals and faults are the C++ tests' (Testing/Cxx)."""
 import os
 import re
@@ -62,8 +63,20 @@ expect(gantry("move", "30"), 1, "",
 reset = gantry("reset")
 check(reset.returncode == 0 and reset.stdout.endswith(", disabled, homed, stopped\n"),
       "reset", reset.stdout.strip())
-expect(gantry("move", "30"), 0, DEVICE + "at 30.000 deg, ready, homed, in position\n", "",
-       "moved to 30 deg after the reset")
+# The same gantry through its description; a description without its port.
+description = os.path.join(os.environ.get("LFD_TEMP_DIR", "/tmp"), "gantry_cli.json")
+with open(description, "w") as f:
+    f.write('{ "format": "lfd-gantry", "version": 1, "address": "127.0.0.1", "port": %d, '
+            '"velocity": 120, "acceleration": 480 }' % PORT)
+moved = subprocess.run([LFD, "gantry", "move", "30", "--config", description],
+                       capture_output=True, text=True, timeout=60)
+expect(moved, 0, DEVICE + "at 30.000 deg, ready, homed, in position\n", "",
+       "moved to 30 deg after the reset (--config)")
+with open(description, "w") as f:
+    f.write('{ "format": "lfd-gantry", "version": 1, "address": "127.0.0.1" }')
+expect(subprocess.run([LFD, "gantry", "status", "--config", description], capture_output=True,
+                      text=True, timeout=60), 1, "",
+       f'lfd: error: {description}: field "port": missing\n', "a description without its port")
 stop = gantry("stop")
 check(stop.returncode == 0 and stop.stdout == DEVICE + "at 30.000 deg, ready, homed, in position\n",
       "a quick stop at rest changes nothing", stop.stdout.strip())
