@@ -14,7 +14,6 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <sstream>
 #include <thread>
 
@@ -80,14 +79,6 @@ public:
   /// Connects within the connect timeout; 0 or the errno.
   int Open(vtkModbusGantry* self)
   {
-    if (!this->Context)
-    {
-      this->Context = modbus_new_tcp(self->Address, self->Port);
-      if (!this->Context)
-      {
-        return errno;
-      }
-    }
     // libmodbus waits for a TCP connection as long as for an answer.
     SetModbusTimeout(this->Context, self->ConnectTimeout);
     if (modbus_connect(this->Context) == -1)
@@ -109,6 +100,10 @@ public:
   template<typename Request>
   int Transact(vtkModbusGantry* self, Request request, int retries)
   {
+    if (!this->Context)
+    {
+      return ENOTCONN; // Connect() makes the context
+    }
     int error = 0;
     for (int attempt = 0; attempt <= retries; ++attempt)
     {
@@ -167,7 +162,11 @@ std::string DescribeFailure(int error,
 {
   std::ostringstream text;
   const std::string tries = attempts == 1 ? "1 attempt" : std::to_string(attempts) + " attempts";
-  if (IsException(error))
+  if (error == ENOTCONN)
+  {
+    text << "not connected (call Connect() first)";
+  }
+  else if (IsException(error))
   {
     text << "the controller refused the request: " << modbus_strerror(error);
   }
@@ -374,6 +373,7 @@ bool vtkModbusGantry::Connect()
     this->Refuse(refused);
     return false;
   }
+  this->Internals->Context = modbus_new_tcp(this->Address, this->Port);
   uint16_t identity[2] = { 0, 0 };
   const int error = this->Internals->Transact(
     this,
@@ -433,11 +433,6 @@ bool vtkModbusGantry::IsHomed() const
 bool vtkModbusGantry::UpdateState()
 {
   vtkInternals& internals = *this->Internals;
-  if (!internals.Context)
-  {
-    this->Refuse("not connected (call Connect() first)");
-    return false;
-  }
   // One request refreshes the watchdog and reads the state (function 23).
   uint16_t registers[4];
   const int error = internals.Transact(
