@@ -12,6 +12,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <fcntl.h>
 #include <memory>
 #include <string>
@@ -124,6 +125,13 @@ void RunSimulator(const SimulatorOptions& options)
   if (!options.PidFile.empty())
   {
     lfd::io::RemoveQuietly(options.PidFile);
+  }
+  if (options.Detach)
+  {
+    // A forked child has none of the parent's library threads (log4cplus
+    // starts one), whose exit handlers would wait for them forever; the
+    // sockets are closed and the pid file removed: nothing is left to do.
+    std::_Exit(0);
   }
 }
 
