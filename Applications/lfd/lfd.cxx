@@ -312,6 +312,7 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
   AddDemoCommand(app, numbers, commands);
   AddSplitCommands(app, numbers, commands);
   AddStudioCommand(app, numbers, commands);
+  AddAcquisitionCommands(app, numbers, commands);
   AddHelpCommand(app, commands);
 
   ConfigureCommands(&app);
