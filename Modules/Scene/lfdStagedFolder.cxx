@@ -82,8 +82,15 @@ void StagedFolder::Discard()
 //------------------------------------------------------------------------------
 std::vector<std::string> AnimationFilePatterns()
 {
-  // Frame numbers have 4 digits or more (frame_%04d.png).
-  return { "frame_[0-9][0-9][0-9][0-9]*.png", "animation.mp4", "contact_sheet.png" };
+  // Frame numbers have 4 digits or more (frame_%04d.png); the ParaView
+  // series (vtkLightFieldAnimationWriter::SetWriteParaView) likewise.
+  return { "frame_[0-9][0-9][0-9][0-9]*.png",
+    "animation.mp4",
+    "contact_sheet.png",
+    "frame_[0-9][0-9][0-9][0-9]*.vti",
+    "cage_[0-9][0-9][0-9][0-9]*.vtu",
+    "animation.pvd",
+    "cage.pvd" };
 }
 }
 }

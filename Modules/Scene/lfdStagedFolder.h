@@ -69,7 +69,8 @@ private:
 
 /**
  * The files of an animation folder (fnmatch globs): its frames
- * frame_NNNN.png, animation.mp4 and contact_sheet.png.
+ * frame_NNNN.png, animation.mp4, contact_sheet.png and the ParaView series
+ * (frame_NNNN.vti, cage_NNNN.vtu, animation.pvd, cage.pvd).
  */
 LFDSCENE_EXPORT std::vector<std::string> AnimationFilePatterns();
 }

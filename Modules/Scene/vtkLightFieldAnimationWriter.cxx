@@ -2,6 +2,7 @@
 
 #include "lfdFileUtilities.h"
 #include "lfdLimits.h"
+#include "lfdParaViewFiles.h"
 #include "lfdStagedFolder.h"
 #include "vtkCommand.h"
 #include "vtkDeformationCage.h"
@@ -15,12 +16,14 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtksys/Process.h"
 #include "vtksys/SystemTools.hxx"
 
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkLightFieldAnimationWriter);
@@ -32,12 +35,21 @@ namespace
 const char* const MovieName = "animation.mp4";
 const char* const ContactSheetName = "contact_sheet.png";
 
+const char* const FrameCollectionName = "animation.pvd";
+const char* const CageCollectionName = "cage.pvd";
+
+/// The name of step `frame`'s file: `stem`_NNNN.`extension`.
+std::string StepName(const char* stem, int frame, const char* extension)
+{
+  char name[64];
+  std::snprintf(name, sizeof(name), "%s_%04d.%s", stem, frame, extension);
+  return name;
+}
+
 /// The file of frame `frame` in `folder`.
 std::string FramePath(const std::string& folder, int frame)
 {
-  char name[32];
-  std::snprintf(name, sizeof(name), "/frame_%04d.png", frame);
-  return folder + name;
+  return folder + "/" + StepName("frame", frame, "png");
 }
 
 /// A grid of the thumbnails, `columns` wide, the first one top left (VTK
@@ -75,6 +87,9 @@ struct vtkLightFieldAnimationWriter::Internals
   lfd::scene::StagedFolder Folder;
   vtkNew<vtkLightFieldRenderer> Renderer;
   vtkNew<vtkDeformationCage> Cage;
+  // The ParaView series: (scene time, file) of each frame and cage written.
+  std::vector<std::pair<double, std::string>> FrameSteps;
+  std::vector<std::pair<double, std::string>> CageSteps;
 
   /// Sets the progress and invokes ProgressEvent.
   static void Report(vtkLightFieldAnimationWriter* self, double progress, const std::string& text)
@@ -94,6 +109,12 @@ struct vtkLightFieldAnimationWriter::Internals
   static bool WriteImage(vtkLightFieldAnimationWriter* self,
     vtkImageData* image,
     const std::string& path);
+
+  /// Writes frame `frame` (and its cage when `cage`) for ParaView.
+  static bool SaveParaView(vtkLightFieldAnimationWriter* self, int frame, bool cage);
+
+  /// Writes animation.pvd (and cage.pvd) listing the steps written.
+  static bool WriteCollections(vtkLightFieldAnimationWriter* self);
 
   /// Encodes the frames with ffmpeg; false after an error or a cancel.
   static bool Encode(vtkLightFieldAnimationWriter* self, const std::string& ffmpeg);
@@ -128,6 +149,7 @@ void vtkLightFieldAnimationWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "WriteContactSheet: " << this->WriteContactSheet << "\n";
   os << indent << "ContactSheetColumns: " << this->ContactSheetColumns << "\n";
   os << indent << "ContactSheetThumbnailSize: " << this->ContactSheetThumbnailSize << "\n";
+  os << indent << "WriteParaView: " << this->WriteParaView << "\n";
   os << indent << "Abort: " << this->Abort << "\n";
   os << indent << "Aborted: " << this->Aborted << "\n";
   os << indent << "NumberOfFramesWritten: " << this->NumberOfFramesWritten << "\n";
@@ -226,7 +248,8 @@ bool vtkLightFieldAnimationWriter::Internals::WriteImage(vtkLightFieldAnimationW
 bool vtkLightFieldAnimationWriter::Internals::Save(vtkLightFieldAnimationWriter* self, int frame)
 {
   vtkImageData* image = self->Internal->Renderer->GetOutput();
-  if (!WriteImage(self, image, FramePath(self->Internal->Folder.GetPath(), frame)))
+  if (!WriteImage(self, image, FramePath(self->Internal->Folder.GetPath(), frame)) ||
+    (self->WriteParaView && !SaveParaView(self, frame, self->SceneLogic->HasCage())))
   {
     return false;
   }
@@ -239,6 +262,51 @@ bool vtkLightFieldAnimationWriter::Internals::Save(vtkLightFieldAnimationWriter*
   thumbnail->DeepCopy(resize->GetOutput());
   self->Internal->Thumbnails.push_back(thumbnail);
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldAnimationWriter::Internals::SaveParaView(vtkLightFieldAnimationWriter* self,
+  int frame,
+  bool cage)
+{
+  Internals& internal = *self->Internal;
+  const double time = self->SceneLogic->GetAnimationTime(frame, self->NumberOfFrames);
+  const std::string folder = internal.Folder.GetPath() + "/";
+  std::string error;
+  const std::string frameName = StepName("frame", frame, "vti");
+  bool ok = lfd::scene::WriteXMLData(internal.Renderer->GetOutput(), folder + frameName, error);
+  internal.FrameSteps.emplace_back(time, frameName);
+  if (ok && cage)
+  {
+    // The cage this frame was rendered through, as a plain grid.
+    const std::string cageName = StepName("cage", frame, "vtu");
+    vtkNew<vtkUnstructuredGrid> grid;
+    grid->ShallowCopy(internal.Cage);
+    ok = lfd::scene::WriteXMLData(grid, folder + cageName, error);
+    internal.CageSteps.emplace_back(time, cageName);
+  }
+  if (!ok)
+  {
+    vtkErrorWithObjectMacro(self, << lfd::io::NameTargets(error));
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldAnimationWriter::Internals::WriteCollections(vtkLightFieldAnimationWriter* self)
+{
+  Internals& internal = *self->Internal;
+  const std::string folder = internal.Folder.GetPath() + "/";
+  std::string error;
+  const bool ok =
+    lfd::scene::WriteCollection(folder + FrameCollectionName, internal.FrameSteps, error) &&
+    (internal.CageSteps.empty() ||
+      lfd::scene::WriteCollection(folder + CageCollectionName, internal.CageSteps, error));
+  if (!ok)
+  {
+    vtkErrorWithObjectMacro(self, << lfd::io::NameTargets(error));
+  }
+  return ok;
 }
 
 //------------------------------------------------------------------------------
@@ -330,6 +398,8 @@ bool vtkLightFieldAnimationWriter::Write()
   this->NumberOfFramesWritten = 0;
   this->MovieWritten = false;
   internal.Thumbnails.clear();
+  internal.FrameSteps.clear();
+  internal.CageSteps.clear();
   internal.ContactSheet->Initialize();
   if (!this->SceneLogic || !this->DirectoryName || !*this->DirectoryName)
   {
@@ -396,9 +466,11 @@ bool vtkLightFieldAnimationWriter::Write()
       this->ContactSheetColumns,
       this->ContactSheetThumbnailSize,
       internal.ContactSheet);
-    failed = this->WriteContactSheet &&
-      !Internals::WriteImage(
-        this, internal.ContactSheet, internal.Folder.GetPath() + "/" + ContactSheetName);
+    failed =
+      (this->WriteContactSheet &&
+        !Internals::WriteImage(
+          this, internal.ContactSheet, internal.Folder.GetPath() + "/" + ContactSheetName)) ||
+      (this->WriteParaView && !Internals::WriteCollections(this));
   }
   if (!failed && !this->Aborted && !this->Abort && !ffmpeg.empty())
   {

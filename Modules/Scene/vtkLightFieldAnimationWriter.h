@@ -26,7 +26,13 @@
  * - contact_sheet.png when WriteContactSheet is on: a grid of
  *   ContactSheetColumns thumbnails of ContactSheetThumbnailSize pixels,
  *   first frame top left. The sheet is assembled in every Write()
- *   (GetContactSheet()) for a caller that writes it elsewhere.
+ *   (GetContactSheet()) for a caller that writes it elsewhere;
+ * - for ParaView, when WriteParaView is on (default off): frame_NNNN.vti
+ *   (each frame with its "Radiance", "Label" and "Depth" arrays) listed
+ *   with their scene times in animation.pvd, and, when the scene has a
+ *   cage, the cage of each frame, cage_NNNN.vtu (deformed points,
+ *   "RestPosition", "Label"), listed in cage.pvd: open both in ParaView
+ *   and play them together (lfdParaViewFiles.h).
  *
  * Nothing is ever half-written: the folder is staged under a temporary
  * sibling name and renamed onto DirectoryName only when complete
@@ -144,6 +150,16 @@ public:
 
   ///@{
   /**
+   * Write the ParaView time series (frames as .vti, the cage as .vtu, each
+   * listed in a .pvd; see the class description). Default off.
+   */
+  vtkSetMacro(WriteParaView, bool);
+  vtkGetMacro(WriteParaView, bool);
+  vtkBooleanMacro(WriteParaView, bool);
+  ///@}
+
+  ///@{
+  /**
    * Cancels the running export before its next frame (or stops ffmpeg).
    * Safe to set from an observer of this writer's events.
    */
@@ -198,6 +214,7 @@ protected:
   bool WriteContactSheet = false;
   int ContactSheetColumns = 6;
   int ContactSheetThumbnailSize = 128;
+  bool WriteParaView = false;
   bool Abort = false;
   bool Aborted = false;
   int NumberOfFramesWritten = 0;

@@ -4,13 +4,17 @@
 // renders at the same times, the MP4's frame count and padded size
 // (ffprobe), the contact sheet, a cancel after frame 2 (from a
 // ProgressEvent observer) that leaves nothing behind and an existing
-// folder untouched, and refused folders with one error naming them.
+// folder untouched, and refused folders with one error naming them. The
+// ParaView outputs of the same scene: the animation's series (frames as
+// .vti, the cage as .vtu, their .pvd collections) and the scene export of
+// vtkLightFieldSceneExporter (rig frusta, cage, light field, vtk.js).
 #include "lfdIOTestUtilities.h"
 #include "lfdPinholeCamera.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
+#include "vtkCellData.h"
 #include "vtkDeformationCage.h"
 #include "vtkImageData.h"
 #include "vtkImageFileReader.h"
@@ -18,10 +22,16 @@
 #include "vtkLightFieldAnimationWriter.h"
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldRenderer.h"
+#include "vtkLightFieldSceneExporter.h"
 #include "vtkLightFieldSceneLogic.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLImageDataReader.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -368,6 +378,144 @@ void TestRefusedFolders(vtkLightFieldSceneLogic* logic, const std::string& scrat
 }
 }
 
+/// Bytes of two arrays differing (-1 when either is missing or sizes differ).
+vtkIdType DifferingBytes(vtkDataArray* a, vtkDataArray* b)
+{
+  if (!a || !b || a->GetDataSize() != b->GetDataSize() || a->GetDataType() != b->GetDataType())
+  {
+    return -1;
+  }
+  const auto* x = static_cast<const unsigned char*>(a->GetVoidPointer(0));
+  const auto* y = static_cast<const unsigned char*>(b->GetVoidPointer(0));
+  const vtkIdType size = a->GetDataSize() * a->GetDataTypeSize();
+  vtkIdType differing = 0;
+  for (vtkIdType i = 0; i < size; ++i)
+  {
+    differing += x[i] != y[i] ? 1 : 0;
+  }
+  return differing;
+}
+
+/// The ParaView series of a 4-frame export: frame_NNNN.vti are the logic's
+/// renders, cage_NNNN.vtu its cages at the same times, both listed with
+/// those times in their .pvd.
+void TestParaViewSeries(vtkLightFieldSceneLogic* logic,
+  vtkLightField* lightField,
+  const std::string& out)
+{
+  vtkNew<vtkLightFieldAnimationWriter> writer;
+  writer->SetSceneLogic(logic);
+  writer->SetLightField(lightField);
+  writer->SetDirectoryName(out.c_str());
+  writer->SetNumberOfFrames(4);
+  writer->WriteMovieOff();
+  writer->WriteParaViewOn();
+  Check(writer->Write(), "the ParaView series is written");
+  CheckEqual(Join(Listing(out)),
+    std::string("animation.pvd cage.pvd cage_0000.vtu cage_0001.vtu cage_0002.vtu cage_0003.vtu "
+                "frame_0000.png frame_0000.vti frame_0001.png frame_0001.vti frame_0002.png "
+                "frame_0002.vti frame_0003.png frame_0003.vti"),
+    "the ParaView export's files");
+  const std::string pvd = lfdtest::ReadText(out + "/cage.pvd");
+  Check(
+    pvd.find("<DataSet timestep=\"1\" part=\"0\" file=\"cage_0003.vtu\"/>") != std::string::npos,
+    "cage.pvd lists the last cage at time 1");
+  Check(
+    lfdtest::ReadText(out + "/animation.pvd").find("file=\"frame_0002.vti\"") != std::string::npos,
+    "animation.pvd lists the frames");
+
+  const double time = logic->GetAnimationTime(2, 4);
+  vtkNew<vtkDeformationCage> cage;
+  Check(logic->GetCageAtTime(time, lightField, cage), "the cage of frame 2");
+  vtkNew<vtkLightFieldRenderer> renderer;
+  logic->ConfigureRenderer(renderer, lightField, cage);
+  renderer->Update();
+  vtkNew<vtkXMLImageDataReader> frame;
+  frame->SetFileName((out + "/frame_0002.vti").c_str());
+  frame->Update();
+  for (const char* name : { "Radiance", "Label", "Depth" })
+  {
+    CheckEqual(DifferingBytes(frame->GetOutput()->GetPointData()->GetArray(name),
+                 renderer->GetOutput()->GetPointData()->GetArray(name)),
+      vtkIdType(0),
+      std::string("frame_0002.vti ") + name + " bytes differing from the render");
+  }
+  vtkNew<vtkXMLUnstructuredGridReader> grid;
+  grid->SetFileName((out + "/cage_0002.vtu").c_str());
+  grid->Update();
+  CheckEqual(
+    DifferingBytes(grid->GetOutput()->GetPoints()->GetData(), cage->GetPoints()->GetData()),
+    vtkIdType(0),
+    "cage_0002.vtu points differing from the logic's cage");
+  Check(grid->GetOutput()->GetPointData()->GetArray("RestPosition") &&
+      grid->GetOutput()->GetCellData()->GetArray("Label"),
+    "cage_0002.vtu has RestPosition and Label");
+}
+
+/// vtkLightFieldSceneExporter: rig.vtp (5 polygons a view, "View"),
+/// cage.vtu (the current cage), lightfield.vti (the passes, bitwise) and
+/// the vtk.js scene; a folder of the user's is refused.
+void TestSceneExport(vtkLightFieldSceneLogic* logic,
+  vtkLightField* lightField,
+  const std::string& scratch)
+{
+  const std::string out = scratch + "/scene-export";
+  vtkNew<vtkLightFieldSceneExporter> exporter;
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(exporter);
+  exporter->SetSceneLogic(logic);
+  exporter->SetLightField(lightField);
+  exporter->SetDirectoryName(out.c_str());
+  Check(exporter->Write(), "the scene export: " + std::string(errors->GetErrorMessage()));
+  CheckEqual(Join(Listing(out)),
+    std::string("cage.vtu lightfield.vti rig.vtp vtkjs"),
+    "the scene export's files");
+  Check(std::filesystem::is_regular_file(out + "/vtkjs/index.json"), "vtkjs/index.json");
+
+  vtkNew<vtkXMLPolyDataReader> rig;
+  rig->SetFileName((out + "/rig.vtp").c_str());
+  rig->Update();
+  CheckEqual(rig->GetOutput()->GetNumberOfCells(), vtkIdType(5 * 48), "rig.vtp: 5 polygons a view");
+  vtkDataArray* view = rig->GetOutput()->GetCellData()->GetArray("View");
+  Check(view && view->GetRange()[0] == 0 && view->GetRange()[1] == 47, "rig.vtp: View 0..47");
+
+  vtkNew<vtkXMLUnstructuredGridReader> cage;
+  cage->SetFileName((out + "/cage.vtu").c_str());
+  cage->Update();
+  CheckEqual(DifferingBytes(
+               cage->GetOutput()->GetPoints()->GetData(), logic->GetCage()->GetPoints()->GetData()),
+    vtkIdType(0),
+    "cage.vtu points differing from the current cage");
+
+  vtkNew<vtkXMLImageDataReader> stack;
+  stack->SetFileName((out + "/lightfield.vti").c_str());
+  stack->Update();
+  int dims[3];
+  stack->GetOutput()->GetDimensions(dims);
+  Check(dims[0] == 40 && dims[1] == 40 && dims[2] == 48, "lightfield.vti: 40 x 40 x 48");
+  for (int pass : { vtkLightField::COAXIAL, vtkLightField::LABEL })
+  {
+    const char* name = vtkLightField::GetPassName(pass);
+    CheckEqual(
+      DifferingBytes(stack->GetOutput()->GetPointData()->GetArray(name), lightField->GetPass(pass)),
+      vtkIdType(0),
+      std::string("lightfield.vti ") + name + " bytes differing");
+  }
+
+  // A folder of the user's is never swept away.
+  const std::string mine = scratch + "/mine";
+  std::filesystem::create_directories(mine);
+  lfdtest::WriteText(mine + "/notes.txt", "mine");
+  exporter->SetDirectoryName(mine.c_str());
+  errors->Clear();
+  const bool written = exporter->Write();
+  lfdtest::CheckFailure("export into a folder of the user's",
+    !written,
+    errors->GetErrorMessage(),
+    { mine, "notes.txt" });
+  CheckEqual(lfdtest::ReadText(mine + "/notes.txt"), std::string("mine"), "the user's file kept");
+}
+
 int TestAnimationWriter(int, char*[])
 {
   vtkNew<vtkLightField> lightField;
@@ -378,5 +526,7 @@ int TestAnimationWriter(int, char*[])
   TestExport(logic, lightField, scratch + "/anim");
   TestCancel(logic, scratch);
   TestRefusedFolders(logic, scratch);
+  TestParaViewSeries(logic, lightField, scratch + "/paraview");
+  TestSceneExport(logic, lightField, scratch);
   return lfdtest::Result();
 }
