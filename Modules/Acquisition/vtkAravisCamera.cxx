@@ -317,7 +317,8 @@ bool vtkAravisCamera::Acquire(vtkImageData* frame)
     return true;
   }
   vtkErrorMacro("Camera " << address << ": no good frame after " << this->MaximumAttempts
-                          << " attempts (last: " << problem << ")");
+                          << (this->MaximumAttempts == 1 ? " attempt" : " attempts")
+                          << " (last: " << problem << ")");
   return false;
 }
 

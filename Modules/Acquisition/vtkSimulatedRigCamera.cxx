@@ -94,15 +94,26 @@ struct vtkSimulatedRigCamera::Internals
   std::vector<unsigned char> Frame; // RGB, top row first
   bool FrameOk = false;
   int FramesRendered = 0;
-  // Lights and faults.
-  bool Coaxial = false;
-  std::vector<vtkSmartPointer<vtkImageData>> Patterns;
-  std::function<bool(double&)> AngleSource;
+  // What the next frame is rendered under, copied by the render thread.
+  struct Lights
+  {
+    bool Coaxial = false;
+    std::vector<vtkSmartPointer<vtkImageData>> Patterns;
+    std::function<bool(double&)> AngleSource;
+  };
+  Lights Current;
+  // Faults still to come.
   int Drop = 0;
   int Damage = 0;
 
   static void Fill(ArvBuffer* buffer, void* data, guint32, guint32, ArvPixelFormat format);
-  void RenderLoop(vtkSimulatedRigCamera* self);
+  void RenderLoop(vtkSimulatedRigCamera* owner);
+  // Renders the lit passes of the view at the current angle into `sum` (RGB,
+  // top row first); false, with an error, when there is no frame to send.
+  bool RenderFrame(vtkSimulatedRigCamera* owner,
+    const Lights& lights,
+    vtkLightFieldErrorObserver* errors,
+    std::vector<int>& sum);
 };
 
 //------------------------------------------------------------------------------
@@ -170,22 +181,116 @@ void AddPass(vtkLightFieldCapture* capture, int pass, int width, int height, std
     }
   }
 }
+
+// The projectors that show a pattern, as a rig, and their patterns as the
+// mask stack of a Coded pass; false when all are dark.
+bool LitProjectors(vtkCameraRig* projectors,
+  const std::vector<vtkSmartPointer<vtkImageData>>& patterns,
+  vtkCameraRig* lit,
+  vtkImageData* masks)
+{
+  std::vector<int> shown;
+  for (size_t p = 0; p < patterns.size(); ++p)
+  {
+    if (patterns[p])
+    {
+      shown.push_back(static_cast<int>(p));
+    }
+  }
+  if (shown.empty())
+  {
+    return false;
+  }
+  const int* size = projectors->GetImageSize();
+  lit->SetNumberOfViews(static_cast<int>(shown.size()));
+  lit->SetImageSize(size[0], size[1]);
+  masks->SetDimensions(size[0], size[1], static_cast<int>(shown.size()));
+  masks->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  const size_t slice = 3 * static_cast<size_t>(size[0]) * size[1];
+  for (size_t i = 0; i < shown.size(); ++i)
+  {
+    lit->SetView(static_cast<int>(i), projectors->GetCamera(shown[i]));
+    std::memcpy(static_cast<unsigned char*>(masks->GetScalarPointer()) + i * slice,
+      patterns[shown[i]]->GetScalarPointer(),
+      slice);
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkSimulatedRigCamera::Internals::RenderFrame(vtkSimulatedRigCamera* owner,
+  const Lights& lights,
+  vtkLightFieldErrorObserver* errors,
+  std::vector<int>& sum)
+{
+  const int width = owner->Rig->GetImageSize()[0];
+  const int height = owner->Rig->GetImageSize()[1];
+  std::fill(sum.begin(), sum.end(), 0);
+  double angle = owner->Angle;
+  if (lights.AngleSource && !lights.AngleSource(angle))
+  {
+    vtkErrorWithObjectMacro(owner,
+      "Simulated camera " << owner->Address
+                          << ": the angle source gave no gantry "
+                             "angle; the frame is dropped.");
+    return false;
+  }
+  // The camera where the gantry has turned it; the passes of one view.
+  vtkNew<vtkCameraRig> view;
+  view->SetNumberOfViews(1);
+  view->SetImageSize(width, height);
+  view->SetView(0, TurnedCamera(owner->Rig, owner->HomeView, angle));
+  vtkLightFieldCapture* capture = this->Capture;
+  capture->SetRig(view);
+  capture->CaptureLabelOff();
+  capture->CaptureDepthOff();
+  capture->SetProjectorNoise(0.0);
+  errors->Clear();
+  if (lights.Coaxial)
+  {
+    capture->CaptureCoaxialOn();
+    capture->SetProjectors(nullptr);
+    capture->SetNumberOfProjectors(0);
+    capture->SetProjectorMasks(nullptr);
+    capture->Update();
+    if (!errors->HasError())
+    {
+      AddPass(capture, vtkLightField::COAXIAL, width, height, sum);
+    }
+  }
+  vtkNew<vtkCameraRig> lit;
+  vtkNew<vtkImageData> masks;
+  if (!errors->HasError() && LitProjectors(owner->Projectors, lights.Patterns, lit, masks))
+  {
+    capture->CaptureCoaxialOff();
+    capture->SetProjectors(lit);
+    capture->SetProjectorMasks(masks);
+    capture->Update();
+    if (!errors->HasError())
+    {
+      AddPass(capture, vtkLightField::CODED, width, height, sum);
+    }
+  }
+  if (errors->HasError())
+  {
+    vtkErrorWithObjectMacro(owner,
+      "Simulated camera " << owner->Address
+                          << ": cannot render the frame: " << errors->GetErrorMessage());
+    return false;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkSimulatedRigCamera::Internals::RenderLoop(vtkSimulatedRigCamera* owner)
 {
-  vtkLightFieldCapture* capture = this->Capture;
   vtkNew<vtkLightFieldErrorObserver> errors;
-  errors->ObservePipeline(capture);
-  const int width = owner->Rig->GetImageSize()[0];
-  const int height = owner->Rig->GetImageSize()[1];
+  errors->ObservePipeline(this->Capture);
   std::mt19937 random(static_cast<unsigned int>(owner->NoiseSeed));
   std::normal_distribution<double> noise(0.0, owner->SensorNoise);
-  vtkNew<vtkCameraRig> view;
-  view->SetNumberOfViews(1);
-  view->SetImageSize(width, height);
-  std::vector<int> sum(3 * static_cast<size_t>(width) * height);
+  const int* size = owner->Rig->GetImageSize();
+  std::vector<int> sum(3 * static_cast<size_t>(size[0]) * size[1]);
   std::vector<unsigned char> frame(sum.size());
   for (;;)
   {
@@ -196,75 +301,11 @@ void vtkSimulatedRigCamera::Internals::RenderLoop(vtkSimulatedRigCamera* owner)
       return;
     }
     const unsigned long long request = this->Requested;
-    const bool coaxial = this->Coaxial;
-    const std::vector<vtkSmartPointer<vtkImageData>> patterns = this->Patterns;
-    const std::function<bool(double&)> source = this->AngleSource;
+    const Lights lights = this->Current;
     lock.unlock();
 
-    double angle = owner->Angle;
-    bool ok = !source || source(angle);
-    std::fill(sum.begin(), sum.end(), 0);
-    errors->Clear();
-    view->SetView(0, TurnedCamera(owner->Rig, owner->HomeView, angle));
-    capture->SetRig(view);
-    capture->CaptureLabelOff();
-    capture->CaptureDepthOff();
-    capture->SetProjectorNoise(0.0);
-    if (ok && coaxial)
-    {
-      capture->CaptureCoaxialOn();
-      capture->SetProjectors(nullptr);
-      capture->SetNumberOfProjectors(0);
-      capture->SetProjectorMasks(nullptr);
-      capture->Update();
-      ok = !errors->HasError();
-      if (ok)
-      {
-        AddPass(capture, vtkLightField::COAXIAL, width, height, sum);
-      }
-    }
-    // The lit projectors, with their patterns as the masks of a Coded pass.
-    vtkNew<vtkCameraRig> lit;
-    vtkNew<vtkImageData> masks;
-    std::vector<int> shown;
-    for (size_t p = 0; p < patterns.size(); ++p)
-    {
-      if (patterns[p])
-      {
-        shown.push_back(static_cast<int>(p));
-      }
-    }
-    if (ok && !shown.empty())
-    {
-      const int* size = owner->Projectors->GetImageSize();
-      lit->SetNumberOfViews(static_cast<int>(shown.size()));
-      lit->SetImageSize(size[0], size[1]);
-      masks->SetDimensions(size[0], size[1], static_cast<int>(shown.size()));
-      masks->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-      const size_t slice = 3 * static_cast<size_t>(size[0]) * size[1];
-      for (size_t i = 0; i < shown.size(); ++i)
-      {
-        lit->SetView(static_cast<int>(i), owner->Projectors->GetCamera(shown[i]));
-        std::memcpy(static_cast<unsigned char*>(masks->GetScalarPointer()) + i * slice,
-          patterns[shown[i]]->GetScalarPointer(),
-          slice);
-      }
-      capture->CaptureCoaxialOff();
-      capture->SetProjectors(lit);
-      capture->SetProjectorMasks(masks);
-      capture->Update();
-      ok = !errors->HasError();
-      if (ok)
-      {
-        AddPass(capture, vtkLightField::CODED, width, height, sum);
-      }
-    }
-    if (errors->HasError())
-    {
-      vtkErrorWithObjectMacro(owner,
-        "Simulated camera " << owner->Address
-                            << ": cannot render the frame: " << errors->GetErrorMessage());
-    }
+    const bool ok = this->RenderFrame(owner, lights, errors, sum);
+    // The sensor: lights add up, noise, 8 bits.
     for (size_t i = 0; i < sum.size(); ++i)
     {
       const double value = sum[i] + (owner->SensorNoise > 0.0 ? noise(random) : 0.0);
@@ -308,21 +349,21 @@ vtkLightFieldCapture* vtkSimulatedRigCamera::GetCapture()
 void vtkSimulatedRigCamera::SetAngleSource(std::function<bool(double&)> source)
 {
   std::lock_guard<std::mutex> lock(this->Internal->Mutex);
-  this->Internal->AngleSource = std::move(source);
+  this->Internal->Current.AngleSource = std::move(source);
 }
 
 //------------------------------------------------------------------------------
 void vtkSimulatedRigCamera::SetCoaxialLight(bool on)
 {
   std::lock_guard<std::mutex> lock(this->Internal->Mutex);
-  this->Internal->Coaxial = on;
+  this->Internal->Current.Coaxial = on;
 }
 
 //------------------------------------------------------------------------------
 bool vtkSimulatedRigCamera::GetCoaxialLight()
 {
   std::lock_guard<std::mutex> lock(this->Internal->Mutex);
-  return this->Internal->Coaxial;
+  return this->Internal->Current.Coaxial;
 }
 
 //------------------------------------------------------------------------------
@@ -354,8 +395,8 @@ bool vtkSimulatedRigCamera::SetProjectorPattern(int projector, vtkImageData* pat
     copy->DeepCopy(pattern);
   }
   std::lock_guard<std::mutex> lock(this->Internal->Mutex);
-  this->Internal->Patterns.resize(count);
-  this->Internal->Patterns[projector] = copy;
+  this->Internal->Current.Patterns.resize(count);
+  this->Internal->Current.Patterns[projector] = copy;
   return true;
 }
 
@@ -415,7 +456,7 @@ bool vtkSimulatedRigCamera::Start()
     internal.Requested = 0;
     internal.Rendered = 0;
     internal.FramesRendered = 0;
-    internal.Patterns.resize(this->Projectors ? this->Projectors->GetNumberOfViews() : 0);
+    internal.Current.Patterns.resize(this->Projectors ? this->Projectors->GetNumberOfViews() : 0);
   }
   internal.Renderer = std::thread([this] { this->Internal->RenderLoop(this); });
   arv_fake_camera_set_fill_pattern(sensor, &Internals::Fill, &internal);

@@ -56,6 +56,23 @@ int TestCameraRetries(int, char*[])
   std::cout << "error: " << message << "\n";
   lfdtest::Check(
     failed && message == expected, "exact error after 3 dropped frames", message == expected, 1);
+  errors->Clear();
+
+  // A gantry that cannot tell its angle: the simulated camera sends nothing.
+  simulated->SetAngleSource([](double&) { return false; });
+  camera->SetMaximumAttempts(1);
+  const bool noAngle = !camera->Acquire(frame);
+  const std::string angleError =
+    "Simulated camera 127.0.0.1: the angle source gave no gantry angle; the frame is dropped.";
+  std::cout << "errors: " << errors->GetErrorMessage() << " | "
+            << (errors->GetNumberOfErrors() > 1 ? errors->GetError(1) : "") << "\n";
+  lfdtest::Check(noAngle && errors->GetNumberOfErrors() == 2 &&
+      errors->GetErrorMessage() == angleError &&
+      std::string(errors->GetError(1)) ==
+        "Camera 127.0.0.1: no good frame after 1 attempt (last: no frame within 300 ms)",
+    "exact errors without a gantry angle",
+    errors->GetNumberOfErrors(),
+    2);
   camera->Close();
   simulated->Stop();
   return lfdtest::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

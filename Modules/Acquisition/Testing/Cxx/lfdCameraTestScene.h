@@ -5,6 +5,7 @@
 #ifndef lfdCameraTestScene_h
 #define lfdCameraTestScene_h
 
+#include "lfdPixelFormat.h"
 #include "vtkCameraRig.h"
 #include "vtkImageData.h"
 #include "vtkLightField.h"
@@ -17,6 +18,7 @@
 #include "vtkSimulatedRigCamera.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <iostream>
@@ -125,9 +127,28 @@ struct CameraScene
   }
 };
 
+/// Fraction of the pixels of view `view` of pass `pass` brighter than 20
+/// in some channel.
+inline double LitFraction(vtkLightField* reference, int view, int pass)
+{
+  const vtkIdType pixels = static_cast<vtkIdType>(reference->GetWidth()) * reference->GetHeight();
+  const auto* rgb = static_cast<const unsigned char*>(reference->GetPass(pass)->GetVoidPointer(0)) +
+    3 * view * pixels;
+  vtkIdType lit = 0;
+  for (vtkIdType q = 0; q < pixels; ++q)
+  {
+    lit += std::max({ rgb[3 * q], rgb[3 * q + 1], rgb[3 * q + 2] }) > 20 ? 1 : 0;
+  }
+  return static_cast<double>(lit) / pixels;
+}
+
 /// PSNR (dB) of a frame (RGB, top row first) against view `view` of pass
-/// `pass` of a light field.
-inline double FramePSNR(vtkImageData* frame, vtkLightField* reference, int view, int pass)
+/// `pass` of a light field, or against its Rec. 601 luma when `grey`.
+inline double FramePSNR(vtkImageData* frame,
+  vtkLightField* reference,
+  int view,
+  int pass,
+  bool grey = false)
 {
   const int w = reference->GetWidth();
   const int h = reference->GetHeight();
@@ -140,7 +161,9 @@ inline double FramePSNR(vtkImageData* frame, vtkLightField* reference, int view,
   {
     for (int i = 0; i < 3 * w; ++i)
     {
-      const double d = double(got[3 * y * w + i]) - expected[3 * (h - 1 - y) * w + i];
+      const unsigned char* pixel = expected + 3 * (h - 1 - y) * w + 3 * (i / 3);
+      const double want = grey ? lfd::Luma(pixel) : pixel[i % 3];
+      const double d = double(got[3 * y * w + i]) - want;
       sum += d * d;
     }
   }
