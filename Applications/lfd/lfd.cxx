@@ -227,6 +227,7 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
   AddDemoCommand(app, numbers, commands);
   AddSplitCommands(app, numbers, commands);
   AddStudioCommand(app, numbers, commands);
+  AddCameraSimCommand(app, numbers, commands);
 
   ConfigureCommands(&app);
   const std::string unknown = CheckCommandWords(&app, argc, argv);

@@ -29,6 +29,8 @@ void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
 void AddDemoCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd studio` (lfdStudioCommand.cxx).
 void AddStudioCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd camera-sim` (lfdCameraSimCommand.cxx).
+void AddCameraSimCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 
 //------------------------------------------------------------------------------
 // Capture (lfdCaptureCommands.cxx), also used by bench, demo and eval.

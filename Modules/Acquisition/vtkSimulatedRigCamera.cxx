@@ -17,7 +17,13 @@
 #include <arv.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -55,6 +61,30 @@ lfd::PinholeCamera TurnedCamera(vtkCameraRig* rig, int home, double degrees)
   camera.R = camera.R * glm::transpose(turn);
   camera.t = -(camera.R * position);
   return camera;
+}
+
+// Whether no one listens on the GVCP port of `address`. Aravis's fake camera
+// binds it with SO_REUSEADDR, so a second one would start and share the
+// port with the first; a plain bind fails when any socket holds it.
+bool GvcpPortFree(const char* address)
+{
+  sockaddr_in gvcp{};
+  gvcp.sin_family = AF_INET;
+  gvcp.sin_port = htons(3956);
+  if (inet_pton(AF_INET, address, &gvcp.sin_addr) != 1)
+  {
+    return true; // not an IPv4 address: Aravis says so
+  }
+  // Only "in use" means taken: an address that is not local is Aravis's to
+  // report.
+  const int probe = socket(AF_INET, SOCK_DGRAM, 0);
+  const bool free = probe < 0 ||
+    bind(probe, reinterpret_cast<sockaddr*>(&gvcp), sizeof(gvcp)) == 0 || errno != EADDRINUSE;
+  if (probe >= 0)
+  {
+    close(probe);
+  }
+  return free;
 }
 
 // The GigE Vision pixel formats the camera renders, or -1.
@@ -433,6 +463,13 @@ bool vtkSimulatedRigCamera::Start()
       "Simulated camera " << address << ": nothing to photograph; connect a mesh to GetCapture().");
     return false;
   }
+  if (!GvcpPortFree(this->Address))
+  {
+    vtkErrorMacro("Simulated camera " << address
+                                      << ": the GVCP port 3956 of this address is taken (another "
+                                         "camera serves there).");
+    return false;
+  }
   Internals& internal = *this->Internal;
   internal.Fake = arv_gv_fake_camera_new(this->Address, this->SerialNumber);
   if (!internal.Fake || !arv_gv_fake_camera_is_running(internal.Fake))
@@ -440,8 +477,7 @@ bool vtkSimulatedRigCamera::Start()
     g_clear_object(&internal.Fake);
     vtkErrorMacro("Simulated camera " << address
                                       << ": cannot serve GigE Vision there (not a local IPv4 "
-                                         "address, or its GVCP port 3956 is taken by another "
-                                         "camera).");
+                                         "address).");
     return false;
   }
   ArvFakeCamera* sensor = arv_gv_fake_camera_get_fake_camera(internal.Fake);

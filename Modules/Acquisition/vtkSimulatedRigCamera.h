@@ -158,8 +158,8 @@ public:
 
   /**
    * Starts the render thread and serves the camera. False, with an error
-   * naming the address, when the rig, the capture's input or the network
-   * is not ready.
+   * naming the address, when the rig or the capture's input is missing,
+   * the address is not a local IPv4 address or another camera serves there.
    */
   bool Start();
 

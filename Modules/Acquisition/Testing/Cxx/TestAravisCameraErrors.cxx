@@ -1,6 +1,7 @@
 // One readable error for each way a camera cannot be used: no address, an
 // address where no camera answers, a setting outside the camera's range
-// (the fake camera's gain is 0..10), Acquire() before Open().
+// (the fake camera's gain is 0..10), Acquire() before Open(); a simulated
+// camera on an address already served or not local.
 #include "lfdCameraTestScene.h"
 #include "vtkAravisCamera.h"
 #include "vtkLightFieldErrorObserver.h"
@@ -42,6 +43,20 @@ int TestAravisCameraErrors(int, char*[])
   {
     return EXIT_FAILURE;
   }
+  // The simulated camera: a second one on the same address, and an
+  // address that is not this machine's.
+  vtkNew<vtkSimulatedRigCamera> second;
+  scene.SetUp(second);
+  errors->Observe(second);
+  lfdtest::Check(!second->Start(), "a second simulated camera on 127.0.0.1 fails", 0, 0);
+  ExpectError(errors,
+    "Simulated camera 127.0.0.1: the GVCP port 3956 of this address is taken (another camera "
+    "serves there).");
+  second->SetAddress("10.9.9.9");
+  lfdtest::Check(!second->Start(), "a simulated camera on 10.9.9.9 fails", 0, 0);
+  ExpectError(errors,
+    "Simulated camera 10.9.9.9: cannot serve GigE Vision there (not a local IPv4 address).");
+
   camera->SetAddress("127.0.0.1");
   camera->SetGain(20.0);
   lfdtest::Check(!camera->Open(), "Open() with a gain the camera refuses fails", 0, 0);
