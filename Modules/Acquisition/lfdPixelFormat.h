@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 
 namespace lfd
@@ -38,6 +39,28 @@ inline const char* PixelFormatName(PixelFormat format)
     "RGB8", "BayerRG8", "BayerBG8", "BayerGB8", "BayerGR8", "Mono8"
   };
   return names[static_cast<int>(format)];
+}
+
+/// The GigE Vision (PFNC) code of a format, as cameras send it.
+inline std::uint32_t PixelFormatCode(PixelFormat format)
+{
+  static const std::uint32_t codes[] = {
+    0x02180014u, 0x01080009u, 0x0108000Bu, 0x0108000Au, 0x01080008u, 0x01080001u
+  };
+  return codes[static_cast<int>(format)];
+}
+
+/// The format of a GigE Vision code, or -1 for one not listed here.
+inline int PixelFormatFromCode(std::uint32_t code)
+{
+  for (int format = 0; format <= static_cast<int>(PixelFormat::Mono8); ++format)
+  {
+    if (PixelFormatCode(static_cast<PixelFormat>(format)) == code)
+    {
+      return format;
+    }
+  }
+  return -1;
 }
 
 /// Bytes per pixel on the wire.

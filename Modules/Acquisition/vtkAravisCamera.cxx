@@ -23,14 +23,6 @@ constexpr int PacketBytes = 1400;
 // Frames queued for the stream: one being filled, one late, one spare.
 constexpr int StreamBuffers = 3;
 
-// The GigE Vision codes of vtkAravisCamera::PixelFormats, in their order.
-const ArvPixelFormat WireFormats[] = { ARV_PIXEL_FORMAT_RGB_8_PACKED,
-  ARV_PIXEL_FORMAT_BAYER_RG_8,
-  ARV_PIXEL_FORMAT_BAYER_BG_8,
-  ARV_PIXEL_FORMAT_BAYER_GB_8,
-  ARV_PIXEL_FORMAT_BAYER_GR_8,
-  ARV_PIXEL_FORMAT_MONO_8 };
-
 const char* StatusName(ArvBufferStatus status)
 {
   switch (status)
@@ -63,6 +55,103 @@ std::string Consume(GError*& error)
   g_clear_error(&error);
   return message;
 }
+
+// What a GenICam call that set `error` was refused, in words ("refuses
+// FEATURE: reason"), or "" when `error` is not set.
+std::string Refusal(GError*& error, const std::string& feature)
+{
+  return error ? "refuses " + feature + ": " + Consume(error) : std::string();
+}
+
+// Sets a float feature within the camera's own bounds: Aravis writes any
+// value into a camera's registers, so a value outside them is refused here,
+// with the bounds.
+std::string SetBounded(ArvCamera* camera,
+  const char* feature,
+  double value,
+  const char* unit,
+  void (*getBounds)(ArvCamera*, double*, double*, GError**),
+  void (*set)(ArvCamera*, double, GError**))
+{
+  std::ostringstream setting;
+  setting << feature << " = " << value << " " << unit;
+  GError* error = nullptr;
+  double low = 0.0, high = 0.0;
+  getBounds(camera, &low, &high, &error);
+  if (error)
+  {
+    return Refusal(error, setting.str() + " (reading its range)");
+  }
+  if (value < low || value > high)
+  {
+    std::ostringstream range;
+    range << "refuses " << setting.str() << ": its range is [" << low << ", " << high << "] "
+          << unit;
+    return range.str();
+  }
+  set(camera, value, &error);
+  return Refusal(error, setting.str());
+}
+
+// The settings of a capture camera (Data/README.md, "Camera features"), in
+// order, and the frame size; the first refusal in words, "" when all went.
+std::string ConfigureCamera(ArvCamera* camera,
+  const char* format,
+  double exposure,
+  double gain,
+  int frameSize[2])
+{
+  GError* error = nullptr;
+  std::string problem;
+  if (arv_camera_is_gv_device(camera))
+  {
+    arv_gv_device_set_stream_options(
+      ARV_GV_DEVICE(arv_camera_get_device(camera)), ARV_GV_STREAM_OPTION_PACKET_SOCKET_DISABLED);
+    arv_camera_gv_set_packet_size(camera, PacketBytes, &error);
+    problem = Refusal(error, "GevSCPSPacketSize = " + std::to_string(PacketBytes));
+  }
+  if (problem.empty())
+  {
+    arv_camera_clear_triggers(camera, &error);
+    problem = Refusal(error, "TriggerMode = Off (clearing the triggers)");
+  }
+  if (problem.empty())
+  {
+    arv_camera_set_pixel_format_from_string(camera, format, &error);
+    problem = Refusal(error, std::string("PixelFormat = ") + format);
+  }
+  if (problem.empty())
+  {
+    problem = SetBounded(camera,
+      "ExposureTime",
+      exposure,
+      "us",
+      &arv_camera_get_exposure_time_bounds,
+      &arv_camera_set_exposure_time);
+  }
+  if (problem.empty())
+  {
+    problem =
+      SetBounded(camera, "Gain", gain, "dB", &arv_camera_get_gain_bounds, &arv_camera_set_gain);
+  }
+  if (problem.empty())
+  {
+    arv_camera_set_acquisition_mode(camera, ARV_ACQUISITION_MODE_CONTINUOUS, &error);
+    problem = Refusal(error, "AcquisitionMode = Continuous");
+  }
+  if (problem.empty())
+  {
+    arv_camera_set_trigger(camera, "Software", &error);
+    problem = Refusal(error, "TriggerSource = Software");
+  }
+  if (problem.empty())
+  {
+    int x = 0, y = 0;
+    arv_camera_get_region(camera, &x, &y, &frameSize[0], &frameSize[1], &error);
+    problem = Refusal(error, "Width and Height (reading the frame size)");
+  }
+  return problem;
+}
 }
 
 // The Aravis objects of an open camera.
@@ -71,6 +160,45 @@ struct vtkAravisCamera::Device
   ArvCamera* Camera = nullptr;
   ArvStream* Stream = nullptr;
   bool Acquiring = false;
+
+  // Opens the stream, queues its buffers and starts the acquisition; the
+  // problem in words, "" when it runs.
+  std::string StartStream(const int frameSize[2])
+  {
+    GError* error = nullptr;
+    const guint payload = arv_camera_get_payload(this->Camera, &error);
+    if (error)
+    {
+      return Refusal(error,
+        "PayloadSize (reading the frame's bytes for " + std::to_string(frameSize[0]) + " x " +
+          std::to_string(frameSize[1]) + " pixels)");
+    }
+    this->Stream = arv_camera_create_stream(this->Camera, nullptr, nullptr, &error);
+    if (!this->Stream)
+    {
+      return "cannot open its stream: " + Consume(error);
+    }
+    if (ARV_IS_GV_STREAM(this->Stream))
+    {
+      g_object_set(this->Stream,
+        "socket-buffer",
+        ARV_GV_STREAM_SOCKET_BUFFER_FIXED,
+        "socket-buffer-size",
+        SocketBufferBytes,
+        nullptr);
+    }
+    for (int i = 0; i < StreamBuffers; ++i)
+    {
+      arv_stream_push_buffer(this->Stream, arv_buffer_new(payload, nullptr));
+    }
+    arv_camera_start_acquisition(this->Camera, &error);
+    if (error)
+    {
+      return Refusal(error, "AcquisitionStart");
+    }
+    this->Acquiring = true;
+    return std::string();
+  }
 
   ~Device()
   {
@@ -131,114 +259,20 @@ bool vtkAravisCamera::Open()
     vtkErrorMacro("Camera " << address << ": cannot connect: " << Consume(error));
     return false;
   }
-  // Each setting is one GenICam feature; a camera that refuses one is named
-  // with the feature and the value it refused.
-  auto refused = [&](const std::string& feature) -> bool
+  std::string problem = ConfigureCamera(device->Camera,
+    GetPixelFormatName(this->PixelFormat),
+    this->ExposureTime,
+    this->Gain,
+    this->FrameSize);
+  if (problem.empty())
   {
-    if (!error)
-    {
-      return false;
-    }
-    vtkErrorMacro("Camera " << address << ": refuses " << feature << ": " << Consume(error));
-    return true;
-  };
-  if (arv_camera_is_gv_device(device->Camera))
-  {
-    arv_gv_device_set_stream_options(ARV_GV_DEVICE(arv_camera_get_device(device->Camera)),
-      ARV_GV_STREAM_OPTION_PACKET_SOCKET_DISABLED);
-    arv_camera_gv_set_packet_size(device->Camera, PacketBytes, &error);
-    if (refused("GevSCPSPacketSize = " + std::to_string(PacketBytes)))
-    {
-      return false;
-    }
+    problem = device->StartStream(this->FrameSize);
   }
-  arv_camera_clear_triggers(device->Camera, &error);
-  if (refused("TriggerMode = Off (clearing the triggers)"))
+  if (!problem.empty())
   {
+    vtkErrorMacro("Camera " << address << ": " << problem);
     return false;
   }
-  const char* format = GetPixelFormatName(this->PixelFormat);
-  arv_camera_set_pixel_format_from_string(device->Camera, format, &error);
-  if (refused(std::string("PixelFormat = ") + format))
-  {
-    return false;
-  }
-  // Aravis writes any value into a camera's registers; a value outside the
-  // camera's own bounds is refused here, with the bounds.
-  auto setBounded = [&](const char* feature,
-                      double value,
-                      const char* unit,
-                      void (*getBounds)(ArvCamera*, double*, double*, GError**),
-                      void (*set)(ArvCamera*, double, GError**)) -> bool
-  {
-    std::ostringstream setting;
-    setting << feature << " = " << value << " " << unit;
-    double low = 0.0, high = 0.0;
-    getBounds(device->Camera, &low, &high, &error);
-    if (refused(setting.str() + " (reading its range)"))
-    {
-      return false;
-    }
-    if (value < low || value > high)
-    {
-      vtkErrorMacro("Camera " << address << ": refuses " << setting.str() << ": its range is ["
-                              << low << ", " << high << "] " << unit);
-      return false;
-    }
-    set(device->Camera, value, &error);
-    return !refused(setting.str());
-  };
-  if (!setBounded("ExposureTime",
-        this->ExposureTime,
-        "us",
-        &arv_camera_get_exposure_time_bounds,
-        &arv_camera_set_exposure_time) ||
-    !setBounded("Gain", this->Gain, "dB", &arv_camera_get_gain_bounds, &arv_camera_set_gain))
-  {
-    return false;
-  }
-  arv_camera_set_acquisition_mode(device->Camera, ARV_ACQUISITION_MODE_CONTINUOUS, &error);
-  if (refused("AcquisitionMode = Continuous"))
-  {
-    return false;
-  }
-  arv_camera_set_trigger(device->Camera, "Software", &error);
-  if (refused("TriggerSource = Software"))
-  {
-    return false;
-  }
-  int x = 0, y = 0;
-  arv_camera_get_region(device->Camera, &x, &y, &this->FrameSize[0], &this->FrameSize[1], &error);
-  const guint payload = error ? 0 : arv_camera_get_payload(device->Camera, &error);
-  if (refused("Width, Height and PayloadSize (reading the frame size)"))
-  {
-    return false;
-  }
-  device->Stream = arv_camera_create_stream(device->Camera, nullptr, nullptr, &error);
-  if (!device->Stream)
-  {
-    vtkErrorMacro("Camera " << address << ": cannot open its stream: " << Consume(error));
-    return false;
-  }
-  if (ARV_IS_GV_STREAM(device->Stream))
-  {
-    g_object_set(device->Stream,
-      "socket-buffer",
-      ARV_GV_STREAM_SOCKET_BUFFER_FIXED,
-      "socket-buffer-size",
-      SocketBufferBytes,
-      nullptr);
-  }
-  for (int i = 0; i < StreamBuffers; ++i)
-  {
-    arv_stream_push_buffer(device->Stream, arv_buffer_new(payload, nullptr));
-  }
-  arv_camera_start_acquisition(device->Camera, &error);
-  if (refused("AcquisitionStart"))
-  {
-    return false;
-  }
-  device->Acquiring = true;
   this->NumberOfRetries = 0;
   this->Connection = std::move(device);
   return true;
@@ -299,7 +333,7 @@ bool vtkAravisCamera::Acquire(vtkImageData* frame)
     size_t size = 0;
     const auto* data = static_cast<const unsigned char*>(arv_buffer_get_image_data(buffer, &size));
     const auto wire = static_cast<lfd::PixelFormat>(this->PixelFormat);
-    if (arv_buffer_get_image_pixel_format(buffer) != WireFormats[this->PixelFormat] ||
+    if (arv_buffer_get_image_pixel_format(buffer) != lfd::PixelFormatCode(wire) ||
       size < static_cast<size_t>(width) * height * lfd::PixelFormatBytes(wire))
     {
       arv_stream_push_buffer(stream, buffer);

@@ -39,8 +39,8 @@ vtkCxxSetObjectMacro(vtkSimulatedRigCamera, Projectors, vtkCameraRig);
 
 namespace
 {
-// How long Aravis's thread waits for a render before it sends a black
-// frame: far above a render of a few hundred milliseconds under llvmpipe.
+// How long Aravis's thread waits for a render before it drops the frame:
+// far above a render of a few hundred milliseconds under llvmpipe.
 constexpr auto RenderDeadline = std::chrono::seconds(20);
 // Lost-packet ratio of a damaged frame: of a frame's hundreds of packets
 // some are lost, yet most arrive, so the client sees an incomplete frame.
@@ -85,25 +85,6 @@ bool GvcpPortFree(const char* address)
     close(probe);
   }
   return free;
-}
-
-// The GigE Vision pixel formats the camera renders, or -1.
-int RenderedFormat(ArvPixelFormat format)
-{
-  const ArvPixelFormat formats[] = { ARV_PIXEL_FORMAT_RGB_8_PACKED,
-    ARV_PIXEL_FORMAT_BAYER_RG_8,
-    ARV_PIXEL_FORMAT_BAYER_BG_8,
-    ARV_PIXEL_FORMAT_BAYER_GB_8,
-    ARV_PIXEL_FORMAT_BAYER_GR_8,
-    ARV_PIXEL_FORMAT_MONO_8 };
-  for (int f = 0; f < 6; ++f)
-  {
-    if (formats[f] == format)
-    {
-      return f;
-    }
-  }
-  return -1;
 }
 }
 
@@ -159,6 +140,10 @@ void vtkSimulatedRigCamera::Internals::Fill(ArvBuffer* buffer,
   auto* pixels =
     static_cast<unsigned char*>(const_cast<void*>(arv_buffer_get_data(buffer, nullptr)));
   std::unique_lock<std::mutex> lock(self->Mutex);
+  if (self->Stopping)
+  {
+    return;
+  }
   // The fault decides how many of this frame's packets the camera sends.
   double loss = 0.0;
   if (self->Drop > 0)
@@ -173,17 +158,20 @@ void vtkSimulatedRigCamera::Internals::Fill(ArvBuffer* buffer,
   }
   g_object_set(self->Fake, "gvsp-lost-ratio", loss, nullptr);
   std::memset(pixels, 0, width * height * ARV_PIXEL_FORMAT_BIT_PER_PIXEL(format) / 8);
-  const int rendered = RenderedFormat(format);
+  const int rendered = lfd::PixelFormatFromCode(format);
   if (loss >= 1.0 || rendered < 0)
   {
     return;
   }
   const unsigned long long request = ++self->Requested;
   self->Wake.notify_all();
-  if (!self->Wake.wait_for(lock,
-        RenderDeadline,
-        [self, request] { return self->Rendered >= request || self->Stopping; }) ||
-    !self->FrameOk || self->Frame.size() != 3 * width * height)
+  const bool answered = self->Wake.wait_for(
+    lock, RenderDeadline, [self, request] { return self->Rendered >= request || self->Stopping; });
+  if (self->Stopping)
+  {
+    return;
+  }
+  if (!answered || !self->FrameOk || self->Frame.size() != 3 * width * height)
   {
     // No image (a failed render, a client asking for another size): the
     // frame is lost, as a camera's would be.
@@ -504,8 +492,13 @@ bool vtkSimulatedRigCamera::Start()
 void vtkSimulatedRigCamera::Stop()
 {
   Internals& internal = *this->Internal;
-  // Aravis's thread first (its callback may wait for a render, and uses
-  // Fake until it returns), then ours.
+  // Stopping first: a frame callback still running in Aravis's thread then
+  // neither waits for a render nor touches the camera being finalized.
+  {
+    std::lock_guard<std::mutex> lock(internal.Mutex);
+    internal.Stopping = true;
+  }
+  internal.Wake.notify_all();
   if (internal.Fake)
   {
     g_object_unref(internal.Fake);
@@ -513,11 +506,6 @@ void vtkSimulatedRigCamera::Stop()
   }
   if (internal.Renderer.joinable())
   {
-    {
-      std::lock_guard<std::mutex> lock(internal.Mutex);
-      internal.Stopping = true;
-    }
-    internal.Wake.notify_all();
     internal.Renderer.join();
   }
   internal.Running = false;

@@ -35,6 +35,7 @@ try:
 
     camera = lfd.vtkAravisCamera()
     camera.SetAddress("127.0.0.1")
+    camera.SetFrameTimeout(20000)  # a render takes seconds on a loaded machine
     errors = t.error_observer(camera)
     frame = vtkImageData()
     acquired = camera.Open() and camera.Acquire(frame)

@@ -16,7 +16,9 @@ int TestCameraRetries(int, char*[])
   errors->Observe(simulated);
   vtkNew<vtkAravisCamera> camera;
   camera->SetAddress("127.0.0.1");
-  camera->SetFrameTimeout(1000);
+  // Long enough for a render on a loaded machine: a dropped frame costs
+  // this long.
+  camera->SetFrameTimeout(5000);
   errors->Observe(camera);
   if (!simulated->Start() || !camera->Open())
   {

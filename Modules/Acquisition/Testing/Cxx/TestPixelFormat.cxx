@@ -75,5 +75,14 @@ int TestPixelFormat(int, char*[])
     }
     check(worst <= 1, std::string(names[b]) + " ramp interior, worst error (levels)", worst, 1);
   }
+  // GigE Vision codes (PFNC) both ways; Mono16 is not one of the formats.
+  int codes = 0;
+  for (int f = 0; f <= static_cast<int>(lfd::PixelFormat::Mono8); ++f)
+  {
+    codes += lfd::PixelFormatFromCode(lfd::PixelFormatCode(static_cast<lfd::PixelFormat>(f))) == f;
+  }
+  check(codes == 6, "pixel formats found from their codes", codes, 6);
+  check(lfd::PixelFormatCode(lfd::PixelFormat::BayerRG8) == 0x01080009u, "BayerRG8 code", 1, 1);
+  check(lfd::PixelFormatFromCode(0x01100007u) == -1, "Mono16 code is no format here", 1, 1);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -14,7 +14,11 @@
 
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <csignal>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -52,6 +56,93 @@ long CountScreenDifferences(Display* display, vtkImageData* pattern)
   XDestroyImage(shot);
   return differences;
 }
+}
+
+// A projector on the second screen of its own X server (an Xvfb with two
+// screens, started here and stopped by pid): the pattern fills screen 1,
+// screen 0 stays as it was.
+void ShowOnSecondScreen()
+{
+  int ready[2];
+  if (pipe(ready) != 0)
+  {
+    Check(false, "pipe for Xvfb's display number", 0, 1);
+    return;
+  }
+  const pid_t server = fork();
+  if (server == 0)
+  {
+    close(ready[0]);
+    const std::string fd = std::to_string(ready[1]);
+    execlp("Xvfb",
+      "Xvfb",
+      "-displayfd",
+      fd.c_str(),
+      "-screen",
+      "0",
+      "160x120x24",
+      "-screen",
+      "1",
+      "320x200x24",
+      "-nolisten",
+      "tcp",
+      "-noreset",
+      static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(ready[1]);
+  // The number comes in pieces ("N", then a newline): read to the newline,
+  // and keep the pipe open while the server runs (it stops on a write to a
+  // closed pipe).
+  std::string number;
+  char c = 0;
+  while (server > 0 && read(ready[0], &c, 1) == 1 && c != '\n')
+  {
+    number += c;
+  }
+  if (number.empty())
+  {
+    if (server > 0)
+    {
+      kill(server, SIGTERM);
+      waitpid(server, nullptr, 0);
+    }
+    close(ready[0]);
+    Check(false, "Xvfb with two screens started", 0, 1);
+    return;
+  }
+  const std::string screen1 = ":" + number + ".1";
+  std::cout << "second server's screen " << screen1 << "\n";
+  vtkNew<vtkProjectorWindow> projector;
+  projector->SetName("projector on screen 1");
+  projector->SetDisplay(screen1.c_str());
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(projector);
+  vtkNew<vtkGrayCodePatternSource> gray;
+  gray->SetWidth(320);
+  gray->SetHeight(200);
+  gray->SetPatternIndex(17);
+  gray->Update();
+  const bool shown = projector->ShowPattern(gray->GetOutput());
+  Check(shown, "Gray code 17 shown on " + screen1 + " " + errors->GetErrorMessage(), shown, 1);
+  Check(projector->GetResolution()[0] == 320 && projector->GetResolution()[1] == 200,
+    "Resolution taken from screen 1, width",
+    projector->GetResolution()[0],
+    320);
+  if (Display* display = XOpenDisplay(screen1.c_str()))
+  {
+    const long differences = CountScreenDifferences(display, gray->GetOutput());
+    Check(differences == 0, "pixels of screen 1 unlike Gray code 17", differences, 0);
+    XCloseDisplay(display);
+  }
+  else
+  {
+    Check(false, "screenshot of " + screen1, 0, 1);
+  }
+  projector->Close();
+  kill(server, SIGTERM);
+  waitpid(server, nullptr, 0);
+  close(ready[0]);
 }
 
 int TestProjectorWindow(int, char*[])
@@ -138,5 +229,6 @@ int TestProjectorWindow(int, char*[])
     0,
     0);
   XCloseDisplay(display);
+  ShowOnSecondScreen();
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

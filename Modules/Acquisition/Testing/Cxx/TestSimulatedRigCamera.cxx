@@ -40,6 +40,8 @@ int TestSimulatedRigCamera(int, char*[])
 
   vtkNew<vtkAravisCamera> camera;
   camera->SetAddress("127.0.0.1");
+  // A render takes a second or more on a loaded machine with llvmpipe.
+  camera->SetFrameTimeout(20000);
   errors->Observe(camera);
   if (!camera->Open())
   {
