@@ -75,7 +75,7 @@ struct SceneInitOptions
   std::string Out;
   std::vector<std::string> Boxes;
   double Threshold = 20.0;
-  int Resolution = 64;
+  int Resolution = 128;
 };
 
 /// The box mode of `--boxes labels|slabs N|one` (and the slab count).

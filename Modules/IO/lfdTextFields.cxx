@@ -1,14 +1,39 @@
 #include "lfdTextFields.h"
 
+#include "lfdFileUtilities.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace lfd
 {
 namespace io
 {
+std::vector<std::string> ReadTextLines(const std::string& path)
+{
+  std::string problem;
+  if (!CheckRegularFile(path, problem))
+  {
+    throw std::runtime_error(path + ": " + problem);
+  }
+  std::ifstream stream(path);
+  if (!stream)
+  {
+    throw std::runtime_error(path + ": cannot open the file for reading");
+  }
+  std::vector<std::string> lines;
+  std::string line;
+  while (std::getline(stream, line))
+  {
+    lines.push_back(line);
+  }
+  return lines;
+}
+
 std::vector<std::string> SplitFields(const std::string& line)
 {
   std::istringstream stream(line);

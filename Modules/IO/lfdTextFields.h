@@ -14,6 +14,13 @@ namespace lfd
 namespace io
 {
 /**
+ * The lines of the text file `path` (line n is element n - 1). Throws
+ * std::runtime_error "<path>: <problem>" when it is not a regular file
+ * (lfd::io::CheckRegularFile) or cannot be opened.
+ */
+std::vector<std::string> ReadTextLines(const std::string& path);
+
+/**
  * The whitespace-separated fields of a line.
  */
 std::vector<std::string> SplitFields(const std::string& line);

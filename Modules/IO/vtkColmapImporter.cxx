@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -67,26 +66,15 @@ struct ModelLine
 
 std::vector<ModelLine> ReadModelLines(const std::string& path)
 {
-  std::string problem;
-  if (!lfd::io::CheckRegularFile(path, problem))
-  {
-    throw std::runtime_error(path + ": " + problem);
-  }
-  std::ifstream stream(path);
-  if (!stream)
-  {
-    throw std::runtime_error(path + ": cannot open the file for reading");
-  }
+  const std::vector<std::string> text = lfd::io::ReadTextLines(path);
   std::vector<ModelLine> lines;
-  std::string text;
-  for (int number = 1; std::getline(stream, text); ++number)
+  for (size_t index = 0; index < text.size(); ++index)
   {
-    const size_t first = text.find_first_not_of(" \t\r");
-    if (first != std::string::npos && text[first] == '#')
+    const size_t first = text[index].find_first_not_of(" \t\r");
+    if (first == std::string::npos || text[index][first] != '#')
     {
-      continue;
+      lines.push_back({ static_cast<int>(index) + 1, text[index] });
     }
-    lines.push_back({ number, text });
   }
   return lines;
 }

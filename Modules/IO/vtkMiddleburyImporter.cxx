@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <climits>
-#include <fstream>
 #include <stdexcept>
 #include <vector>
 
@@ -58,24 +57,15 @@ struct ParError : std::runtime_error
 // ParError, or std::runtime_error when it cannot be opened).
 std::vector<ParEntry> ParseParFile(const std::string& path, const std::string& folder)
 {
+  const std::vector<std::string> lines = lfd::io::ReadTextLines(path);
   std::string problem;
-  if (!lfd::io::CheckRegularFile(path, problem))
-  {
-    throw std::runtime_error(path + ": " + problem);
-  }
-  std::ifstream stream(path);
-  if (!stream)
-  {
-    throw std::runtime_error(path + ": cannot open the file for reading");
-  }
-  std::string text;
-  int lineNumber = 0;
   long long announced = -1;
   int announcedLine = 0;
   std::vector<ParEntry> entries;
-  while (std::getline(stream, text))
+  for (size_t index = 0; index < lines.size(); ++index)
   {
-    ++lineNumber;
+    const std::string& text = lines[index];
+    const int lineNumber = static_cast<int>(index) + 1;
     const std::vector<std::string> tokens = lfd::io::SplitFields(text);
     if (tokens.empty())
     {

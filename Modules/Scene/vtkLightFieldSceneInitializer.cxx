@@ -2,6 +2,8 @@
 
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLabelPropagation.h"
@@ -12,13 +14,16 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkLightFieldSceneInitializer);
 
@@ -42,6 +47,57 @@ vtkSmartPointer<vtkImageData> PaintedView(vtkLightField* lightField, vtkDataArra
   }
   image->GetPointData()->SetScalars(painted);
   return image;
+}
+
+// The labelled voxels of `proxy` whose coordinate along the longest side of
+// its bounds lies between the `fraction` and 1 - `fraction` quantiles of
+// their label's: a visual hull cannot carve the hollows between parts, and
+// the few voxels of one part standing in such a hollow beside the next part
+// would otherwise move the slab boundary between them (vtkPartCageSource
+// takes each part's extent from its extreme voxels).
+vtkSmartPointer<vtkPolyData> TrimLabelExtents(vtkPolyData* proxy, double fraction)
+{
+  double bounds[6];
+  proxy->GetBounds(bounds);
+  int axis = 0;
+  for (int c = 1; c < 3; ++c)
+  {
+    axis = bounds[2 * c + 1] - bounds[2 * c] > bounds[2 * axis + 1] - bounds[2 * axis] ? c : axis;
+  }
+  vtkDataArray* labels = proxy->GetCellData()->GetArray("Label");
+  std::map<int, std::vector<double>> along;
+  for (vtkIdType i = 0; i < proxy->GetNumberOfPoints(); ++i)
+  {
+    along[static_cast<int>(labels->GetComponent(i, 0))].push_back(proxy->GetPoint(i)[axis]);
+  }
+  std::map<int, std::pair<double, double>> kept;
+  for (auto& part : along)
+  {
+    std::vector<double>& values = part.second;
+    std::sort(values.begin(), values.end());
+    const size_t cut = static_cast<size_t>(fraction * (values.size() - 1));
+    kept[part.first] = { values[cut], values[values.size() - 1 - cut] };
+  }
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> vertices;
+  vtkNew<vtkUnsignedCharArray> trimmed;
+  trimmed->SetName("Label");
+  for (vtkIdType i = 0; i < proxy->GetNumberOfPoints(); ++i)
+  {
+    const int label = static_cast<int>(labels->GetComponent(i, 0));
+    const double* point = proxy->GetPoint(i);
+    if (point[axis] >= kept[label].first && point[axis] <= kept[label].second)
+    {
+      const vtkIdType id = points->InsertNextPoint(point);
+      vertices->InsertNextCell(1, &id);
+      trimmed->InsertNextValue(static_cast<unsigned char>(label));
+    }
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->SetPoints(points);
+  result->SetVerts(vertices);
+  result->GetCellData()->AddArray(trimmed);
+  return result;
 }
 
 // A camera at view 0's centre with its "up", looking at the bounds' centre,
@@ -126,7 +182,7 @@ bool vtkLightFieldSceneInitializer::Initialize(vtkLightFieldSceneLogic* logic)
   }
   if (byLabel)
   {
-    return logic->BuildCageFromLabels(proxy, -1);
+    return logic->BuildCageFromLabels(TrimLabelExtents(proxy, this->OutlierFraction), -1);
   }
   double grown[6];
   double size = 0.0;
@@ -161,6 +217,7 @@ void vtkLightFieldSceneInitializer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Threshold: " << this->Threshold << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "Margin: " << this->Margin << "\n";
+  os << indent << "OutlierFraction: " << this->OutlierFraction << "\n";
   os << indent << "ObjectBounds: (" << this->ObjectBounds[0] << ", " << this->ObjectBounds[1]
      << ", " << this->ObjectBounds[2] << ", " << this->ObjectBounds[3] << ", "
      << this->ObjectBounds[4] << ", " << this->ObjectBounds[5] << ")\n";

@@ -12,10 +12,12 @@
  *   rig's calibration by vtkLabelPropagation (Resolution voxels along the
  *   longest side): the labelled proxy that class propagates labels with;
  * - BoxMode LABELS (needs a Label pass): every view's Label pass is
- *   painted onto the hull, each voxel takes the majority label of the
- *   pixels that see it (vtkLabelPropagation), and vtkPartCageSource builds
- *   one box per label around those voxels, slabs along the hull's longest
- *   side sharing their corners (Chen et al. 2005, Fig. 13);
+ *   painted onto the hull, each voxel some pixel sees takes the majority
+ *   label of the pixels that see it (vtkLabelPropagation), and
+ *   vtkPartCageSource builds one box per label around those voxels (each
+ *   label's extent along the slab axis trimmed by OutlierFraction at both
+ *   ends), slabs along the hull's longest side sharing their corners (Chen
+ *   et al. 2005, Fig. 13);
  * - BoxMode SLABS: NumberOfSlabs boxes stacked along the ring axis (the
  *   coordinate axis nearest it; the longest side of the hull when the rig has
  *   no fitted ring), label 1, filling the hull's bounds grown by Margin;
@@ -81,10 +83,21 @@ public:
 
   ///@{
   /**
-   * Voxels of the hull along its longest side, default 64.
+   * Voxels of the hull along its longest side, default 128 (vtkLabelPropagation's).
    */
   vtkSetClampMacro(Resolution, int, 8, 1024);
   vtkGetMacro(Resolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * BoxMode LABELS: the fraction of each label's voxels, at each end along
+   * the slab axis, left out of its extent (default 0.02): a visual hull
+   * cannot carve the hollow between two parts, and the few voxels of one
+   * part it leaves standing beside the next would move their boundary.
+   */
+  vtkSetClampMacro(OutlierFraction, double, 0.0, 0.25);
+  vtkGetMacro(OutlierFraction, double);
   ///@}
 
   ///@{
@@ -103,7 +116,8 @@ public:
   bool Initialize(vtkLightFieldSceneLogic* logic);
 
   /**
-   * Bounds of the hull's voxel centres found by the last Initialize().
+   * Bounds of the centres of the hull's voxels that the views see, found
+   * by the last Initialize().
    */
   vtkGetVector6Macro(ObjectBounds, double);
 
@@ -114,8 +128,9 @@ protected:
   int BoxMode = LABELS;
   int NumberOfSlabs = 3;
   double Threshold = 20.0;
-  int Resolution = 64;
+  int Resolution = 128;
   double Margin = 0.05;
+  double OutlierFraction = 0.02;
   double ObjectBounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
 
 private:

@@ -2,8 +2,8 @@
 (one box per label, each holding its part's labelled pixels: lfd split
 check), slabs and one box; lfd render --view N against the captured photo
 (PSNR), --size, --camera-position/--focal-point, bad values refused with one
-exact line; and the documented three commands from a transforms.json and a
-COLMAP model to a deformed render."""
+exact line; and the documented three commands from a transforms.json to a
+deformed render."""
 
 import json
 import os
@@ -16,9 +16,11 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 WORK = t.temp_path("scene-authoring", "x")[:-2]
 shutil.rmtree(WORK, ignore_errors=True)
 os.makedirs(WORK)
-# Measured 2026-11-26: view 5 rendered from the scene of the fish against
-# its photo.
-MIN_VIEW_PSNR = 30.0
+# Measured 2026-11-26: view 5 rendered from the scene of the fish is its
+# photo (100 dB: identical); from the light field imported back from a
+# transforms.json export, 55.8 dB.
+MIN_VIEW_PSNR = 90.0
+MIN_IMPORTED_VIEW_PSNR = 55.0
 
 
 def lfd(*args, cwd=None):
@@ -66,8 +68,8 @@ t.check(scene["lightfield"] == "fish.lf", "the light field relative to the scene
 t.check(scene["camera"]["width"] == 128 and scene["camera"]["height"] == 128,
         "render size = the rig's image size", (scene["camera"]["width"], scene["camera"]["height"]))
 code, out, err = lfd("split", "check", fish, "--scene", scene_path)
-t.check(code == 0 and "label 1" in out, "split check: every label inside its box",
-        out.strip()[-400:] + err.strip())
+t.check(code == 0 and "every label is inside its boxes" in out,
+        "split check: every label inside its box", out.strip()[-400:] + err.strip())
 for mode, count in ((["slabs", "4"], 4), (["one"], 1)):
     path = os.path.join(WORK, f"fish-{mode[0]}.json")
     expect_ok(f"scene init --boxes {' '.join(mode)}", "scene", "init", fish, "--out", path,
@@ -98,15 +100,15 @@ expect_error(["scene", "init", fish, "--out", scene_path, "--boxes", "slabs"],
 expect_error(["scene", "init", fish, "--out", scene_path, "--boxes", "many"],
              "--boxes: expected labels, slabs N or one")
 
-# The three commands: a transforms.json (or COLMAP model) -> a light field
-# -> a scene -> a deformed render (here the scene's box bent by a lattice).
-for fmt, calibration in (("transforms", "transforms.json"), ("colmap", "sparse")):
+# The three commands: a transforms.json -> a light field -> a scene -> a
+# deformed render (the scene's box bent by a lattice; the COLMAP import is
+# the same path, see TestCalibratedImageFormats and TestColmapEndToEnd).
+for fmt, calibration in (("transforms", "transforms.json"),):
     exported = os.path.join(WORK, f"export-{fmt}")
     expect_ok(f"export {fmt}", "export", fmt, fish, "--out", exported)
     imported = os.path.join(WORK, f"imported-{fmt}.lf")
-    extra = ["--images", os.path.join(exported, "images")] if fmt == "colmap" else []
-    expect_ok(f"import {fmt}", "import", fmt, os.path.join(exported, calibration), *extra,
-              "--out", imported)
+    expect_ok(f"import {fmt}", "import", fmt, os.path.join(exported, calibration), "--out",
+              imported)
     scene_file = os.path.join(WORK, f"{fmt}.json")
     expect_ok(f"scene init on the {fmt} import", "scene", "init", imported, "--out", scene_file)
     bent = os.path.join(WORK, f"{fmt}-bent.json")
@@ -116,7 +118,7 @@ for fmt, calibration in (("transforms", "transforms.json"), ("colmap", "sparse")
     expect_ok(f"deformed render of the {fmt} import", "render", bent, "--view", "5", "--out", png)
     straight = os.path.join(WORK, f"{fmt}-straight.png")
     expect_ok("undeformed render", "render", scene_file, "--view", "5", "--out", straight)
-    t.check(t.psnr(read_png(straight), photo) > MIN_VIEW_PSNR,
+    t.check(t.psnr(read_png(straight), photo) > MIN_IMPORTED_VIEW_PSNR,
             f"{fmt}: imported light field renders view 5 like the photo (PSNR dB)",
             t.psnr(read_png(straight), photo))
     changed = (abs(read_png(png).astype(int) - read_png(straight).astype(int)).max(axis=2) > 32).sum()
