@@ -236,6 +236,7 @@ void AddImportCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
       "labels: one box per label of the Label pass (slabs along the object's long side, each "
       "bounding its part's voxels of the hull); slabs N: N boxes of label 1 along the ring axis; "
       "one: one box of label 1 (default: labels when the light field has a Label pass, else one)")
+    ->type_name("labels|slabs N|one")
     ->expected(1, 2);
   vtkNew<vtkLightFieldSceneInitializer> limits;
   numbers.Add(initCommand,

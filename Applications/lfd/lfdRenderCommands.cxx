@@ -291,13 +291,16 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     "--time",
     render->Time,
     "time of the keyframes to render (default: the cage's points)");
-  numbers.Add(renderCommand,
-    "--view",
-    render->View.View,
-    0,
-    std::numeric_limits<int>::max(),
-    "render from captured view N's camera at the light field's image size (instead of the "
-    "scene's camera; --size, --camera-position and --focal-point still apply)");
+  numbers
+    .Add(renderCommand,
+      "--view",
+      render->View.View,
+      0,
+      std::numeric_limits<int>::max(),
+      "render from captured view N's camera (its pinhole, without lens distortion) at the light "
+      "field's image size, instead of the scene's camera; --size, --camera-position and "
+      "--focal-point still apply")
+    ->default_str("");
   renderCommand->add_option(
     "--size", render->View.Size, "image size WxH (default: the scene's, or the view's)");
   numbers

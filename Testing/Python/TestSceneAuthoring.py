@@ -55,6 +55,14 @@ def boxes(scene_path):
     return [box["label"] for box in scene["cage"]["boxes"]], scene
 
 
+for sub in (["import", "colmap"], ["import", "transforms"], ["export", "colmap"],
+            ["export", "transforms"], ["scene", "init"], ["render"]):
+    code, out, _ = lfd(*sub, "--help")
+    t.check(code == 0 and "Options" in out, "lfd " + " ".join(sub) + " --help", code)
+code, out, _ = lfd("render", "--help")
+t.check(all(o in out for o in ("--view", "--size", "--camera-position", "--focal-point", "--time")),
+        "lfd render --help lists the view options", "")
+
 fish = os.path.join(WORK, "fish.lf")
 expect_ok("synth a fish", "synth", "--object", "fish", "--rows", "1", "--views", "48", "--width",
           "128", "--height", "128", "--out", fish)
