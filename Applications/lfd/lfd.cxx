@@ -306,6 +306,7 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
   NumericOptions numbers;
   std::vector<Command> commands;
   AddCaptureCommands(app, numbers, commands);
+  AddImportCommands(app, numbers, commands);
   AddRenderCommands(app, numbers, commands);
   AddEvalCommands(app, numbers, commands);
   AddBenchCommand(app, numbers, commands);

@@ -283,12 +283,7 @@ void ImportMiddlebury(const std::string& par, const std::string& out, const std:
 {
   vtkNew<vtkMiddleburyImporter> importer;
   importer->SetFileName(par.c_str());
-  lfd::ShowProgress(importer, "importing");
-  Run(importer.Get(), "importing " + par);
-  WriteLightField(importer->GetOutput(), out);
-  vtkCameraRig* rig = importer->GetOutput()->GetRig();
-  std::cout << "imported " << rig->GetNumberOfViews() << " views (" << rig->GetNumberOfDuplicates()
-            << " near-duplicates) into " << shownAs << "\n";
+  ImportCalibratedImages(importer, out, shownAs);
 }
 
 namespace

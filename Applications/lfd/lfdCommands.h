@@ -13,6 +13,8 @@
 
 #include "lfdCommandSupport.h"
 
+class vtkCalibratedImageImporter;
+
 namespace lfd::cli
 {
 /// `lfd synth`, `lfd import middlebury`, `lfd info` (lfdCaptureCommands.cxx).
@@ -23,6 +25,9 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
 void AddEvalCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd split projector|scanline|propagate|check` (lfdSplitCommands.cxx).
 void AddSplitCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd import colmap|transforms`, `lfd export colmap|transforms`, `lfd scene init`
+/// (lfdImportCommands.cxx; after AddCaptureCommands, which creates `lfd import`).
+void AddImportCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd bench` (lfdBenchCommand.cxx).
 void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd demo` (lfdDemoCommand.cxx).
@@ -72,6 +77,12 @@ vtkSmartPointer<vtkLightField> Capture(vtkPolyData* mesh,
 
 /// Captures a light field of a mesh (or a built-in object) with the options.
 vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options);
+
+/// Runs an importer (its calibration set) and writes its light field into `out`;
+/// `shownAs`: the name the report gives `out` (lfdImportCommands.cxx).
+void ImportCalibratedImages(vtkCalibratedImageImporter* importer,
+  const std::string& out,
+  const std::string& shownAs);
 
 /// Imports a Middlebury set into `out`; `shownAs`: the name the report gives
 /// `out` (a staged folder's target).

@@ -1,6 +1,7 @@
 // `lfd render`, `lfd animate` and `lfd lattice`: a scene's views out.
 #include "lfdCommands.h"
 
+#include "lfdLimits.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
@@ -23,6 +24,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,11 +33,90 @@ namespace lfd::cli
 {
 namespace
 {
-void Render(const std::string& scenePath, const std::string& out, const double* time)
+/// What `lfd render` changes of the scene's view before rendering.
+struct ViewOptions
+{
+  int View = -1; // a captured view's camera (-1: the scene's)
+  std::string Size;
+  std::vector<double> CameraPosition;
+  std::vector<double> FocalPoint;
+};
+
+/// "WxH" -> width and height, or a refusal naming --size.
+void ParseSize(const std::string& text, int& width, int& height)
+{
+  char* end = nullptr;
+  const long w = std::strtol(text.c_str(), &end, 10);
+  long h = 0;
+  bool valid = end != text.c_str() && *end == 'x';
+  if (valid)
+  {
+    const char* start = end + 1;
+    h = std::strtol(start, &end, 10);
+    valid = end != start && *end == '\0';
+  }
+  if (!valid || w < 1 || h < 1 || w > lfd::MaximumRenderSize || h > lfd::MaximumRenderSize)
+  {
+    Fail("--size " + text + ": expected WxH, each from 1 to " +
+      std::to_string(lfd::MaximumRenderSize) + " (e.g. 640x480)");
+  }
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
+}
+
+/// Applies --view, --size, --camera-position and --focal-point to the scene
+/// (edits of the scene logic, validated there).
+void ApplyViewOptions(const ViewOptions& options,
+  vtkLightFieldSceneLogic* scene,
+  vtkLightField* lightField)
+{
+  vtkNew<vtkCamera> camera;
+  camera->DeepCopy(scene->GetScene()->GetCamera());
+  int size[2] = { scene->GetScene()->GetWidth(), scene->GetScene()->GetHeight() };
+  if (options.View >= 0)
+  {
+    vtkCameraRig* rig = lightField->GetRig();
+    if (options.View >= rig->GetNumberOfViews())
+    {
+      Fail("--view " + std::to_string(options.View) + ": the light field has " +
+        std::to_string(rig->GetNumberOfViews()) + " views (0 to " +
+        std::to_string(rig->GetNumberOfViews() - 1) + ")");
+    }
+    rig->ApplyToCamera(options.View, camera);
+    size[0] = rig->GetImageSize()[0];
+    size[1] = rig->GetImageSize()[1];
+  }
+  if (!options.Size.empty())
+  {
+    ParseSize(options.Size, size[0], size[1]);
+  }
+  if (!options.CameraPosition.empty())
+  {
+    camera->SetPosition(options.CameraPosition.data());
+  }
+  if (!options.FocalPoint.empty())
+  {
+    camera->SetFocalPoint(options.FocalPoint.data());
+  }
+  if (!options.CameraPosition.empty() || !options.FocalPoint.empty())
+  {
+    camera->OrthogonalizeViewUp();
+  }
+  if (!scene->SetSize(size[0], size[1]) || !scene->SetCamera(camera))
+  {
+    Fail(""); // the scene logic said why
+  }
+}
+
+void Render(const std::string& scenePath,
+  const std::string& out,
+  const double* time,
+  const ViewOptions& view)
 {
   const double start = vtkTimerLog::GetUniversalTime();
   auto scene = ReadScene(scenePath);
   auto lightField = ReadSceneLightField(scene);
+  ApplyViewOptions(view, scene, lightField);
   auto cage = SceneCage(scene, lightField, time);
   vtkNew<vtkLightFieldRenderer> renderer;
   scene->ConfigureRenderer(renderer, lightField, cage);
@@ -198,6 +279,7 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     std::string Scene;
     std::string Out;
     double Time = 0.0;
+    ViewOptions View;
   };
   auto render = std::make_shared<RenderOptions>();
   auto* renderCommand = app.add_subcommand("render",
@@ -209,9 +291,35 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     "--time",
     render->Time,
     "time of the keyframes to render (default: the cage's points)");
+  numbers
+    .Add(renderCommand,
+      "--view",
+      render->View.View,
+      0,
+      std::numeric_limits<int>::max(),
+      "render from captured view N's camera (its pinhole, without lens distortion) at the light "
+      "field's image size, instead of the scene's camera; --size, --camera-position and "
+      "--focal-point still apply")
+    ->default_str("");
+  renderCommand->add_option(
+    "--size", render->View.Size, "image size WxH (default: the scene's, or the view's)");
+  numbers
+    .AddReal(renderCommand,
+      "--camera-position",
+      render->View.CameraPosition,
+      "camera position x,y,z (default: the scene's camera)")
+    ->expected(3)
+    ->delimiter(',');
+  numbers
+    .AddReal(renderCommand,
+      "--focal-point",
+      render->View.FocalPoint,
+      "point x,y,z the camera looks at (default: the scene's camera)")
+    ->expected(3)
+    ->delimiter(',');
   commands.push_back({ renderCommand,
     [render, timeOption]
-    { Render(render->Scene, render->Out, *timeOption ? &render->Time : nullptr); },
+    { Render(render->Scene, render->Out, *timeOption ? &render->Time : nullptr, render->View); },
     false });
 
   struct AnimateOptions

@@ -14,10 +14,9 @@
  * (22 fields: the image name and 21 numbers, K and R row-major, in the
  * OpenCV convention `x ~ K [R | t] X` with the pixel origin at the top-left,
  * which is the rig's convention). FileName is the par file; the images are
- * found next to it. The importer loads them as the Coaxial pass (RGB; grey
- * images are expanded to RGB, an alpha channel is dropped), builds the rig
- * with the image names as view names and, when FitRigCylinder is on (the
- * default) and there are at least 3 views, calls vtkCameraRig::FitCylinder().
+ * found next to it (or in ImageDirectory). The importer loads them as the
+ * Coaxial pass and builds the rig with the image names as view names
+ * (vtkCalibratedImageImporter, which also fits the cylinder).
  * The calibration is used as given: in templeRing about a third of the
  * images are rotated by 180 degrees in the image plane, and their R
  * includes that rotation.
@@ -39,59 +38,30 @@
 #define vtkMiddleburyImporter_h
 
 #include "lfdIOModule.h" // For export macro
-#include "vtkLightFieldAlgorithm.h"
+#include "vtkCalibratedImageImporter.h"
 
-#include <memory> // For std::unique_ptr
-
-#include <string> // For std::string
-
-class vtkLightField;
-
-class LFDIO_EXPORT vtkMiddleburyImporter : public vtkLightFieldAlgorithm
+class LFDIO_EXPORT vtkMiddleburyImporter : public vtkCalibratedImageImporter
 {
 public:
   static vtkMiddleburyImporter* New();
-  vtkTypeMacro(vtkMiddleburyImporter, vtkLightFieldAlgorithm);
+  vtkTypeMacro(vtkMiddleburyImporter, vtkCalibratedImageImporter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The calibration file (`*_par.txt`).
-   */
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
-
-  ///@{
-  /**
-   * Fit the rig's cylinder after import (default on).
-   */
-  vtkSetMacro(FitRigCylinder, bool);
-  vtkGetMacro(FitRigCylinder, bool);
-  vtkBooleanMacro(FitRigCylinder, bool);
-  ///@}
 
 protected:
   vtkMiddleburyImporter();
   ~vtkMiddleburyImporter() override;
 
-  int RequestInformation(vtkInformation* request,
-    vtkInformationVector** inputs,
-    vtkInformationVector* outputs) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputs,
-    vtkInformationVector* outputs) override;
-  std::string DescribeFailure(const std::string& problem) override;
-
-  char* FileName = nullptr;
-  bool FitRigCylinder = true;
+#ifndef __VTK_WRAP__
+  bool ParseCalibration(std::vector<CalibratedView>& views,
+    unsigned long& errorCode,
+    std::string& error) override;
+  std::string GetFormatDescription() override;
+  std::string DescribeField(const std::string& field) override;
+#endif
 
 private:
   vtkMiddleburyImporter(const vtkMiddleburyImporter&) = delete;
   void operator=(const vtkMiddleburyImporter&) = delete;
-
-  struct Internals; // what RequestInformation parsed, for RequestData
-  std::unique_ptr<Internals> Internal;
 };
 
 #endif

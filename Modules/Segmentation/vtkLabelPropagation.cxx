@@ -3,12 +3,17 @@
 #include "lfdLabelMorphology.h"
 #include "lfdPinholeCamera.h"
 #include "vtkCameraRig.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLightField.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -447,13 +452,48 @@ void GrowLabels(const VoxelGrid& grid, std::vector<unsigned char>& voxelLabel)
     }
   }
 }
+
+// The voxels some pixel sees as vertices at their centres, labelled
+// (GetProxyVoxels()).
+void FillProxy(const VoxelGrid& grid,
+  const std::vector<unsigned char>& visible,
+  const std::vector<unsigned char>& voxelLabel,
+  vtkPolyData* proxy)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> vertices;
+  vtkNew<vtkUnsignedCharArray> labels;
+  labels->SetName("Label");
+  for (vtkIdType v = 0; v < grid.Voxels(); ++v)
+  {
+    if (visible[v])
+    {
+      const glm::dvec3 centre = grid.Centre(v);
+      const vtkIdType id = points->InsertNextPoint(centre.x, centre.y, centre.z);
+      vertices->InsertNextCell(1, &id);
+      labels->InsertNextValue(voxelLabel[v]);
+    }
+  }
+  proxy->SetPoints(points);
+  proxy->SetVerts(vertices);
+  proxy->GetCellData()->AddArray(labels);
+}
 }
 
 //------------------------------------------------------------------------------
-vtkLabelPropagation::vtkLabelPropagation() = default;
+vtkLabelPropagation::vtkLabelPropagation()
+  : ProxyVoxels(vtkSmartPointer<vtkPolyData>::New())
+{
+}
 
 //------------------------------------------------------------------------------
 vtkLabelPropagation::~vtkLabelPropagation() = default;
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkLabelPropagation::GetProxyVoxels()
+{
+  return this->ProxyVoxels;
+}
 
 //------------------------------------------------------------------------------
 void vtkLabelPropagation::SetPaintedView(int view, vtkImageData* labels)
@@ -479,6 +519,7 @@ void vtkLabelPropagation::RemoveAllPaintedViews()
 //------------------------------------------------------------------------------
 bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std::string& error)
 {
+  this->ProxyVoxels->Initialize();
   const int width = input->GetWidth();
   const int height = input->GetHeight();
   const int views = input->GetNumberOfViews();
@@ -572,6 +613,15 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
     return false;
   }
   GrowLabels(grid, voxelLabel);
+  std::vector<unsigned char> visible(grid.Voxels(), 0);
+  for (vtkIdType v : seen)
+  {
+    if (v >= 0)
+    {
+      visible[v] = 1;
+    }
+  }
+  FillProxy(grid, visible, voxelLabel, this->ProxyVoxels);
   this->UpdateProgress(0.8);
 
   unsigned char* label =
@@ -610,4 +660,5 @@ void vtkLabelPropagation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Threshold: " << this->Threshold << "\n";
   os << indent << "SilhouetteTolerance: " << this->SilhouetteTolerance << "\n";
   os << indent << "NumberOfProxyVoxels: " << this->NumberOfProxyVoxels << "\n";
+  os << indent << "Proxy vertices: " << this->ProxyVoxels->GetNumberOfPoints() << "\n";
 }

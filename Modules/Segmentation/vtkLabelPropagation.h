@@ -46,6 +46,7 @@
 #include <map> // For std::map
 
 class vtkImageData;
+class vtkPolyData;
 
 class LFDSEGMENTATION_EXPORT vtkLabelPropagation : public vtkLightFieldSplitter
 {
@@ -113,6 +114,15 @@ public:
    */
   vtkGetMacro(NumberOfProxyVoxels, vtkIdType);
 
+  /**
+   * The labelled surface of the last update's proxy: one vertex per voxel
+   * that some object pixel sees, at its centre, with the voxel's label in
+   * the cell array "Label" (the majority of the painted pixels seeing it):
+   * what vtkPartCageSource turns into one box per part (`lfd scene init`).
+   * Empty before an update and after a failed one.
+   */
+  vtkPolyData* GetProxyVoxels();
+
 protected:
   vtkLabelPropagation();
   ~vtkLabelPropagation() override;
@@ -125,6 +135,7 @@ protected:
   double Threshold = 20.0;
   double SilhouetteTolerance = 1.5;
   vtkIdType NumberOfProxyVoxels = 0;
+  vtkSmartPointer<vtkPolyData> ProxyVoxels;
 
 private:
   vtkLabelPropagation(const vtkLabelPropagation&) = delete;
