@@ -96,12 +96,14 @@ void ImportMiddlebury(const std::string& par, const std::string& out, const std:
  * the last keyframe time) into the folder `out` with
  * vtkLightFieldAnimationWriter: frame_%04d.png, and animation.mp4 when
  * ffmpeg is installed; its progress is said on stderr ("animating: frame
- * 3/48"). Returns the frames' contact sheet.
+ * 3/48"). `paraview` adds the ParaView series (frame_NNNN.vti,
+ * cage_NNNN.vtu, animation.pvd, cage.pvd). Returns the frames' contact sheet.
  */
 vtkSmartPointer<vtkImageData> RenderAnimation(vtkLightFieldSceneLogic* scene,
   vtkLightField* lightField,
   int frames,
-  const std::string& out);
+  const std::string& out,
+  bool paraview = false);
 
 /// The report of an animation written into `folder`, to be known as `out`.
 void PrintAnimation(vtkLightFieldSceneLogic* scene,

@@ -9,7 +9,9 @@
 #include "vtkColmapImporter.h"
 #include "vtkDeformationCage.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldSceneExporter.h"
 #include "vtkLightFieldSceneInitializer.h"
+#include "vtkLightFieldSceneLogic.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransformsExporter.h"
@@ -67,6 +69,38 @@ void Export(const std::string& lightFieldPath, const std::string& out, const cha
   Run(exporter.Get(), "exporting to " + out);
   std::cout << "exported " << lightField->GetNumberOfViews() << " views to " << out << " ("
             << calibration << ", images/)\n";
+}
+
+struct ParaViewOptions
+{
+  std::string Scene;
+  std::string Out;
+  bool NoLightField = false;
+  bool NoVtkJs = false;
+};
+
+/// `lfd export paraview`: vtkLightFieldSceneExporter on a scene.
+void ExportParaView(const ParaViewOptions& options)
+{
+  auto scene = ReadScene(options.Scene);
+  auto lightField = ReadSceneLightField(scene);
+  vtkNew<vtkLightFieldSceneExporter> exporter;
+  exporter->SetSceneLogic(scene);
+  exporter->SetLightField(lightField);
+  exporter->SetDirectoryName(options.Out.c_str());
+  exporter->SetWriteLightField(!options.NoLightField);
+  exporter->SetWriteVtkJs(!options.NoVtkJs);
+  if (!exporter->Write())
+  {
+    Fail(""); // the exporter said why
+  }
+  std::cout << "exported the scene to " << options.Out << " (rig.vtp"
+            << (lightField->GetProjectors() && lightField->GetProjectors()->GetNumberOfViews() > 0
+                   ? ", projectors.vtp"
+                   : "")
+            << (scene->HasCage() ? ", cage.vtu" : "")
+            << (options.NoLightField ? "" : ", lightfield.vti")
+            << (options.NoVtkJs ? "" : ", vtkjs/") << ")\n";
 }
 
 struct SceneInitOptions
@@ -202,8 +236,9 @@ void AddImportCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     Import<vtkTransformsImporter>,
     commands);
 
-  auto* exportCommand = app.add_subcommand(
-    "export", "export a light field's Coaxial views and cameras for other tools");
+  auto* exportCommand = app.add_subcommand("export",
+    "export a light field's views and cameras (colmap, transforms) or a scene (paraview) for other "
+    "tools");
   exportCommand->require_subcommand(1);
   AddExportCommand(
     exportCommand,
@@ -221,6 +256,19 @@ void AddImportCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     [](const std::string& lightField, const std::string& out)
     { Export<vtkTransformsExporter>(lightField, out, "transforms.json"); },
     commands);
+  auto paraview = std::make_shared<ParaViewOptions>();
+  auto* paraviewCommand = exportCommand->add_subcommand("paraview",
+    "write a scene for ParaView and vtk.js into OUT: rig.vtp (camera frusta, cell arrays View "
+    "and Row), projectors.vtp, cage.vtu (the current cage: RestPosition, Label), lightfield.vti "
+    "(W x H x views, one array per pass) and vtkjs/ (rig and cage for vtk.js); the cage over "
+    "time: lfd animate --paraview. Replaces OUT when complete (OUT must be empty or an earlier "
+    "export)");
+  paraviewCommand->add_option("SCENE", paraview->Scene, "scene.json")->required();
+  paraviewCommand->add_option("--out", paraview->Out, "output folder")->required();
+  paraviewCommand->add_flag(
+    "--no-lightfield", paraview->NoLightField, "leave out lightfield.vti (the largest file)");
+  paraviewCommand->add_flag("--no-vtkjs", paraview->NoVtkJs, "leave out the vtk.js scene");
+  commands.push_back({ paraviewCommand, [paraview] { ExportParaView(*paraview); }, false });
 
   auto* scene = app.add_subcommand("scene", "author scenes");
   scene->require_subcommand(1);

@@ -130,12 +130,14 @@ void Render(const std::string& scenePath,
 vtkSmartPointer<vtkImageData> RenderAnimation(vtkLightFieldSceneLogic* scene,
   vtkLightField* lightField,
   int frames,
-  const std::string& out)
+  const std::string& out,
+  bool paraview)
 {
   vtkNew<vtkLightFieldAnimationWriter> writer;
   writer->SetSceneLogic(scene);
   writer->SetLightField(lightField);
   writer->SetNumberOfFrames(frames);
+  writer->SetWriteParaView(paraview);
   writer->SetDirectoryName(out.c_str());
   lfd::ShowSteps(writer,
     "animating",
@@ -170,7 +172,7 @@ void PrintAnimation(vtkLightFieldSceneLogic* scene,
 
 namespace
 {
-void Animate(const std::string& scenePath, int frames, const std::string& out)
+void Animate(const std::string& scenePath, int frames, const std::string& out, bool paraview)
 {
   auto scene = ReadScene(scenePath);
   if (scene->GetScene()->GetNumberOfKeyframes() < 2)
@@ -180,8 +182,12 @@ void Animate(const std::string& scenePath, int frames, const std::string& out)
   auto lightField = ReadSceneLightField(scene);
   StagedFolder folder(out, "lfd animate", lfd::scene::AnimationFilePatterns());
   const double start = vtkTimerLog::GetUniversalTime();
-  RenderAnimation(scene, lightField, frames, folder.GetPath());
+  RenderAnimation(scene, lightField, frames, folder.GetPath(), paraview);
   PrintAnimation(scene, frames, Seconds(start), folder.GetPath(), out);
+  if (paraview)
+  {
+    std::printf("paraview  %s/animation.pvd, %s/cage.pvd\n", out.c_str(), out.c_str());
+  }
   folder.Commit();
 }
 
@@ -327,17 +333,22 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     std::string Scene;
     std::string Out;
     int Frames = 48;
+    bool ParaView = false;
   };
   auto animate = std::make_shared<AnimateOptions>();
   auto* animateCommand = app.add_subcommand("animate",
-    "render the scene's keyframes (Catmull-Rom) into the folder OUT: frame_NNNN.png, and "
-    "animation.mp4 when ffmpeg is installed; replaces OUT when complete (an existing OUT may "
-    "hold only such files)");
+    "render the scene's keyframes (its interpolation: Catmull-Rom or linear) into the folder "
+    "OUT: frame_NNNN.png, and animation.mp4 when ffmpeg is installed; replaces OUT when "
+    "complete (an existing OUT may hold only such files)");
   animateCommand->add_option("SCENE", animate->Scene, "scene.json with keyframes")->required();
   numbers.Add(animateCommand, "--frames", animate->Frames, 1, MaximumFrames, "number of frames");
   animateCommand->add_option("--out", animate->Out, "output folder")->required();
+  animateCommand->add_flag("--paraview",
+    animate->ParaView,
+    "also write the ParaView series: each frame as frame_NNNN.vti (Radiance, Label, Depth) and "
+    "its cage as cage_NNNN.vtu, listed with their times in animation.pvd and cage.pvd");
   commands.push_back({ animateCommand,
-    [animate] { Animate(animate->Scene, animate->Frames, animate->Out); },
+    [animate] { Animate(animate->Scene, animate->Frames, animate->Out, animate->ParaView); },
     false });
 
   auto lattice = std::make_shared<LatticeOptions>();

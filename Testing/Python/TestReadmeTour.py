@@ -50,7 +50,8 @@ def run_block(name, text, environment=None):
 
 run_block(*blocks[0])
 for produced in ("view.png", "frames/frame_0005.png", "fish4.lf", "split.lf", "bent.json", "bent.png",
-                 "parts.json", "view10.png", "parts.lf"):
+                 "parts.json", "view10.png", "parts.lf", "series/cage.pvd", "series/frame_0003.vti",
+                 "paraview/rig.vtp", "paraview/cage.vtu", "paraview/vtkjs/index.json"):
     t.check(os.path.exists(os.path.join(repo, produced)), f"the tour wrote {produced}", "")
 if os.path.islink(os.path.join(root, "shared", "data", "templeRing")):
     # The same terminal: the first block's `export PATH=...` still holds.
