@@ -1,0 +1,117 @@
+// Bad calibration input gives one clear error each, naming the image or
+// pose: no images, too few corners, images of different sizes, too few
+// images for intrinsics, an unknown dictionary, a missing Gray-code image,
+// too few poses.
+#include "lfdCalibrationTestUtilities.h"
+#include "vtkCameraCalibration.h"
+#include "vtkDataArray.h"
+#include "vtkGrayCodePattern.h"
+#include "vtkLightFieldErrorObserver.h"
+#include "vtkPointData.h"
+#include "vtkProjectorCalibration.h"
+
+#include <string>
+
+namespace
+{
+/// Runs `calibrate` on `object` and checks it fails with exactly one error, `expected`.
+template<typename Calibration>
+void ExpectError(Calibration* object, const std::string& expected)
+{
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(object);
+  const bool calibrated = object->Calibrate();
+  errors->StopObserving();
+  const std::string message = errors->HasError() ? errors->GetErrorMessage() : "(none)";
+  const bool ok = !calibrated && errors->GetNumberOfErrors() == 1 && message == expected;
+  std::cout << (ok ? "ok   " : "FAIL ") << "error: " << message << "\n";
+  if (!ok)
+  {
+    std::cout << "     expected: " << expected << "\n";
+    lfdtest::Failures() += 1;
+  }
+}
+
+vtkSmartPointer<vtkImageData> Blank(int width, int height)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  image->GetPointData()->GetScalars()->Fill(128);
+  return image;
+}
+}
+
+int TestCalibrationErrors(int, char*[])
+{
+  auto board = lfdtest::Board();
+  const double K[9] = { 800.0, 0.0, 319.5, 0.0, 800.0, 239.5, 0.0, 0.0, 1.0 };
+  const lfdtest::Camera camera = lfdtest::LookAt(K,
+    lfdtest::BoardCentre(board) + glm::dvec3(0.0, 0.0, -0.45),
+    lfdtest::BoardCentre(board),
+    glm::dvec3(0.0, -1.0, 0.0));
+  auto good = lfdtest::Render(board, camera, 1);
+
+  vtkNew<vtkCameraCalibration> calibration;
+  calibration->SetBoard(board);
+  ExpectError(calibration.Get(), "camera calibration: no images");
+
+  calibration->AddImage(good, "a.png");
+  calibration->AddImage(Blank(640, 480), "b.png");
+  ExpectError(calibration.Get(),
+    "image 1 (b.png): 0 ChArUco corners found, at least 8 needed (is the board in view, lit and "
+    "in focus?)");
+
+  calibration->RemoveAllImages();
+  calibration->AddImage(good, "a.png");
+  calibration->AddImage(lfdtest::Render(board, camera, 2, 320, 240), "c.png");
+  ExpectError(calibration.Get(),
+    "image 1 (c.png): 320 x 240 pixels, image 0 (a.png) is 640 x 480 (one camera takes every "
+    "image)");
+
+  calibration->RemoveAllImages();
+  calibration->AddImage(good, "a.png");
+  calibration->AddImage(good, "b.png");
+  ExpectError(calibration.Get(),
+    "camera calibration: 2 images, at least 3 (tilted differently) needed for the intrinsics");
+
+  calibration->AddImage(nullptr, "gone.png");
+  ExpectError(calibration.Get(), "image 2 (gone.png): missing");
+
+  vtkNew<vtkCharucoBoard> unknown;
+  unknown->SetDictionary("DICT_9X9_1");
+  calibration->SetBoard(unknown);
+  ExpectError(calibration.Get(),
+    "ChArUco board: unknown marker dictionary 'DICT_9X9_1' (expected an OpenCV name such as "
+    "DICT_5X5_100)");
+
+  // Projectors: too few poses, then a missing Gray-code image.
+  vtkNew<vtkProjectorCalibration> projector;
+  projector->SetBoard(board);
+  projector->SetCamera(K, camera.D);
+  projector->SetProjectorSize(64, 32);
+  projector->SetNumberOfPoses(2);
+  ExpectError(projector.Get(), "projector calibration: 2 board poses, at least 3 needed");
+  projector->SetNumberOfPoses(3);
+  vtkNew<vtkGrayCodePattern> sequence;
+  sequence->SetProjectorSize(64, 32);
+  for (int p = 0; p < 3; ++p)
+  {
+    for (int i = 0; i < sequence->GetNumberOfPatterns(); ++i)
+    {
+      if (p != 0 || i != 4)
+      {
+        projector->SetImage(p, i, good);
+      }
+    }
+  }
+  ExpectError(projector.Get(),
+    "pose 0: Gray-code image 4 missing (a projector of 64 x 32 needs 24 images: 22 codes, white, "
+    "black)");
+  // Unchanging images decode nothing: the projector lit no pixel.
+  projector->SetImage(0, 4, good);
+  ExpectError(projector.Get(),
+    "pose 0: 24 ChArUco corners found, 0 of them decoded in the projector, at least 8 needed (is "
+    "the board in view and lit by the whole sequence?)");
+  return lfdtest::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
