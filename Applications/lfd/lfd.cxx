@@ -226,6 +226,7 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
   AddBenchCommand(app, numbers, commands);
   AddDemoCommand(app, numbers, commands);
   AddSplitCommands(app, numbers, commands);
+  AddCalibrateCommands(app, numbers, commands);
   AddStudioCommand(app, numbers, commands);
 
   ConfigureCommands(&app);

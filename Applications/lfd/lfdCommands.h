@@ -27,6 +27,8 @@ void AddSplitCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comman
 void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd demo` (lfdDemoCommand.cxx).
 void AddDemoCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd calibrate board|patterns|camera|ring|projector` (lfdCalibrateCommands.cxx).
+void AddCalibrateCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd studio` (lfdStudioCommand.cxx).
 void AddStudioCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 

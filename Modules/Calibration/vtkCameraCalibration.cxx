@@ -1,6 +1,9 @@
 #include "vtkCameraCalibration.h"
 
 #include "lfdCalibrationImages.h"
+#include "lfdFileUtilities.h"
+#include "lfdJsonFields.h"
+#include "lfdPinholeCamera.h"
 
 #include "vtkCameraRig.h"
 #include "vtkCharucoBoard.h"
@@ -272,6 +275,102 @@ void vtkCameraCalibration::GetViewTranslation(int i, double t[3]) const
 {
   const auto& view = this->Internal->Views.at(i);
   std::copy(view.t, view.t + 3, t);
+}
+
+//------------------------------------------------------------------------------
+bool vtkCameraCalibration::WriteCameraFile(const char* fileName)
+{
+  const std::string file = fileName ? fileName : "";
+  const auto& views = this->Internal->Views;
+  if (file.empty() || views.empty() || this->ImageSize[0] < 1)
+  {
+    vtkErrorMacro(<< (file.empty() ? std::string("camera file: no file name")
+                                   : file + ": nothing calibrated to write (Calibrate first)"));
+    return false;
+  }
+  lfd::io::Json document;
+  document["format"] = "lfd-camera";
+  document["version"] = 1;
+  document["width"] = this->ImageSize[0];
+  document["height"] = this->ImageSize[1];
+  document["K"] = std::vector<double>(this->Intrinsics, this->Intrinsics + 9);
+  document["distortion"] = std::vector<double>(this->Distortion, this->Distortion + 5);
+  document["rms"] = this->Rms;
+  if (this->Board)
+  {
+    document["board"] = { { "squares", { this->Board->GetSquaresX(), this->Board->GetSquaresY() } },
+      { "square", this->Board->GetSquareLength() },
+      { "marker", this->Board->GetMarkerLength() },
+      { "dictionary", this->Board->GetDictionary() } };
+  }
+  lfd::io::Json list = lfd::io::Json::array();
+  for (const auto& view : views)
+  {
+    list.push_back({ { "name", view.Name },
+      { "corners", static_cast<int>(view.Corners.Ids.size()) },
+      { "rms", view.Rms } });
+  }
+  document["views"] = list;
+  std::string error;
+  if (!lfd::io::WriteFileAtomically(file, document.dump(2) + "\n", error))
+  {
+    vtkErrorMacro(<< file << ": " << error);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCameraCalibration::ReadCameraFile(const char* fileName)
+{
+  const std::string file = fileName ? fileName : "";
+  lfd::io::Json document;
+  std::string error;
+  if (!lfd::io::ParseJsonFile(file, document, error))
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
+  try
+  {
+    const std::string format =
+      lfd::io::GetString(lfd::io::RequireMember(document, "", "format"), "format");
+    if (format != "lfd-camera")
+    {
+      throw lfd::io::FieldError("format", "expected \"lfd-camera\", found \"" + format + "\"");
+    }
+    lfd::io::GetInteger(lfd::io::RequireMember(document, "", "version"), "version", 1, 1);
+    const int width = static_cast<int>(
+      lfd::io::GetInteger(lfd::io::RequireMember(document, "", "width"), "width", 1, 1048576));
+    const int height = static_cast<int>(
+      lfd::io::GetInteger(lfd::io::RequireMember(document, "", "height"), "height", 1, 1048576));
+    const std::vector<double> K =
+      lfd::io::GetNumbers(lfd::io::RequireMember(document, "", "K"), "K", 9);
+    std::vector<double> distortion(5, 0.0);
+    if (const lfd::io::Json* coefficients = lfd::io::FindMember(document, "", "distortion"))
+    {
+      distortion = lfd::io::GetNumbers(*coefficients, "distortion", 5);
+    }
+    // The checks every camera of a dataset passes (lfdPinholeCamera.h).
+    const double R[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+    const double t[3] = { 0, 0, 0 };
+    std::string field;
+    std::string problem;
+    if (!lfd::CheckPinhole(K.data(), R, t, distortion.data(), width, height, field, problem))
+    {
+      throw lfd::io::FieldError(field, problem);
+    }
+    this->SetIntrinsics(K.data());
+    this->SetDistortion(distortion.data());
+    this->ImageSize[0] = width;
+    this->ImageSize[1] = height;
+  }
+  catch (const lfd::io::FieldError& failure)
+  {
+    vtkErrorMacro(<< file << ": " << failure.what());
+    return false;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

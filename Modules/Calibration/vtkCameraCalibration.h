@@ -136,6 +136,20 @@ public:
   void GetViewTranslation(int i, double t[3]) const;
   ///@}
 
+  ///@{
+  /**
+   * The camera file (`lfd-camera`, version 1, Data/README.md): the
+   * intrinsics, distortion and image size with the board and the
+   * reprojection errors per view. WriteCameraFile() writes the result of
+   * Calibrate() atomically (temporary name, then rename);
+   * ReadCameraFile() reads the intrinsics, distortion and image size back
+   * (as FixIntrinsics needs them). Both return false with one error naming
+   * the file (and the field) on failure.
+   */
+  bool WriteCameraFile(const char* fileName);
+  bool ReadCameraFile(const char* fileName);
+  ///@}
+
   /**
    * The calibrated views as a rig whose world frame is the board's: one
    * view per image (K, R, t, distortion, name), the image size. The rig is
