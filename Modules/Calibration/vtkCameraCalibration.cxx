@@ -148,6 +148,14 @@ bool vtkCameraCalibration::DetectBoards()
                     << (problem.empty() ? std::string("missing") : problem));
       return false;
     }
+    if (i == 0 && this->FixIntrinsics && this->ImageSize[0] > 0 &&
+      (grey.cols != this->ImageSize[0] || grey.rows != this->ImageSize[1]))
+    {
+      vtkErrorMacro(<< this->Internal->Describe(index) << ": " << grey.cols << " x " << grey.rows
+                    << " pixels, the fixed intrinsics are for " << this->ImageSize[0] << " x "
+                    << this->ImageSize[1]);
+      return false;
+    }
     if (i == 0)
     {
       this->ImageSize[0] = grey.cols;

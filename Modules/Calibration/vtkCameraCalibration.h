@@ -24,7 +24,8 @@
  * distance in pixels between the detected corners and the projections of
  * the board's corners). Every refusal is one error naming the image: no
  * images, images of different sizes, an image not 8-bit, too few corners
- * found (MinimumCorners), too few images for intrinsics (3).
+ * found (MinimumCorners), too few images for intrinsics (3), images of
+ * another size than the fixed intrinsics' (read from a camera file).
  *
  * @sa vtkCharucoBoard vtkCameraRig vtkProjectorCalibration
  */

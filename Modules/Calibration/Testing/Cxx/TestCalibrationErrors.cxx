@@ -1,7 +1,8 @@
 // Bad calibration input gives one clear error each, naming the image or
 // pose: no images, too few corners, images of different sizes, too few
-// images for intrinsics, an unknown dictionary, a missing Gray-code image,
-// too few poses.
+// images for intrinsics, an unknown dictionary, a refused camera file, images
+// of another size than the fixed intrinsics', a missing Gray-code image, too
+// few poses, captures the projector did not light.
 #include "lfdCalibrationTestUtilities.h"
 #include "vtkCameraCalibration.h"
 #include "vtkDataArray.h"
@@ -9,7 +10,10 @@
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkPointData.h"
 #include "vtkProjectorCalibration.h"
+#include <vtksys/SystemTools.hxx>
 
+#include <cstdio>
+#include <fstream>
 #include <string>
 
 namespace
@@ -84,6 +88,41 @@ int TestCalibrationErrors(int, char*[])
   ExpectError(calibration.Get(),
     "ChArUco board: unknown marker dictionary 'DICT_9X9_1' (expected an OpenCV name such as "
     "DICT_5X5_100)");
+
+  // Camera files: one refused field, and images of another size than the
+  // fixed intrinsics'.
+  const std::string folder = vtksys::SystemTools::GetCurrentWorkingDirectory();
+  const std::string bad = folder + "/TestCalibrationErrors_camera.json";
+  {
+    std::ofstream file(bad);
+    file << R"({"format": "lfd-camera", "version": 1, "width": 320, "height": 240,
+      "K": [800, 0, 160, 0, -800, 120, 0, 0, 1]})";
+  }
+  vtkNew<vtkCameraCalibration> fixed;
+  fixed->SetBoard(board);
+  {
+    vtkNew<vtkLightFieldErrorObserver> errors;
+    errors->Observe(fixed);
+    const bool read = fixed->ReadCameraFile(bad.c_str());
+    const std::string expected =
+      bad + ": field \"K\": focal lengths fx = K[0] and fy = K[4] must be positive";
+    lfdtest::Check(!read && errors->GetNumberOfErrors() == 1 &&
+        std::string(errors->GetErrorMessage()) == expected,
+      ("camera file refused: " + std::string(errors->GetErrorMessage())).c_str(),
+      errors->GetNumberOfErrors(),
+      1);
+  }
+  {
+    std::ofstream file(bad);
+    file << R"({"format": "lfd-camera", "version": 1, "width": 320, "height": 240,
+      "K": [400, 0, 160, 0, 400, 120, 0, 0, 1]})";
+  }
+  lfdtest::Check(fixed->ReadCameraFile(bad.c_str()), "camera file read", 1, 1);
+  fixed->FixIntrinsicsOn();
+  fixed->AddImage(good, "a.png");
+  ExpectError(
+    fixed.Get(), "image 0 (a.png): 640 x 480 pixels, the fixed intrinsics are for 320 x 240");
+  std::remove(bad.c_str());
 
   // Projectors: too few poses, then a missing Gray-code image.
   vtkNew<vtkProjectorCalibration> projector;
