@@ -363,17 +363,12 @@ void CalibrateProjector(const CalibrateOptions& options)
   std::printf("projector reprojection RMS: %.3f px over %d poses\n",
     calibration->GetRms(),
     calibration->GetNumberOfPoses());
+  vtkNew<vtkCameraRig> projector;
+  calibration->GetProjector(projector);
   double K[9];
-  double R[9];
-  double t[3];
-  calibration->GetProjectorIntrinsics(K);
-  calibration->GetProjectorRotation(R);
-  calibration->GetProjectorTranslation(t);
   double centre[3];
-  for (int col = 0; col < 3; ++col)
-  {
-    centre[col] = -(R[col] * t[0] + R[3 + col] * t[1] + R[6 + col] * t[2]);
-  }
+  projector->GetIntrinsics(0, K);
+  projector->GetCameraCenter(0, centre);
   std::printf("projector K: fx %.3f fy %.3f cx %.3f cy %.3f\n", K[0], K[4], K[2], K[5]);
   std::printf("projector centre (%s): %.5f %.5f %.5f\n",
     lightField ? "world" : "camera frame",

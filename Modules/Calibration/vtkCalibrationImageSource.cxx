@@ -313,17 +313,23 @@ void vtkCalibrationImageSource::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Board: " << this->Board << "\n";
   os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
-  os << indent << "CameraK:";
-  for (double value : this->CameraK)
+  const auto print = [&os, indent](const char* name, const double* values, int count)
   {
-    os << " " << value;
-  }
-  os << "\n" << indent << "Distortion:";
-  for (double value : this->Distortion)
-  {
-    os << " " << value;
-  }
-  os << "\n" << indent << "ProjectorPattern: " << this->ProjectorPattern << "\n";
+    os << indent << name << ":";
+    for (int i = 0; i < count; ++i)
+    {
+      os << " " << values[i];
+    }
+    os << "\n";
+  };
+  print("CameraK", this->CameraK, 9);
+  print("CameraR", this->CameraR, 9);
+  print("CameraT", this->CameraT, 3);
+  print("Distortion", this->Distortion, 5);
+  print("ProjectorK", this->ProjectorK, 9);
+  print("ProjectorR", this->ProjectorR, 9);
+  print("ProjectorT", this->ProjectorT, 3);
+  os << indent << "ProjectorPattern: " << this->ProjectorPattern << "\n";
   os << indent << "Ambient: " << this->Ambient << "\n";
   os << indent << "BlackAlbedo: " << this->BlackAlbedo << "\n";
   os << indent << "WhiteAlbedo: " << this->WhiteAlbedo << "\n";

@@ -119,6 +119,13 @@ def camera_file(folder):
     return out, files
 
 
+def read_dataset(path):
+    reader = lfd.vtkLightFieldReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
 def make_dataset(path, views, width, height):
     """A dataset of `views` black views (the ring command replaces its rig)."""
     field = lfd.vtkLightField()
@@ -148,10 +155,7 @@ def ring(folder, camera):
     code, report, err = run("calibrate", "ring", *files, "--camera", camera, "--dataset", dataset)
     print(report)
     t.check(code == 0, "lfd calibrate ring --dataset", err or "exit 0")
-    reader = lfd.vtkLightFieldReader()
-    reader.SetFileName(dataset)
-    reader.Update()
-    rig = reader.GetOutput().GetRig()
+    rig = read_dataset(dataset).GetRig()
     t.check(abs(rig.GetRadius() / radius - 1) < 0.005, "ring radius relative error (< 0.005)",
             rig.GetRadius() / radius - 1)
     distortion = [0.0] * 5
@@ -200,10 +204,7 @@ def projector(folder, camera_k, dataset, rig):
                             "--size", "320", "240", "--dataset", dataset, "--view", "0")
     print(report)
     t.check(code == 0, "lfd calibrate projector --dataset", err or "exit 0")
-    reader = lfd.vtkLightFieldReader()
-    reader.SetFileName(dataset)
-    reader.Update()
-    projectors = reader.GetOutput().GetProjectors()
+    projectors = read_dataset(dataset).GetProjectors()
     t.check(projectors is not None and projectors.GetNumberOfViews() == 1,
             "the dataset holds the projector", projectors and projectors.GetNumberOfViews())
     # The truth in the dataset's world: camera view 0 then the projector.

@@ -193,15 +193,8 @@ int TestProjectorCalibration(int, char*[])
     std::abs(K[5] - projectorK[5]) < 1.0, "projector cy error (px)", K[5] - projectorK[5], 1.0);
   const double rotationError = lfdtest::RotationAngle(R, toProjectorR);
   lfdtest::Check(rotationError < 0.2, "projector rotation error (degrees)", rotationError, 0.2);
-  // Projector centres -R^T t, compared in the camera frame.
-  glm::dvec3 fitted(0.0);
-  for (int col = 0; col < 3; ++col)
-  {
-    for (int row = 0; row < 3; ++row)
-    {
-      fitted[col] -= R[3 * row + col] * t[row];
-    }
-  }
+  // The projector's centre, in the camera's frame.
+  const glm::dvec3 fitted = lfd::PinholeCamera::FromRowMajor(K, R, t).Center();
   const double positionError = glm::length(fitted - projectorCentre);
   lfdtest::Check(positionError < 0.001, "projector position error (m)", positionError, 0.001);
   lfdtest::Check(calibration->GetRms() < 0.1, "projector RMS (px)", calibration->GetRms(), 0.1);
