@@ -312,6 +312,7 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
   AddBenchCommand(app, numbers, commands);
   AddDemoCommand(app, numbers, commands);
   AddSplitCommands(app, numbers, commands);
+  AddCalibrateCommands(app, numbers, commands);
   AddStudioCommand(app, numbers, commands);
   AddAcquisitionCommands(app, numbers, commands);
   AddCameraSimCommand(app, numbers, commands);

@@ -32,6 +32,8 @@ void AddImportCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
 void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd demo` (lfdDemoCommand.cxx).
 void AddDemoCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd calibrate board|patterns|camera|ring|projector` (lfdCalibrateCommands.cxx).
+void AddCalibrateCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd studio` (lfdStudioCommand.cxx).
 void AddStudioCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd gantry-sim`, `lfd gantry status|home|move|stop|reset` (lfdAcquisitionCommands.cxx).

@@ -10,6 +10,7 @@ from .lfdCore import *  # noqa: F401,F403
 from .lfdIO import *  # noqa: F401,F403
 from .lfdSynthesis import *  # noqa: F401,F403
 from .lfdSegmentation import *  # noqa: F401,F403
+from .lfdCalibration import *  # noqa: F401,F403
 from .lfdDeformation import *  # noqa: F401,F403
 from .lfdRendering import *  # noqa: F401,F403
 from .lfdEvaluation import *  # noqa: F401,F403
