@@ -48,9 +48,43 @@ constexpr double PatchParameterSlack = 1e-9;
 
 namespace detail
 {
+#if defined(__GNUC__) && defined(__x86_64__)
+/**
+ * DifferenceOfProducts with the processor's FMA3 instructions. Built for the
+ * x86-64 baseline (no -mfma), std::fma is a library call that emulates the
+ * fused operation in software, about 15 ns: a third of the cost of a ray /
+ * box warp, which needs 12 of them. The instruction rounds exactly as
+ * std::fma does (once, IEEE 754 fusedMultiplyAdd), so the results are the
+ * same bit for bit; only this function is built for FMA3, so no other
+ * expression is contracted differently.
+ */
+__attribute__((target("fma"))) inline double DifferenceOfProductsFma3(double a,
+  double b,
+  double c,
+  double d)
+{
+  const double cd = c * d;
+  const double error = __builtin_fma(-c, d, cd);
+  return __builtin_fma(a, b, -cd) + error;
+}
+
+/// Whether the processor has FMA3 (asked once).
+inline bool HasFma3()
+{
+  static const bool has = __builtin_cpu_supports("fma");
+  return has;
+}
+#endif
+
 /// a*b - c*d without the cancellation of the naive form (Kahan's fma trick).
 inline double DifferenceOfProducts(double a, double b, double c, double d)
 {
+#if defined(__GNUC__) && defined(__x86_64__)
+  if (HasFma3())
+  {
+    return DifferenceOfProductsFma3(a, b, c, d);
+  }
+#endif
   const double cd = c * d;
   const double error = std::fma(-c, d, cd);
   return std::fma(a, b, -cd) + error;

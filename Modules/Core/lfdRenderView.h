@@ -117,8 +117,12 @@ inline void PlaceEye(std::vector<RenderBox>& boxes, const glm::dvec3& eye)
   }
 }
 
-/// Slab test of the half-line o + t d (t >= 0) against axis-aligned bounds.
-inline bool RayHitsBounds(const glm::dvec3& o, const glm::dvec3& d, const AxisBounds& bounds)
+/// Slab test of the half-line o + t d (t >= 0) against axis-aligned bounds;
+/// `tEnter` is where the half-line enters them (0 when o is inside).
+inline bool RayEntersBounds(const glm::dvec3& o,
+  const glm::dvec3& d,
+  const AxisBounds& bounds,
+  double& tEnter)
 {
   double t0 = 0.0;
   double t1 = std::numeric_limits<double>::infinity();
@@ -145,7 +149,15 @@ inline bool RayHitsBounds(const glm::dvec3& o, const glm::dvec3& d, const AxisBo
       return false;
     }
   }
+  tEnter = t0;
   return true;
+}
+
+/// Slab test of the half-line o + t d (t >= 0) against axis-aligned bounds.
+inline bool RayHitsBounds(const glm::dvec3& o, const glm::dvec3& d, const AxisBounds& bounds)
+{
+  double tEnter;
+  return RayEntersBounds(o, d, bounds, tEnter);
 }
 
 /// An interval of a view ray inside box `Box`, and the label the light
@@ -185,17 +197,17 @@ inline void AppendSegments(const std::vector<RenderBox>& boxes,
   }
 }
 
-/// Sorts a ray's intervals by entry parameter, then by box index, so that
-/// the order does not depend on the sort or on the order boxes were tried.
+/// The order of a ray's intervals: by entry parameter, then by box index,
+/// so that it does not depend on the sort or on the order boxes were tried.
+inline bool NearerSegment(const BoxSegment& a, const BoxSegment& b)
+{
+  return a.Segment.TEnter < b.Segment.TEnter ||
+    (a.Segment.TEnter == b.Segment.TEnter && a.Box < b.Box);
+}
+
 inline void SortSegments(std::vector<BoxSegment>& segments)
 {
-  std::sort(segments.begin(),
-    segments.end(),
-    [](const BoxSegment& a, const BoxSegment& b)
-    {
-      return a.Segment.TEnter < b.Segment.TEnter ||
-        (a.Segment.TEnter == b.Segment.TEnter && a.Box < b.Box);
-    });
+  std::sort(segments.begin(), segments.end(), NearerSegment);
 }
 } // namespace detail
 
@@ -217,6 +229,19 @@ inline void CollectSegments(const std::vector<RenderBox>& boxes,
   detail::SortSegments(segments);
 }
 
+/// One thread's scratch space for the rays of a frame (FrameCage::NextSegment),
+/// reused from ray to ray: a ray allocates nothing once it has grown.
+struct FrameRayScratch
+{
+  std::vector<BoxSegment> Segments; ///< the ray's intervals handed out, front to back
+  std::vector<BoxSegment> Pending;  ///< warped, not handed out yet: sorted from PendingHead
+  std::size_t PendingHead = 0;
+  /// The boxes still to warp: where the ray enters their widened bounds, and
+  /// their index; sorted from NextEntry.
+  std::vector<std::pair<double, int>> Entries;
+  std::size_t NextEntry = 0;
+};
+
 /**
  * The cage as the rays of one frame meet it. Every ray of a frame leaves the
  * same eye through a pixel (x, y) of the image, in the direction
@@ -232,7 +257,13 @@ inline void CollectSegments(const std::vector<RenderBox>& boxes,
  *   that meets a box's bounds passes through the bounds' projection, so
  *   every box that the ray's bounds test would let through is in its tile:
  *   the intervals, and so the pixels, are exactly those of CollectSegments
- *   over every box.
+ *   over every box;
+ * - the bounds of each box widened by 1e-6 of their diagonal, which order
+ *   the boxes along a ray: an interval of a box starts on its faces or at
+ *   the eye, inside the widened bounds, so never before the ray enters them.
+ *   NextSegment hands the ray's intervals out front to back and warps a box
+ *   only when it could hold the next one; RENDER_VIEW stops at the first
+ *   interval that shows its label, so the boxes behind it are never warped.
  *
  * Build with `tileSize` 0 to list every box in one tile covering the image
  * (no culling: every ray tries every box, as CollectSegments does).
@@ -241,6 +272,7 @@ struct FrameCage
 {
   const std::vector<RenderBox>* Boxes = nullptr;
   std::vector<BoxFromOrigin> Seen; ///< per box, seen from Eye
+  std::vector<AxisBounds> Widened; ///< per box, its bounds widened (see above)
   glm::dvec3 Eye{ 0.0 };
   glm::dmat3 PixelToDirection{ 1.0 };
   int TileSize = 1;
@@ -269,9 +301,13 @@ struct FrameCage
     this->Eye = eye;
     this->PixelToDirection = pixelToDirection;
     this->Seen.resize(boxes.size());
+    this->Widened.resize(boxes.size());
     for (std::size_t b = 0; b < boxes.size(); ++b)
     {
       this->Seen[b] = BoxFromOrigin(boxes[b].Deformed, eye);
+      const AxisBounds& bounds = boxes[b].Bounds;
+      const glm::dvec3 margin(1e-6 * glm::distance(bounds.Min, bounds.Max));
+      this->Widened[b] = { bounds.Min - margin, bounds.Max + margin };
     }
     this->TileSize = tileSize > 0 ? tileSize : std::max(width, height);
     this->TilesX = (width + this->TileSize - 1) / this->TileSize;
@@ -307,17 +343,65 @@ struct FrameCage
     return this->TileStart[tile + 1] - this->TileStart[tile];
   }
 
-  /// CollectSegments for the ray through pixel (x, y), trying its tile's boxes.
-  void CollectSegments(int x, int y, const glm::dvec3& d, std::vector<BoxSegment>& segments) const
+  /**
+   * Starts the walk of the ray through pixel (x, y), direction `d`, through
+   * the boxes of its tile whose bounds it meets (the bounds test of
+   * CollectSegments). Returns their number.
+   */
+  std::size_t StartWalk(int x, int y, const glm::dvec3& d, FrameRayScratch& scratch) const
   {
-    segments.clear();
+    scratch.Segments.clear();
+    scratch.Pending.clear();
+    scratch.PendingHead = 0;
+    scratch.Entries.clear();
+    scratch.NextEntry = 0;
     const int tile = this->TileOf(x, y);
     for (int i = this->TileStart[tile]; i < this->TileStart[tile + 1]; ++i)
     {
       const int b = this->TileBoxes[i];
-      detail::AppendSegments(*this->Boxes, b, &this->Seen[b], this->Eye, d, segments);
+      double entry = 0.0; // (the widened bounds hold the bounds: a miss is rounding)
+      if (RayHitsBounds(this->Eye, d, (*this->Boxes)[b].Bounds))
+      {
+        RayEntersBounds(this->Eye, d, this->Widened[b], entry);
+        scratch.Entries.emplace_back(entry, b);
+      }
     }
-    detail::SortSegments(segments);
+    std::sort(scratch.Entries.begin(), scratch.Entries.end());
+    return scratch.Entries.size();
+  }
+
+  /**
+   * The next interval, front to back (in CollectSegments' order), of the ray
+   * StartWalk started, appended to scratch.Segments; nullptr after the last.
+   */
+  BoxSegment* NextSegment(const glm::dvec3& d, FrameRayScratch& scratch) const
+  {
+    std::vector<BoxSegment>& pending = scratch.Pending;
+    // Warp every box the ray enters no later than the nearest pending interval.
+    while (scratch.NextEntry < scratch.Entries.size() &&
+      (scratch.PendingHead == pending.size() ||
+        !(scratch.Entries[scratch.NextEntry].first > pending[scratch.PendingHead].Segment.TEnter)))
+    {
+      const int b = scratch.Entries[scratch.NextEntry++].second;
+      const RenderBox& box = (*this->Boxes)[b];
+      WarpedSegment found[MaxWarpedSegments];
+      const int n = WarpRayThroughBox(
+        this->Seen[b], box.Rest, box.Deformed, d, 0.0, found, MaxWarpedSegments, box.EyeOutside);
+      for (int k = 0; k < n; ++k)
+      {
+        const BoxSegment segment{ found[k], b, -1 };
+        pending.insert(
+          std::upper_bound(
+            pending.begin() + scratch.PendingHead, pending.end(), segment, detail::NearerSegment),
+          segment);
+      }
+    }
+    if (scratch.PendingHead == pending.size())
+    {
+      return nullptr;
+    }
+    scratch.Segments.push_back(pending[scratch.PendingHead++]);
+    return &scratch.Segments.back();
   }
 
 private:
@@ -484,18 +568,20 @@ struct ViewRayLook
   }
 };
 
-/// The first interval, front to back, whose warped ray shows its box's
-/// label (Sec. 6); records what each interval showed in BoxSegment::Seen.
-template<typename Lookup>
+/// The first interval, front to back (`next()` hands them out, nullptr
+/// after the last), whose warped ray shows its box's label (Sec. 6);
+/// records what each interval showed in BoxSegment::Seen.
+template<typename Lookup, typename Next>
 bool ShadeSegments(const std::vector<RenderBox>& boxes,
-  std::vector<BoxSegment>& segments,
+  Next&& next,
   const Lookup& lookup,
   ViewRayLook<Lookup>& view,
   ViewSample& result)
 {
   RaySamples samples;
-  for (BoxSegment& entry : segments)
+  while (BoxSegment* handed = next())
   {
+    BoxSegment& entry = *handed;
     const RenderBox& box = boxes[entry.Box];
     const WarpedSegment& segment = entry.Segment;
     const RaySamples* seenSamples = &samples;
@@ -585,22 +671,28 @@ ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& s
 
 namespace detail
 {
-/// RENDER_VIEW (Sec. 6) of the ray o + t d once its intervals are in `segments`.
-template<typename Lookup>
+/**
+ * RENDER_VIEW (Sec. 6) of the ray o + t d whose intervals `next()` hands
+ * out front to back into `segments` (`any`: the ray may have some).
+ */
+template<typename Lookup, typename Next>
 ViewSample ShadeView(const glm::dvec3& o,
   const glm::dvec3& d,
   const std::vector<RenderBox>& boxes,
   const Lookup& lookup,
   const RenderViewSettings& settings,
-  std::vector<BoxSegment>& segments)
+  bool any,
+  Next&& next,
+  const std::vector<BoxSegment>& segments)
 {
   ViewRayLook<Lookup> view{ lookup, o, d };
   if (settings.UseLabels && !boxes.empty())
   {
     ViewSample result;
-    // (Most rays of a frame miss every box: they skip the segment walk.)
-    if (!segments.empty() &&
-      (ShadeSegments(boxes, segments, lookup, view, result) ||
+    // (Most rays of a frame miss every box: they skip the segment walk. The
+    // widened search runs after the walk handed every interval out.)
+    if (any &&
+      (ShadeSegments(boxes, next, lookup, view, result) ||
         (settings.WidenedSearch && WidenSegments(boxes, segments, lookup, result))))
     {
       return result;
@@ -634,12 +726,23 @@ ViewSample RenderView(const glm::dvec3& o,
   {
     CollectSegments(boxes, o, d, segments);
   }
-  return detail::ShadeView(o, d, boxes, lookup, settings, segments);
+  std::size_t k = 0;
+  return detail::ShadeView(
+    o,
+    d,
+    boxes,
+    lookup,
+    settings,
+    !segments.empty(),
+    [&]() { return k < segments.size() ? &segments[k++] : nullptr; },
+    segments);
 }
 
 /**
  * RenderView for the ray through pixel (x, y) of a frame: the same result,
- * with the boxes tried and warped through `cage` (FrameCage).
+ * with the boxes tried and warped through `cage` (FrameCage), front to back
+ * and only as far as needed. On return scratch.Segments holds the ray's
+ * intervals up to the one that gave the pixel (all of them when none did).
  */
 template<typename Lookup>
 ViewSample RenderView(const FrameCage& cage,
@@ -647,15 +750,20 @@ ViewSample RenderView(const FrameCage& cage,
   int y,
   const Lookup& lookup,
   const RenderViewSettings& settings,
-  std::vector<BoxSegment>& segments)
+  FrameRayScratch& scratch)
 {
   const glm::dvec3 d = cage.Direction(x, y);
-  segments.clear();
-  if (settings.UseLabels && !cage.Boxes->empty())
-  {
-    cage.CollectSegments(x, y, d, segments);
-  }
-  return detail::ShadeView(cage.Eye, d, *cage.Boxes, lookup, settings, segments);
+  const bool any =
+    settings.UseLabels && !cage.Boxes->empty() && cage.StartWalk(x, y, d, scratch) > 0;
+  return detail::ShadeView(
+    cage.Eye,
+    d,
+    *cage.Boxes,
+    lookup,
+    settings,
+    any,
+    [&]() { return cage.NextSegment(d, scratch); },
+    scratch.Segments);
 }
 
 } // namespace lfd

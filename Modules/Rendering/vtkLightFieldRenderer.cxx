@@ -150,12 +150,12 @@ struct RenderRows
   std::uint8_t* Radiance; // output, VTK row order
   std::uint8_t* Labels;
   float* Depths;
-  // The segments of a ray, reused from ray to ray by each thread.
-  mutable vtkSMPThreadLocal<std::vector<lfd::BoxSegment>> Segments;
+  // The scratch space of a ray, reused from ray to ray by each thread.
+  mutable vtkSMPThreadLocal<lfd::FrameRayScratch> Scratch;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    std::vector<lfd::BoxSegment>& segments = this->Segments.Local();
+    lfd::FrameRayScratch& scratch = this->Scratch.Local();
     for (vtkIdType j = begin; j < end; ++j)
     {
       const int y = static_cast<int>(this->Height - 1 - j); // OpenCV row
@@ -165,7 +165,7 @@ struct RenderRows
         std::uint8_t* rgb = this->Radiance + 3 * id;
         // A ray's camera z is 1, so the ray parameter of the seen point is its depth.
         const lfd::ViewSample seen =
-          lfd::RenderView(this->Cage, x, y, this->Lookup, this->Settings, segments);
+          lfd::RenderView(this->Cage, x, y, this->Lookup, this->Settings, scratch);
         this->Labels[id] = static_cast<std::uint8_t>(std::max(seen.Label, 0));
         if (seen.Label < 0 || (this->Settings.UseLabels && seen.Label == 0))
         {
