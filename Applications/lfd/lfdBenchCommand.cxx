@@ -389,7 +389,7 @@ double ReferenceTime(vtkLightField* lightField, int size, int repeat)
 /**
  * Median render time (s) of the fish bent by 30 degrees under the cage of
  * FishScene with `boxes` boxes, at `size` x `size`, with or without
- * the renderer's culling of boxes (vtkLightFieldRenderer::CageCulling).
+ * the renderer's culling of boxes (vtkLightFieldRenderer::CageAcceleration).
  */
 double CageRenderTime(vtkLightField* lightField, int boxes, int size, int repeat, bool culling)
 {
@@ -403,7 +403,7 @@ double CageRenderTime(vtkLightField* lightField, int boxes, int size, int repeat
   Run(pose.Get(), "posing the cage");
   vtkSmartPointer<vtkLightFieldRenderer> renderer = OrbitRenderer(lightField, size);
   renderer->SetCageData(pose->GetOutput());
-  renderer->SetCageCulling(culling);
+  renderer->SetCageAcceleration(culling);
   return MedianRenderTime(renderer, repeat);
 }
 
@@ -500,7 +500,7 @@ void Bench(int repeat, int size)
   CageSizeBench(fish, repeat, size, reference);
   std::printf("(median of %d renders each; vs ref: against the reference loop; vs 3: against "
               "the 3 boxes of the same table; unculled: ms/frame of the same cage with "
-              "vtkLightFieldRenderer::CageCulling off)\n",
+              "vtkLightFieldRenderer::CageAcceleration off)\n",
     repeat);
 }
 

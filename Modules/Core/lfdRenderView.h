@@ -373,8 +373,11 @@ struct FrameCage
   /**
    * The next interval, front to back (in CollectSegments' order), of the ray
    * StartWalk started, appended to scratch.Segments; nullptr after the last.
+   * Boxes for which `skip(box index)` is true are not warped: their
+   * intervals are left out.
    */
-  BoxSegment* NextSegment(const glm::dvec3& d, FrameRayScratch& scratch) const
+  template<typename Skip>
+  BoxSegment* NextSegment(const glm::dvec3& d, FrameRayScratch& scratch, Skip&& skip) const
   {
     std::vector<BoxSegment>& pending = scratch.Pending;
     // Warp every box the ray enters no later than the nearest pending interval.
@@ -383,6 +386,10 @@ struct FrameCage
         !(scratch.Entries[scratch.NextEntry].first > pending[scratch.PendingHead].Segment.TEnter)))
     {
       const int b = scratch.Entries[scratch.NextEntry++].second;
+      if (skip(b))
+      {
+        continue;
+      }
       const RenderBox& box = (*this->Boxes)[b];
       WarpedSegment found[MaxWarpedSegments];
       const int n = WarpRayThroughBox(
@@ -568,7 +575,7 @@ struct ViewRayLook
   }
 };
 
-/// The first interval, front to back (`next()` hands them out, nullptr
+/// The first interval, front to back (`next(view)` hands them out, nullptr
 /// after the last), whose warped ray shows its box's label (Sec. 6);
 /// records what each interval showed in BoxSegment::Seen.
 template<typename Lookup, typename Next>
@@ -579,7 +586,7 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
   ViewSample& result)
 {
   RaySamples samples;
-  while (BoxSegment* handed = next())
+  while (BoxSegment* handed = next(view))
   {
     BoxSegment& entry = *handed;
     const RenderBox& box = boxes[entry.Box];
@@ -672,8 +679,8 @@ ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& s
 namespace detail
 {
 /**
- * RENDER_VIEW (Sec. 6) of the ray o + t d whose intervals `next()` hands
- * out front to back into `segments` (`any`: the ray may have some).
+ * RENDER_VIEW (Sec. 6) of the ray o + t d whose intervals `next(view)`
+ * hands out front to back into `segments` (`any`: the ray may have some).
  */
 template<typename Lookup, typename Next>
 ViewSample ShadeView(const glm::dvec3& o,
@@ -734,7 +741,7 @@ ViewSample RenderView(const glm::dvec3& o,
     lookup,
     settings,
     !segments.empty(),
-    [&]() { return k < segments.size() ? &segments[k++] : nullptr; },
+    [&](detail::ViewRayLook<Lookup>&) { return k < segments.size() ? &segments[k++] : nullptr; },
     segments);
 }
 
@@ -742,7 +749,9 @@ ViewSample RenderView(const glm::dvec3& o,
  * RenderView for the ray through pixel (x, y) of a frame: the same result,
  * with the boxes tried and warped through `cage` (FrameCage), front to back
  * and only as far as needed. On return scratch.Segments holds the ray's
- * intervals up to the one that gave the pixel (all of them when none did).
+ * intervals up to the one that gave the pixel (all of them when none did),
+ * but those of boxes that did not move and whose label the view ray does not
+ * show.
  */
 template<typename Lookup>
 ViewSample RenderView(const FrameCage& cage,
@@ -762,7 +771,19 @@ ViewSample RenderView(const FrameCage& cage,
     lookup,
     settings,
     any,
-    [&]() { return cage.NextSegment(d, scratch); },
+    [&](detail::ViewRayLook<Lookup>& view)
+    {
+      // A box that did not move shows the view ray's own label (ShadeSegments):
+      // when that is not its label, none of its intervals can give the pixel
+      // (and the widened search only tries moved boxes), so it is not warped.
+      return cage.NextSegment(d,
+        scratch,
+        [&](int b)
+        {
+          const RenderBox& box = (*cage.Boxes)[b];
+          return !box.Moved && view.Look() != box.Label;
+        });
+    },
     scratch.Segments);
 }
 

@@ -144,6 +144,7 @@ struct RenderRows
   const lfd::SamplerLookup& Lookup;
   const lfd::FrameCage& Cage; // the eye, its pixels' rays and the boxes they may meet
   const lfd::RenderViewSettings& Settings;
+  bool Accelerated; // through Cage, or every ray through every box
   int Width;
   int Height;
   std::uint8_t Background[3];
@@ -164,8 +165,14 @@ struct RenderRows
         const vtkIdType id = j * this->Width + x;
         std::uint8_t* rgb = this->Radiance + 3 * id;
         // A ray's camera z is 1, so the ray parameter of the seen point is its depth.
-        const lfd::ViewSample seen =
-          lfd::RenderView(this->Cage, x, y, this->Lookup, this->Settings, scratch);
+        const lfd::ViewSample seen = this->Accelerated
+          ? lfd::RenderView(this->Cage, x, y, this->Lookup, this->Settings, scratch)
+          : lfd::RenderView(this->Cage.Eye,
+              this->Cage.Direction(x, y),
+              *this->Cage.Boxes,
+              this->Lookup,
+              this->Settings,
+              scratch.Segments);
         this->Labels[id] = static_cast<std::uint8_t>(std::max(seen.Label, 0));
         if (seen.Label < 0 || (this->Settings.UseLabels && seen.Label == 0))
         {
@@ -455,11 +462,19 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     eye.PixelToDirection(),
     this->Width,
     this->Height,
-    this->CageCulling ? lfd::FrameCage::DefaultTileSize : 0);
+    lfd::FrameCage::DefaultTileSize);
   const lfd::SamplerLookup lookup{ sampler, this->WidenedSearch, eye.Forward() };
-  RenderRows functor{
-    lookup, cage, settings, this->Width, this->Height, {}, nullptr, nullptr, nullptr, {}
-  };
+  RenderRows functor{ lookup,
+    cage,
+    settings,
+    this->CageAcceleration,
+    this->Width,
+    this->Height,
+    {},
+    nullptr,
+    nullptr,
+    nullptr,
+    {} };
   for (int c = 0; c < 3; ++c)
   {
     functor.Background[c] =
@@ -566,7 +581,7 @@ void vtkLightFieldRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Subdivision: " << this->Subdivision << (this->Subdivision ? "" : " (auto)")
      << "\n";
   os << indent << "SubdivisionTolerance: " << this->SubdivisionTolerance << "\n";
-  os << indent << "CageCulling: " << (this->CageCulling ? "On" : "Off") << "\n";
+  os << indent << "CageAcceleration: " << (this->CageAcceleration ? "On" : "Off") << "\n";
   os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";
   os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
   os << indent << "ExcludedViews:";

@@ -1,8 +1,11 @@
-"""Per-frame culling of the cage's boxes (vtkLightFieldRenderer::CageCulling,
-lfd::FrameCage): the fish bent under a cage of 100 slabs, each labelled
-by the part holding its centre, renders the same pixels, labels and depths
-with the culling on and off, from a camera outside the cage and from one
-inside it (boxes behind and around the eye have no bounded projection)."""
+"""Per-frame acceleration of the cage (vtkLightFieldRenderer::CageAcceleration,
+lfd::FrameCage: culling tiles, front-to-back walk, boxes at rest skipped
+where the view ray shows another label) against every ray tested through
+every box: a cage of 100 slabs over the fish, each labelled by the part
+holding its centre, bent as a whole and with one shared corner dragged (98
+boxes at rest), renders the same pixels, labels and depths with the
+acceleration on and off, from a camera outside the cage and from one inside
+it (boxes behind and around the eye have no bounded projection)."""
 
 import lfdtesting as t
 import numpy as np
@@ -46,15 +49,26 @@ cage = bend.GetOutput()
 why = cage.Validate(fish_lf)
 t.check(why == "", "the bent 100-slab cage validates", why or "ok")
 
+# One corner shared by slabs 49 and 50 dragged by a tenth of the fish's length.
+dragged = lfd.vtkDeformationCage()
+dragged.DeepCopy(slabs)
+corner = dragged.GetCell(50).GetPointId(6)
+position = list(dragged.GetPoint(corner))
+position[(axis + 1) % 3] += 0.1 * (bounds[2 * axis + 1] - bounds[2 * axis])
+dragged.GetPoints().SetPoint(corner, position)
+dragged.GetPoints().Modified()
+why = dragged.Validate(fish_lf)
+t.check(why == "", "the dragged 100-slab cage validates", why or "ok")
 
-def render(camera, culling):
+
+def render(cage, camera, accelerated):
     renderer = lfd.vtkLightFieldRenderer()
     renderer.SetInputData(fish_lf)
     renderer.SetCageData(cage)
     renderer.SetCamera(camera)
     renderer.SetWidth(SIZE)
     renderer.SetHeight(SIZE)
-    renderer.SetCageCulling(culling)
+    renderer.SetCageAcceleration(accelerated)
     renderer.Update()
     image = renderer.GetOutput()
     return [t.image_array(image, name) for name in ("Radiance", "Label", "Depth")]
@@ -73,12 +87,16 @@ inside.SetPosition(eye)
 inside.SetFocalPoint(focal)
 inside.SetViewUp(*((0, 1, 0) if axis != 1 else (1, 0, 0)))
 inside.SetViewAngle(60.0)
-for name, camera, expected_parts in (("outside", outside, 4899), ("inside", inside, 9110)):
-    culled = render(camera, True)
-    unculled = render(camera, False)
-    for array, a, b in zip(("Radiance", "Label", "Depth"), culled, unculled):
-        t.check(np.array_equal(a, b), f"{name} camera: {array} identical with and without culling",
+for name, scene, camera, expected_parts in (("bent, outside", cage, outside, 4899),
+                                            ("bent, inside", cage, inside, 9110),
+                                            ("dragged, outside", dragged, outside, 5082),
+                                            ("dragged, inside", dragged, inside, 7865)):
+    fast = render(scene, camera, True)
+    reference = render(scene, camera, False)
+    for array, a, b in zip(("Radiance", "Label", "Depth"), fast, reference):
+        t.check(np.array_equal(a, b),
+                f"{name} camera: {array} identical with and without the acceleration",
                 int(np.count_nonzero(a != b)))
-    labelled = int(np.count_nonzero(culled[1]))
+    labelled = int(np.count_nonzero(fast[1]))
     t.check(labelled == expected_parts, f"{name} camera: pixels showing a part", labelled)
 t.finish()
