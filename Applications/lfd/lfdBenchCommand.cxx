@@ -389,9 +389,9 @@ double ReferenceTime(vtkLightField* lightField, int size, int repeat)
 /**
  * Median render time (s) of the fish bent by 30 degrees under the cage of
  * FishScene with `boxes` boxes, at `size` x `size`, with or without
- * the renderer's culling of boxes (vtkLightFieldRenderer::CageAcceleration).
+ * the renderer's per-frame acceleration (vtkLightFieldRenderer::CageAcceleration).
  */
-double CageRenderTime(vtkLightField* lightField, int boxes, int size, int repeat, bool culling)
+double CageRenderTime(vtkLightField* lightField, int boxes, int size, int repeat, bool accelerated)
 {
   auto logic = FishScene(lightField, boxes);
   vtkNew<vtkCagePoseFilter> pose;
@@ -403,14 +403,14 @@ double CageRenderTime(vtkLightField* lightField, int boxes, int size, int repeat
   Run(pose.Get(), "posing the cage");
   vtkSmartPointer<vtkLightFieldRenderer> renderer = OrbitRenderer(lightField, size);
   renderer->SetCageData(pose->GetOutput());
-  renderer->SetCageAcceleration(culling);
+  renderer->SetCageAcceleration(accelerated);
   return MedianRenderTime(renderer, repeat);
 }
 
 /**
  * The cost against cage size: the fish bent under 1, 3 (its parts), 10,
  * 30 and 100 boxes (slabs labelled by part), against the 3-box figure and
- * the reference loop; the last column without the culling of boxes.
+ * the reference loop; the last column without the per-frame acceleration.
  */
 void CageSizeBench(vtkLightField* fish, int repeat, int size, double reference)
 {
@@ -421,7 +421,7 @@ void CageSizeBench(vtkLightField* fish, int repeat, int size, double reference)
     "rays/s",
     "vs 3",
     "vs ref",
-    "unculled");
+    "no accel");
   std::vector<std::pair<int, double>> rows;
   double three = 0.0;
   for (int boxes : { 1, 3, 10, 30, 100 })
@@ -432,7 +432,7 @@ void CageSizeBench(vtkLightField* fish, int repeat, int size, double reference)
   }
   for (const auto& [boxes, time] : rows)
   {
-    const double unculled = CageRenderTime(fish, boxes, size, repeat, false);
+    const double plain = CageRenderTime(fish, boxes, size, repeat, false);
     const std::string name = std::to_string(boxes) + (boxes == 1 ? " box" : " boxes") +
       (boxes == 3      ? " (its parts)"
           : boxes == 1 ? " (one slab)"
@@ -444,7 +444,7 @@ void CageSizeBench(vtkLightField* fish, int repeat, int size, double reference)
       size * size / time,
       time / three,
       time / reference,
-      1000.0 * unculled);
+      1000.0 * plain);
   }
 }
 
@@ -499,7 +499,7 @@ void Bench(int repeat, int size)
   }
   CageSizeBench(fish, repeat, size, reference);
   std::printf("(median of %d renders each; vs ref: against the reference loop; vs 3: against "
-              "the 3 boxes of the same table; unculled: ms/frame of the same cage with "
+              "the 3 boxes of the same table; no accel: ms/frame of the same cage with "
               "vtkLightFieldRenderer::CageAcceleration off)\n",
     repeat);
 }
