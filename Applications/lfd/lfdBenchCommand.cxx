@@ -1,5 +1,6 @@
-// `lfd bench`: rays/s and ms/frame of the renderer; with --studio, the
-// frame times of the editing view (vtkLightFieldEditor) during a drag.
+// `lfd bench`: rays/s and ms/frame of the renderer, against a reference loop
+// and against cage size; with --studio, the frame times of the editing view
+// (vtkLightFieldEditor) during a drag.
 #include "lfdCommands.h"
 
 #include "vtkCagePoseFilter.h"
@@ -22,10 +23,13 @@
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkTimerLog.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -52,6 +56,20 @@ double MedianRenderTime(vtkLightFieldRenderer* renderer, int repeat)
   return times[times.size() / 2];
 }
 
+/// A renderer of `lightField` at `size` x `size` from the bench's orbit camera.
+vtkSmartPointer<vtkLightFieldRenderer> OrbitRenderer(vtkLightField* lightField, int size)
+{
+  vtkCameraRig* rig = lightField->GetRig();
+  vtkNew<vtkCamera> camera;
+  vtkLightFieldSceneLogic::OrbitCamera(rig, 0.37, 1.2, 0.0, rig->GetViewAngle(0), camera);
+  auto renderer = vtkSmartPointer<vtkLightFieldRenderer>::New();
+  renderer->SetInputData(lightField);
+  renderer->SetCamera(camera);
+  renderer->SetWidth(size);
+  renderer->SetHeight(size);
+  return renderer;
+}
+
 /**
  * Median render times (s) of `object`'s light field at `size` x `size` from
  * an orbit camera, at rest and deformed: the fish swimming (3 boxes,
@@ -62,14 +80,7 @@ std::pair<double, double> RenderTimes(vtkLightField* lightField,
   int size,
   int repeat)
 {
-  vtkCameraRig* rig = lightField->GetRig();
-  vtkNew<vtkCamera> camera;
-  vtkLightFieldSceneLogic::OrbitCamera(rig, 0.37, 1.2, 0.0, rig->GetViewAngle(0), camera);
-  vtkNew<vtkLightFieldRenderer> renderer;
-  renderer->SetInputData(lightField);
-  renderer->SetCamera(camera);
-  renderer->SetWidth(size);
-  renderer->SetHeight(size);
+  vtkSmartPointer<vtkLightFieldRenderer> renderer = OrbitRenderer(lightField, size);
   const double rest = MedianRenderTime(renderer, repeat);
 
   vtkNew<vtkProceduralObjectSource> source;
@@ -93,44 +104,6 @@ std::pair<double, double> RenderTimes(vtkLightField* lightField,
   Run(pose.Get(), "posing the cage");
   renderer->SetCageData(pose->GetOutput());
   return { rest, MedianRenderTime(renderer, repeat) };
-}
-
-void Bench(int repeat, int size)
-{
-  std::printf("threads: %d (vtkSMPTools, %s backend)\n",
-    vtkSMPTools::GetEstimatedNumberOfThreads(),
-    vtkSMPTools::GetBackend());
-  std::printf("%-46s %8s %10s %12s %8s\n",
-    "scene (light fields: 120x3 views of 256^2)",
-    "pixels",
-    "ms/frame",
-    "rays/s",
-    "vs rest");
-  for (const char* object : { "fish", "figure" })
-  {
-    SynthOptions options;
-    options.Object = object;
-    options.NoDepth = true;
-    auto lightField = Synthesize(options);
-    const auto [rest, deformed] = RenderTimes(lightField, object, size, repeat);
-    const bool fish = std::string(object) == "fish";
-    const std::string restName = std::string("undeformed ") + object;
-    const std::string deformedName =
-      fish ? "deformed fish (swim, 3 boxes)" : "deformed figure (twist 45, 3 boxes)";
-    std::printf("%-46s %8d %10.2f %12.3g %8s\n",
-      restName.c_str(),
-      size * size,
-      1000.0 * rest,
-      size * size / rest,
-      "");
-    std::printf("%-46s %8d %10.2f %12.3g %7.2fx\n",
-      deformedName.c_str(),
-      size * size,
-      1000.0 * deformed,
-      size * size / deformed,
-      deformed / rest);
-  }
-  std::printf("(median of %d renders each)\n", repeat);
 }
 
 /// What one recorded drag in the editor measured.
@@ -273,7 +246,7 @@ DragFigures RecordedDrag(vtkLightFieldSceneLogic* logic, int moves)
 
 /**
  * The fish's scene for the editor: its light field, the cage of its 3 parts
- * (`boxes` 3) or `boxes` slabs along the same axis, each labelled by the
+ * (`boxes` 3) or `boxes` slabs along its longest axis, each labelled by the
  * part holding its centre, and a camera on the ring.
  */
 vtkSmartPointer<vtkLightFieldSceneLogic> FishScene(vtkLightField* lightField, int boxes)
@@ -287,7 +260,7 @@ vtkSmartPointer<vtkLightFieldSceneLogic> FishScene(vtkLightField* lightField, in
   {
     Fail("bench --studio: the fish's cage was refused");
   }
-  if (boxes > 3)
+  if (boxes != 3)
   {
     vtkNew<vtkDeformationCage> parts;
     parts->DeepCopy(logic->GetCage());
@@ -330,6 +303,206 @@ vtkSmartPointer<vtkLightFieldSceneLogic> FishScene(vtkLightField* lightField, in
   logic->SetCamera(camera);
   logic->ClearUndo();
   return logic;
+}
+
+/**
+ * The reference loop (issue 14): for every pixel of a size x size frame, the
+ * 16 texel reads of one light-field lookup (2 x 2 bilinear texels in each of
+ * 4 views, as lfd::LightFieldSampler::Gather reads them) and their weighted
+ * blend, without any geometry (no cylinder, projection or label), rows in
+ * parallel as vtkLightFieldRenderer's. The floor a lookup cannot go under:
+ * the renderer's figures print as ratios to its time, taken in the same run.
+ */
+struct ReferenceLoop
+{
+  const std::uint8_t* Radiance; // the views' RGB pixels, view after view
+  int Views;
+  int Width;
+  int Height;
+  int Size;
+  std::uint8_t* Out; // Size x Size RGB
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    // Two neighbouring views in each of two rows, as a lookup between rows.
+    const int views[4] = { 0, 1, this->Views / 2, this->Views / 2 + 1 };
+    const double scale = static_cast<double>(this->Width - 1) / this->Size;
+    for (vtkIdType j = begin; j < end; ++j)
+    {
+      const double v = (static_cast<double>(j) + 0.5) * scale;
+      const int y0 = static_cast<int>(v);
+      const double ay = v - y0;
+      for (int i = 0; i < this->Size; ++i)
+      {
+        const double u = (i + 0.5) * scale;
+        const int x0 = static_cast<int>(u);
+        const double ax = u - x0;
+        double sum[3] = { 0.0, 0.0, 0.0 };
+        for (int view : views)
+        {
+          for (int corner = 0; corner < 4; ++corner)
+          {
+            const int px = x0 + (corner & 1);
+            const int py = std::min(y0 + (corner >> 1), this->Height - 1);
+            const double weight =
+              0.25 * ((corner & 1) ? ax : 1.0 - ax) * ((corner >> 1) ? ay : 1.0 - ay);
+            const std::uint8_t* rgb = this->Radiance +
+              3 * ((static_cast<std::size_t>(view) * this->Height + py) * this->Width + px);
+            for (int c = 0; c < 3; ++c)
+            {
+              sum[c] += weight * rgb[c];
+            }
+          }
+        }
+        std::uint8_t* out = this->Out + 3 * (j * this->Size + i);
+        for (int c = 0; c < 3; ++c)
+        {
+          out[c] = static_cast<std::uint8_t>(std::lround(sum[c]));
+        }
+      }
+    }
+  }
+};
+
+/// Median time (s) of `repeat` runs of the reference loop over `lightField`, after a warm-up.
+double ReferenceTime(vtkLightField* lightField, int size, int repeat)
+{
+  auto* radiance = vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::COAXIAL));
+  std::vector<std::uint8_t> out(3 * static_cast<std::size_t>(size) * size);
+  const ReferenceLoop loop{ radiance->GetPointer(0),
+    lightField->GetNumberOfViews(),
+    lightField->GetWidth(),
+    lightField->GetHeight(),
+    size,
+    out.data() };
+  vtkSMPTools::For(0, size, loop);
+  std::vector<double> times;
+  for (int i = 0; i < repeat; ++i)
+  {
+    const double start = vtkTimerLog::GetUniversalTime();
+    vtkSMPTools::For(0, size, loop);
+    times.push_back(Seconds(start));
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+/**
+ * Median render time (s) of the fish bent by 30 degrees under the cage of
+ * FishScene with `boxes` boxes, at `size` x `size`, with or without
+ * the renderer's per-frame acceleration (vtkLightFieldRenderer::CageAcceleration).
+ */
+double CageRenderTime(vtkLightField* lightField, int boxes, int size, int repeat, bool accelerated)
+{
+  auto logic = FishScene(lightField, boxes);
+  vtkNew<vtkCagePoseFilter> pose;
+  pose->SetInputData(logic->GetCage());
+  // (A swim folds slabs as thin as 100 along the fish; a bend does not.)
+  pose->SetModeToBend();
+  pose->SetAngle(30.0);
+  pose->SetTurnAxis(0.0, 0.0, 1.0);
+  Run(pose.Get(), "posing the cage");
+  vtkSmartPointer<vtkLightFieldRenderer> renderer = OrbitRenderer(lightField, size);
+  renderer->SetCageData(pose->GetOutput());
+  renderer->SetCageAcceleration(accelerated);
+  return MedianRenderTime(renderer, repeat);
+}
+
+/**
+ * The cost against cage size: the fish bent under 1, 3 (its parts), 10,
+ * 30 and 100 boxes (slabs labelled by part), against the 3-box figure and
+ * the reference loop; the last column without the per-frame acceleration.
+ */
+void CageSizeBench(vtkLightField* fish, int repeat, int size, double reference)
+{
+  std::printf("%-46s %8s %10s %12s %8s %8s %10s\n",
+    "deformed fish (bend 30), cage size",
+    "pixels",
+    "ms/frame",
+    "rays/s",
+    "vs 3",
+    "vs ref",
+    "no accel");
+  std::vector<std::pair<int, double>> rows;
+  double three = 0.0;
+  for (int boxes : { 1, 3, 10, 30, 100 })
+  {
+    const double time = CageRenderTime(fish, boxes, size, repeat, true);
+    three = boxes == 3 ? time : three;
+    rows.emplace_back(boxes, time);
+  }
+  for (const auto& [boxes, time] : rows)
+  {
+    const double plain = CageRenderTime(fish, boxes, size, repeat, false);
+    const std::string name = std::to_string(boxes) + (boxes == 1 ? " box" : " boxes") +
+      (boxes == 3      ? " (its parts)"
+          : boxes == 1 ? " (one slab)"
+                       : " (slabs)");
+    std::printf("%-46s %8d %10.2f %12.3g %7.2fx %7.2fx %10.2f\n",
+      name.c_str(),
+      size * size,
+      1000.0 * time,
+      size * size / time,
+      time / three,
+      time / reference,
+      1000.0 * plain);
+  }
+}
+
+void Bench(int repeat, int size)
+{
+  std::printf("threads: %d (vtkSMPTools, %s backend)\n",
+    vtkSMPTools::GetEstimatedNumberOfThreads(),
+    vtkSMPTools::GetBackend());
+  SynthOptions fishOptions;
+  fishOptions.NoDepth = true;
+  auto fish = Synthesize(fishOptions);
+  const double reference = ReferenceTime(fish, size, repeat);
+  std::printf("%-46s %8s %10s %12s %8s %8s\n",
+    "scene (light fields: 120x3 views of 256^2)",
+    "pixels",
+    "ms/frame",
+    "rays/s",
+    "vs rest",
+    "vs ref");
+  std::printf("%-46s %8d %10.2f %12.3g %8s %7.2fx\n",
+    "reference loop (16 texel reads, no geometry)",
+    size * size,
+    1000.0 * reference,
+    size * size / reference,
+    "",
+    1.0);
+  for (const char* object : { "fish", "figure" })
+  {
+    const bool isFish = std::string(object) == "fish";
+    SynthOptions options;
+    options.Object = object;
+    options.NoDepth = true;
+    auto lightField = isFish ? fish : Synthesize(options);
+    const auto [rest, deformed] = RenderTimes(lightField, object, size, repeat);
+    const std::string restName = std::string("undeformed ") + object;
+    const std::string deformedName =
+      isFish ? "deformed fish (swim, 3 boxes)" : "deformed figure (twist 45, 3 boxes)";
+    std::printf("%-46s %8d %10.2f %12.3g %8s %7.2fx\n",
+      restName.c_str(),
+      size * size,
+      1000.0 * rest,
+      size * size / rest,
+      "",
+      rest / reference);
+    std::printf("%-46s %8d %10.2f %12.3g %7.2fx %7.2fx\n",
+      deformedName.c_str(),
+      size * size,
+      1000.0 * deformed,
+      size * size / deformed,
+      deformed / rest,
+      deformed / reference);
+  }
+  CageSizeBench(fish, repeat, size, reference);
+  std::printf("(median of %d renders each; vs ref: against the reference loop; vs 3: against "
+              "the 3 boxes of the same table; no accel: ms/frame of the same cage with "
+              "vtkLightFieldRenderer::CageAcceleration off)\n",
+    repeat);
 }
 
 /// `lfd bench --studio`: the editing view's frame times during a recorded drag.
@@ -404,7 +577,10 @@ void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
   vtkNew<vtkLightFieldCapture> captureLimits;
   auto* benchCommand = app.add_subcommand("bench",
     "print rays/s and ms/frame of the renderer on fixed scenes (median of repeated renders; "
-    "writes nothing); needs an X display (xvfb-run -a)");
+    "writes nothing), each also as a ratio to a reference loop (16 texel reads per pixel, no "
+    "geometry) timed in the same run, and the cost against cage size (the fish bent under 1 "
+    "to 100 boxes, with and without the renderer's cage acceleration); needs an X display "
+    "(xvfb-run -a)");
   numbers.Add(benchCommand, "--repeat", *repeat, 1, 1000, "renders per scene");
   numbers.Add(
     benchCommand, "--size", *size, 1, captureLimits->GetWidthMaxValue(), "image width and height");

@@ -117,8 +117,12 @@ inline void PlaceEye(std::vector<RenderBox>& boxes, const glm::dvec3& eye)
   }
 }
 
-/// Slab test of the half-line o + t d (t >= 0) against axis-aligned bounds.
-inline bool RayHitsBounds(const glm::dvec3& o, const glm::dvec3& d, const AxisBounds& bounds)
+/// Slab test of the half-line o + t d (t >= 0) against axis-aligned bounds;
+/// `tEnter` is where the half-line enters them (0 when o is inside).
+inline bool RayEntersBounds(const glm::dvec3& o,
+  const glm::dvec3& d,
+  const AxisBounds& bounds,
+  double& tEnter)
 {
   double t0 = 0.0;
   double t1 = std::numeric_limits<double>::infinity();
@@ -145,7 +149,15 @@ inline bool RayHitsBounds(const glm::dvec3& o, const glm::dvec3& d, const AxisBo
       return false;
     }
   }
+  tEnter = t0;
   return true;
+}
+
+/// Slab test of the half-line o + t d (t >= 0) against axis-aligned bounds.
+inline bool RayHitsBounds(const glm::dvec3& o, const glm::dvec3& d, const AxisBounds& bounds)
+{
+  double tEnter;
+  return RayEntersBounds(o, d, bounds, tEnter);
 }
 
 /// An interval of a view ray inside box `Box`, and the label the light
@@ -156,6 +168,48 @@ struct BoxSegment
   int Box = 0;
   int Seen = -1;
 };
+
+namespace detail
+{
+/// Appends the intervals of the ray o + t d (t >= 0) inside box `b` to
+/// `segments`; `seen` is the box seen from o, or null to build it here.
+inline void AppendSegments(const std::vector<RenderBox>& boxes,
+  int b,
+  const BoxFromOrigin* seen,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  std::vector<BoxSegment>& segments)
+{
+  const RenderBox& box = boxes[b];
+  if (!RayHitsBounds(o, d, box.Bounds))
+  {
+    return;
+  }
+  WarpedSegment found[MaxWarpedSegments];
+  const int n = seen
+    ? WarpRayThroughBox(
+        *seen, box.Rest, box.Deformed, d, 0.0, found, MaxWarpedSegments, box.EyeOutside)
+    : WarpRayThroughBox(
+        box.Rest, box.Deformed, o, d, 0.0, found, MaxWarpedSegments, box.EyeOutside);
+  for (int k = 0; k < n; ++k)
+  {
+    segments.push_back({ found[k], b, -1 });
+  }
+}
+
+/// The order of a ray's intervals: by entry parameter, then by box index,
+/// so that it does not depend on the sort or on the order boxes were tried.
+inline bool NearerSegment(const BoxSegment& a, const BoxSegment& b)
+{
+  return a.Segment.TEnter < b.Segment.TEnter ||
+    (a.Segment.TEnter == b.Segment.TEnter && a.Box < b.Box);
+}
+
+inline void SortSegments(std::vector<BoxSegment>& segments)
+{
+  std::sort(segments.begin(), segments.end(), NearerSegment);
+}
+} // namespace detail
 
 /**
  * Every interval of the ray o + t d (t >= 0) inside the deformed boxes,
@@ -170,27 +224,254 @@ inline void CollectSegments(const std::vector<RenderBox>& boxes,
   segments.clear();
   for (std::size_t b = 0; b < boxes.size(); ++b)
   {
-    const RenderBox& box = boxes[b];
-    if (!RayHitsBounds(o, d, box.Bounds))
+    detail::AppendSegments(boxes, static_cast<int>(b), nullptr, o, d, segments);
+  }
+  detail::SortSegments(segments);
+}
+
+/// One thread's scratch space for the rays of a frame (FrameCage::NextSegment),
+/// reused from ray to ray: a ray allocates nothing once it has grown.
+struct FrameRayScratch
+{
+  std::vector<BoxSegment> Segments; ///< the ray's intervals handed out, front to back
+  std::vector<BoxSegment> Pending;  ///< warped, not handed out yet: sorted from PendingHead
+  std::size_t PendingHead = 0;
+  /// The boxes still to warp: where the ray enters their widened bounds, and
+  /// their index; sorted from NextEntry.
+  std::vector<std::pair<double, int>> Entries;
+  std::size_t NextEntry = 0;
+};
+
+/**
+ * The cage as the rays of one frame meet it. Every ray of a frame leaves the
+ * same eye through a pixel (x, y) of the image, in the direction
+ * PixelToDirection (x, y, 1), so what does not depend on the pixel is
+ * computed once per frame instead of once per ray and box:
+ *
+ * - each box seen from the eye (BoxFromOrigin: the warp's per-face terms);
+ * - a culling structure: the image is cut into square tiles and each box is
+ *   listed in the tiles its screen-space bounding rectangle overlaps (the
+ *   projection of its bounds' 8 corners, one pixel wider on every side; a
+ *   box with a corner at or behind the eye plane has no bounded projection
+ *   and goes into every tile). A ray then tries only its tile's boxes. A ray
+ *   that meets a box's bounds passes through the bounds' projection, so
+ *   every box that the ray's bounds test would let through is in its tile:
+ *   the intervals, and so the pixels, are exactly those of CollectSegments
+ *   over every box;
+ * - the bounds of each box widened by 1e-6 of their diagonal, which order
+ *   the boxes along a ray: an interval of a box starts on its faces or at
+ *   the eye, inside the widened bounds, so never before the ray enters them.
+ *   NextSegment hands the ray's intervals out front to back and warps a box
+ *   only when it could hold the next one; RENDER_VIEW stops at the first
+ *   interval that shows its label, so the boxes behind it are never warped.
+ *
+ * Build with `tileSize` 0 to list every box in one tile covering the image
+ * (no culling: every ray tries every box, as CollectSegments does).
+ */
+struct FrameCage
+{
+  const std::vector<RenderBox>* Boxes = nullptr;
+  std::vector<BoxFromOrigin> Seen; ///< per box, seen from Eye
+  std::vector<AxisBounds> Widened; ///< per box, its bounds widened (see above)
+  glm::dvec3 Eye{ 0.0 };
+  glm::dmat3 PixelToDirection{ 1.0 };
+  int TileSize = 1;
+  int TilesX = 1;
+  int TilesY = 1;
+  std::vector<int> TileStart; ///< tile i lists TileBoxes[TileStart[i], TileStart[i + 1])
+  std::vector<int> TileBoxes; ///< box indices, ascending within a tile
+
+  /// Tile side (pixels) that the renderer uses: small enough that a tile of
+  /// the fish's 100-slab cage at 512x512 lists a few boxes (about 3.5 per
+  /// ray over the frame), large enough that binning a cage of the sub-box
+  /// budget (4096) stays a small part of a frame. Not tuned further.
+  static constexpr int DefaultTileSize = 16;
+
+  /**
+   * The frame of a width x height image seen from `eye` through
+   * `pixelToDirection` (PlaceEye() called for this eye). `boxes` must
+   * outlive the frame cage.
+   */
+  void Build(const std::vector<RenderBox>& boxes,
+    const glm::dvec3& eye,
+    const glm::dmat3& pixelToDirection,
+    int width,
+    int height,
+    int tileSize)
+  {
+    this->Boxes = &boxes;
+    this->Eye = eye;
+    this->PixelToDirection = pixelToDirection;
+    this->Seen.resize(boxes.size());
+    this->Widened.resize(boxes.size());
+    for (std::size_t b = 0; b < boxes.size(); ++b)
     {
-      continue;
+      this->Seen[b] = BoxFromOrigin(boxes[b].Deformed, eye);
+      const AxisBounds& bounds = boxes[b].Bounds;
+      const glm::dvec3 margin(1e-6 * glm::distance(bounds.Min, bounds.Max));
+      this->Widened[b] = { bounds.Min - margin, bounds.Max + margin };
     }
-    WarpedSegment found[MaxWarpedSegments];
-    const int n = WarpRayThroughBox(
-      box.Rest, box.Deformed, o, d, 0.0, found, MaxWarpedSegments, box.EyeOutside);
-    for (int k = 0; k < n; ++k)
+    this->TileSize = tileSize > 0 ? tileSize : std::max(width, height);
+    this->TilesX = (width + this->TileSize - 1) / this->TileSize;
+    this->TilesY = (height + this->TileSize - 1) / this->TileSize;
+    // Tile ranges x0, y0, x1, y1 (inclusive); without culling, the one tile.
+    std::vector<glm::ivec4> rects(boxes.size(), glm::ivec4(0));
+    for (std::size_t b = 0; b < boxes.size() && tileSize > 0; ++b)
     {
-      segments.push_back({ found[k], static_cast<int>(b), -1 });
+      rects[b] = this->TileRange(boxes[b].Bounds, width, height);
+    }
+    // Two passes (count, then fill) list each tile's boxes in ascending order.
+    this->TileStart.assign(static_cast<std::size_t>(this->TilesX) * this->TilesY + 1, 0);
+    this->ForEachBinning(rects, [this](int tile, int) { ++this->TileStart[tile + 1]; });
+    for (std::size_t i = 1; i < this->TileStart.size(); ++i)
+    {
+      this->TileStart[i] += this->TileStart[i - 1];
+    }
+    this->TileBoxes.resize(this->TileStart.back());
+    std::vector<int> next(this->TileStart.begin(), this->TileStart.end() - 1);
+    this->ForEachBinning(rects, [&](int tile, int b) { this->TileBoxes[next[tile]++] = b; });
+  }
+
+  /// The direction of the ray through pixel (x, y) (OpenCV pixel coordinates).
+  glm::dvec3 Direction(int x, int y) const
+  {
+    return this->PixelToDirection * glm::dvec3(x, static_cast<double>(y), 1.0);
+  }
+
+  /// Number of boxes the ray through pixel (x, y) tries.
+  int CountCandidates(int x, int y) const
+  {
+    const int tile = this->TileOf(x, y);
+    return this->TileStart[tile + 1] - this->TileStart[tile];
+  }
+
+  /**
+   * Starts the walk of the ray through pixel (x, y), direction `d`, through
+   * the boxes of its tile whose bounds it meets (the bounds test of
+   * CollectSegments). Returns their number.
+   */
+  std::size_t StartWalk(int x, int y, const glm::dvec3& d, FrameRayScratch& scratch) const
+  {
+    scratch.Segments.clear();
+    scratch.Pending.clear();
+    scratch.PendingHead = 0;
+    scratch.Entries.clear();
+    scratch.NextEntry = 0;
+    const int tile = this->TileOf(x, y);
+    for (int i = this->TileStart[tile]; i < this->TileStart[tile + 1]; ++i)
+    {
+      const int b = this->TileBoxes[i];
+      double entry = 0.0; // (the widened bounds hold the bounds: a miss is rounding)
+      if (RayHitsBounds(this->Eye, d, (*this->Boxes)[b].Bounds))
+      {
+        RayEntersBounds(this->Eye, d, this->Widened[b], entry);
+        scratch.Entries.emplace_back(entry, b);
+      }
+    }
+    std::sort(scratch.Entries.begin(), scratch.Entries.end());
+    return scratch.Entries.size();
+  }
+
+  /**
+   * The next interval, front to back (in CollectSegments' order), of the ray
+   * StartWalk started, appended to scratch.Segments; nullptr after the last.
+   * Boxes for which `skip(box index)` is true are not warped: their
+   * intervals are left out.
+   */
+  template<typename Skip>
+  BoxSegment* NextSegment(const glm::dvec3& d, FrameRayScratch& scratch, Skip&& skip) const
+  {
+    std::vector<BoxSegment>& pending = scratch.Pending;
+    // Warp every box the ray enters no later than the nearest pending interval.
+    while (scratch.NextEntry < scratch.Entries.size() &&
+      (scratch.PendingHead == pending.size() ||
+        !(scratch.Entries[scratch.NextEntry].first > pending[scratch.PendingHead].Segment.TEnter)))
+    {
+      const int b = scratch.Entries[scratch.NextEntry++].second;
+      if (skip(b))
+      {
+        continue;
+      }
+      const RenderBox& box = (*this->Boxes)[b];
+      WarpedSegment found[MaxWarpedSegments];
+      const int n = WarpRayThroughBox(
+        this->Seen[b], box.Rest, box.Deformed, d, 0.0, found, MaxWarpedSegments, box.EyeOutside);
+      for (int k = 0; k < n; ++k)
+      {
+        const BoxSegment segment{ found[k], b, -1 };
+        pending.insert(
+          std::upper_bound(
+            pending.begin() + scratch.PendingHead, pending.end(), segment, detail::NearerSegment),
+          segment);
+      }
+    }
+    if (scratch.PendingHead == pending.size())
+    {
+      return nullptr;
+    }
+    scratch.Segments.push_back(pending[scratch.PendingHead++]);
+    return &scratch.Segments.back();
+  }
+
+private:
+  int TileOf(int x, int y) const
+  {
+    return (y / this->TileSize) * this->TilesX + x / this->TileSize;
+  }
+
+  /// The tiles (inclusive range; x1 < x0 for none) that the projection of
+  /// `bounds` may touch.
+  glm::ivec4 TileRange(const AxisBounds& bounds, int width, int height) const
+  {
+    const glm::dmat3 toPixel = glm::inverse(this->PixelToDirection);
+    glm::dvec2 low(std::numeric_limits<double>::infinity());
+    glm::dvec2 high(-std::numeric_limits<double>::infinity());
+    for (int c = 0; c < 8; ++c)
+    {
+      const glm::dvec3 corner((c & 1) ? bounds.Max.x : bounds.Min.x,
+        (c & 2) ? bounds.Max.y : bounds.Min.y,
+        (c & 4) ? bounds.Max.z : bounds.Min.z);
+      // (x z, y z, z) of the corner, z its depth along the eye's axis.
+      const glm::dvec3 v = toPixel * (corner - this->Eye);
+      if (!(v.z > 1e-6 * glm::length(v)))
+      {
+        return { 0, 0, this->TilesX - 1, this->TilesY - 1 };
+      }
+      low = glm::min(low, glm::dvec2(v) / v.z);
+      high = glm::max(high, glm::dvec2(v) / v.z);
+    }
+    // One pixel of margin absorbs the rounding of the projection.
+    const double x0 = std::max(std::floor(low.x) - 1.0, 0.0);
+    const double y0 = std::max(std::floor(low.y) - 1.0, 0.0);
+    const double x1 = std::min(std::ceil(high.x) + 1.0, width - 1.0);
+    const double y1 = std::min(std::ceil(high.y) + 1.0, height - 1.0);
+    if (x0 > x1 || y0 > y1)
+    {
+      return { 0, 0, -1, -1 };
+    }
+    return { static_cast<int>(x0) / this->TileSize,
+      static_cast<int>(y0) / this->TileSize,
+      static_cast<int>(x1) / this->TileSize,
+      static_cast<int>(y1) / this->TileSize };
+  }
+
+  /// Calls bin(tile, box) for every box and every tile of its range.
+  template<typename Bin>
+  void ForEachBinning(const std::vector<glm::ivec4>& rects, Bin&& bin) const
+  {
+    for (std::size_t b = 0; b < rects.size(); ++b)
+    {
+      const glm::ivec4& r = rects[b];
+      for (int ty = r.y; ty <= r.w; ++ty)
+      {
+        for (int tx = r.x; tx <= r.z; ++tx)
+        {
+          bin(ty * this->TilesX + tx, static_cast<int>(b));
+        }
+      }
     }
   }
-  std::sort(segments.begin(),
-    segments.end(),
-    [](const BoxSegment& a, const BoxSegment& b)
-    {
-      return a.Segment.TEnter < b.Segment.TEnter ||
-        (a.Segment.TEnter == b.Segment.TEnter && a.Box < b.Box);
-    });
-}
+};
 
 /// What a view ray sees.
 struct ViewSample
@@ -296,18 +577,20 @@ struct ViewRayLook
   }
 };
 
-/// The first interval, front to back, whose warped ray shows its box's
-/// label (Sec. 6); records what each interval showed in BoxSegment::Seen.
-template<typename Lookup>
+/// The first interval, front to back (`next(view)` hands them out, nullptr
+/// after the last), whose warped ray shows its box's label (Sec. 6);
+/// records what each interval showed in BoxSegment::Seen.
+template<typename Lookup, typename Next>
 bool ShadeSegments(const std::vector<RenderBox>& boxes,
-  std::vector<BoxSegment>& segments,
+  Next&& next,
   const Lookup& lookup,
   ViewRayLook<Lookup>& view,
   ViewSample& result)
 {
   RaySamples samples;
-  for (BoxSegment& entry : segments)
+  while (BoxSegment* handed = next(view))
   {
+    BoxSegment& entry = *handed;
     const RenderBox& box = boxes[entry.Box];
     const WarpedSegment& segment = entry.Segment;
     const RaySamples* seenSamples = &samples;
@@ -395,6 +678,44 @@ ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& s
 }
 } // namespace detail
 
+namespace detail
+{
+/**
+ * RENDER_VIEW (Sec. 6) of the ray o + t d whose intervals `next(view)`
+ * hands out front to back into `segments` (`any`: the ray may have some).
+ */
+template<typename Lookup, typename Next>
+ViewSample ShadeView(const glm::dvec3& o,
+  const glm::dvec3& d,
+  const std::vector<RenderBox>& boxes,
+  const Lookup& lookup,
+  const RenderViewSettings& settings,
+  bool any,
+  Next&& next,
+  const std::vector<BoxSegment>& segments)
+{
+  ViewRayLook<Lookup> view{ lookup, o, d };
+  if (settings.UseLabels && !boxes.empty())
+  {
+    ViewSample result;
+    // (Most rays of a frame miss every box: they skip the segment walk. The
+    // widened search runs after the walk handed every interval out.)
+    if (any &&
+      (ShadeSegments(boxes, next, lookup, view, result) ||
+        (settings.WidenedSearch && WidenSegments(boxes, segments, lookup, result))))
+    {
+      return result;
+    }
+    if (settings.AllOwned)
+    {
+      result.Label = 0;
+      return result;
+    }
+  }
+  return LookUndeformed(view, settings);
+}
+} // namespace detail
+
 /**
  * RENDER_VIEW (Sec. 6) for the view ray o + t d, t >= 0, through `boxes`
  * (rest and deformed corners, PlaceEye() called for this eye). `segments`
@@ -409,26 +730,63 @@ ViewSample RenderView(const glm::dvec3& o,
   const RenderViewSettings& settings,
   std::vector<BoxSegment>& segments)
 {
-  detail::ViewRayLook<Lookup> view{ lookup, o, d };
   segments.clear();
   if (settings.UseLabels && !boxes.empty())
   {
-    ViewSample result;
     CollectSegments(boxes, o, d, segments);
-    // (Most rays of a frame miss every box: they skip the segment walk.)
-    if (!segments.empty() &&
-      (detail::ShadeSegments(boxes, segments, lookup, view, result) ||
-        (settings.WidenedSearch && detail::WidenSegments(boxes, segments, lookup, result))))
-    {
-      return result;
-    }
-    if (settings.AllOwned)
-    {
-      result.Label = 0;
-      return result;
-    }
   }
-  return detail::LookUndeformed(view, settings);
+  std::size_t k = 0;
+  return detail::ShadeView(
+    o,
+    d,
+    boxes,
+    lookup,
+    settings,
+    !segments.empty(),
+    [&](detail::ViewRayLook<Lookup>&) { return k < segments.size() ? &segments[k++] : nullptr; },
+    segments);
+}
+
+/**
+ * RenderView for the ray through pixel (x, y) of a frame: the same result,
+ * with the boxes tried and warped through `cage` (FrameCage), front to back
+ * and only as far as needed. On return scratch.Segments holds the ray's
+ * intervals up to the one that gave the pixel (all of them when none did),
+ * but those of boxes that did not move and whose label the view ray does not
+ * show.
+ */
+template<typename Lookup>
+ViewSample RenderView(const FrameCage& cage,
+  int x,
+  int y,
+  const Lookup& lookup,
+  const RenderViewSettings& settings,
+  FrameRayScratch& scratch)
+{
+  const glm::dvec3 d = cage.Direction(x, y);
+  const bool any =
+    settings.UseLabels && !cage.Boxes->empty() && cage.StartWalk(x, y, d, scratch) > 0;
+  return detail::ShadeView(
+    cage.Eye,
+    d,
+    *cage.Boxes,
+    lookup,
+    settings,
+    any,
+    [&](detail::ViewRayLook<Lookup>& view)
+    {
+      // A box that did not move shows the view ray's own label (ShadeSegments):
+      // when that is not its label, none of its intervals can give the pixel
+      // (and the widened search only tries moved boxes), so it is not warped.
+      return cage.NextSegment(d,
+        scratch,
+        [&](int b)
+        {
+          const RenderBox& box = (*cage.Boxes)[b];
+          return !box.Moved && view.Look() != box.Label;
+        });
+    },
+    scratch.Segments);
 }
 
 } // namespace lfd

@@ -142,36 +142,37 @@ bool CollectBoxes(vtkObject* self,
 struct RenderRows
 {
   const lfd::SamplerLookup& Lookup;
-  const std::vector<lfd::RenderBox>& Boxes;
+  const lfd::FrameCage& Cage; // the eye, its pixels' rays and the boxes they may meet
   const lfd::RenderViewSettings& Settings;
-  glm::dvec3 Origin;
-  glm::dmat3 PixelToDirection; // a pixel's ray direction, camera z component 1
+  bool Accelerated; // through Cage, or every ray through every box
   int Width;
   int Height;
   std::uint8_t Background[3];
   std::uint8_t* Radiance; // output, VTK row order
   std::uint8_t* Labels;
   float* Depths;
-  // The segments of a ray, reused from ray to ray by each thread.
-  mutable vtkSMPThreadLocal<std::vector<lfd::BoxSegment>> Segments;
+  // The scratch space of a ray, reused from ray to ray by each thread.
+  mutable vtkSMPThreadLocal<lfd::FrameRayScratch> Scratch;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    std::vector<lfd::BoxSegment>& segments = this->Segments.Local();
+    lfd::FrameRayScratch& scratch = this->Scratch.Local();
     for (vtkIdType j = begin; j < end; ++j)
     {
-      const double y = static_cast<double>(this->Height - 1 - j); // OpenCV row
+      const int y = static_cast<int>(this->Height - 1 - j); // OpenCV row
       for (int x = 0; x < this->Width; ++x)
       {
         const vtkIdType id = j * this->Width + x;
         std::uint8_t* rgb = this->Radiance + 3 * id;
-        // d's camera z is 1, so the ray parameter of the seen point is its depth.
-        const lfd::ViewSample seen = lfd::RenderView(this->Origin,
-          this->PixelToDirection * glm::dvec3(x, y, 1.0),
-          this->Boxes,
-          this->Lookup,
-          this->Settings,
-          segments);
+        // A ray's camera z is 1, so the ray parameter of the seen point is its depth.
+        const lfd::ViewSample seen = this->Accelerated
+          ? lfd::RenderView(this->Cage, x, y, this->Lookup, this->Settings, scratch)
+          : lfd::RenderView(this->Cage.Eye,
+              this->Cage.Direction(x, y),
+              *this->Cage.Boxes,
+              this->Lookup,
+              this->Settings,
+              scratch.Segments);
         this->Labels[id] = static_cast<std::uint8_t>(std::max(seen.Label, 0));
         if (seen.Label < 0 || (this->Settings.UseLabels && seen.Label == 0))
         {
@@ -455,12 +456,18 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   this->GetEyePinhole(K, R, t);
   const lfd::PinholeCamera eye = lfd::PinholeCamera::FromRowMajor(K, R, t);
   lfd::PlaceEye(boxes, eye.Center());
-  const lfd::SamplerLookup lookup{ sampler, this->WidenedSearch, eye.Forward() };
-  RenderRows functor{ lookup,
-    boxes,
-    settings,
+  lfd::FrameCage cage;
+  cage.Build(boxes,
     eye.Center(),
     eye.PixelToDirection(),
+    this->Width,
+    this->Height,
+    lfd::FrameCage::DefaultTileSize);
+  const lfd::SamplerLookup lookup{ sampler, this->WidenedSearch, eye.Forward() };
+  RenderRows functor{ lookup,
+    cage,
+    settings,
+    this->CageAcceleration,
     this->Width,
     this->Height,
     {},
@@ -574,6 +581,7 @@ void vtkLightFieldRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Subdivision: " << this->Subdivision << (this->Subdivision ? "" : " (auto)")
      << "\n";
   os << indent << "SubdivisionTolerance: " << this->SubdivisionTolerance << "\n";
+  os << indent << "CageAcceleration: " << (this->CageAcceleration ? "On" : "Off") << "\n";
   os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";
   os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
   os << indent << "ExcludedViews:";

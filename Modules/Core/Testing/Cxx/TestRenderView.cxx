@@ -3,7 +3,9 @@
 // light field shows; of two moved boxes on a ray the nearer one wins in
 // whichever order the boxes are given; a ray through a twisted box gets two
 // intervals and the first visible one gives the pixel; a ray through 200
-// boxes keeps all 200 segments, sorted by distance.
+// boxes keeps all 200 segments, sorted by distance; a frame of 100 moved
+// boxes through the per-frame culling (lfd::FrameCage) renders every pixel
+// exactly as testing every box does, trying and warping far fewer boxes.
 #include "lfdRenderView.h"
 
 #include <cmath>
@@ -233,12 +235,137 @@ void TwoHundredBoxes()
   Expect("  every part visible: label of the nearest", seen.Label, 1);
   Expect("  every part visible: depth", seen.Depth, 1.5);
   Expect("  every part visible: lookups", lookup.Gathers, 1);
+  // The same ray as the one pixel of a frame: walked front to back, it warps
+  // only the boxes up to the one whose interval gives the pixel.
+  lfd::FrameCage frame;
+  frame.Build(boxes, eye, glm::dmat3(1.0), 1, 1, lfd::FrameCage::DefaultTileSize);
+  lfd::FrameRayScratch scratch;
+  lookup.Gathers = 0;
+  seen = lfd::RenderView(frame, 0, 0, lookup, SettingsFor(boxes), scratch);
+  Expect("  one-pixel frame: label", seen.Label, 1);
+  Expect("  one-pixel frame: depth", seen.Depth, 1.5);
+  Expect("  one-pixel frame: lookups", lookup.Gathers, 1);
+  Expect("  one-pixel frame: boxes warped", static_cast<double>(scratch.NextEntry), 1);
   lookup.Parts.erase(lookup.Parts.begin() + 1, lookup.Parts.end());
   lookup.Gathers = 0;
   seen = lfd::RenderView(eye, d, boxes, lookup, SettingsFor(boxes), segments);
   Expect("  only the farthest part: label", seen.Label, 200);
   Expect("  only the farthest part: depth", seen.Depth, 399.5);
   Expect("  only the farthest part: lookups", lookup.Gathers, 200);
+  lookup.Gathers = 0;
+  seen = lfd::RenderView(frame, 0, 0, lookup, SettingsFor(boxes), scratch);
+  Expect("  one-pixel frame, only the farthest part: label", seen.Label, 200);
+  Expect("  one-pixel frame, only the farthest part: depth", seen.Depth, 399.5);
+  Expect("  one-pixel frame, only the farthest part: boxes warped",
+    static_cast<double>(scratch.NextEntry),
+    200);
+}
+/// The twisted copy of `box`: its top face (corners 4-7) turned by `angle` about its centre.
+lfd::Hexahedron TurnTop(const lfd::Hexahedron& box, double angle)
+{
+  lfd::Hexahedron turned = box;
+  glm::dvec3 centre(0.0);
+  for (int c = 4; c < 8; ++c)
+  {
+    centre += 0.25 * box.Corners[c];
+  }
+  for (int c = 4; c < 8; ++c)
+  {
+    const glm::dvec3 r = box.Corners[c] - centre;
+    turned.Corners[c] = centre +
+      glm::dvec3(std::cos(angle) * r.x - std::sin(angle) * r.y,
+        std::sin(angle) * r.x + std::cos(angle) * r.y,
+        r.z);
+  }
+  return turned;
+}
+
+void HundredBoxFrame()
+{
+  // 100 parts rest in a row along x; their boxes are moved, twisted, into a
+  // 10 x 10 grid in front of the eye (box i at (2 (i % 10), 2 (i / 10), 0)),
+  // plus one box around the eye and one behind it (their projections are
+  // unbounded: every tile lists them). A 64 x 64 frame, tiles of 8 pixels.
+  SphereLookup lookup;
+  std::vector<lfd::RenderBox> boxes;
+  for (int i = 0; i < 100; ++i)
+  {
+    const glm::dvec3 grid(2.0 * (i % 10), 2.0 * (i / 10), 0.0);
+    boxes.push_back(
+      lfd::MakeRenderBox(Cube({ 3.0 * i, 0, 0 }), TurnTop(Cube(grid), 0.02 * (i % 7)), i + 1));
+    lookup.Parts.push_back({ { 3.0 * i + 0.5, 0.5, 0.5 }, 0.45, i + 1, { 2.0 * i, 50, 100 } });
+  }
+  const glm::dvec3 eye(9.5, 9.5, -12.0);
+  boxes.push_back(lfd::MakeRenderBox(Cube({ 400, 0, 0 }), Cube(eye - 0.5), 101));
+  boxes.push_back(lfd::MakeRenderBox(Cube({ 403, 0, 0 }), Cube(eye - glm::dvec3(0, 0, 3)), 102));
+  lfd::PlaceEye(boxes, eye);
+  // d = ((x - 32) / 38.4, (y - 32) / 38.4, 1): the grid fills the frame.
+  const glm::dmat3 pixelToDirection(glm::dvec3(1 / 38.4, 0, 0),
+    glm::dvec3(0, 1 / 38.4, 0),
+    glm::dvec3(-32 / 38.4, -32 / 38.4, 1.0));
+  lfd::FrameCage culled, unculled;
+  culled.Build(boxes, eye, pixelToDirection, 64, 64, 8);
+  unculled.Build(boxes, eye, pixelToDirection, 64, 64, 0);
+  const lfd::RenderViewSettings settings = SettingsFor(boxes);
+  std::vector<lfd::BoxSegment> reference;
+  lfd::FrameRayScratch scratch;
+  long long tried = 0, triedUnculled = 0, met = 0, warped = 0;
+  int different = 0, parts = 0, lookupsDiffer = 0;
+  for (int y = 0; y < 64; ++y)
+  {
+    for (int x = 0; x < 64; ++x)
+    {
+      const glm::dvec3 d = culled.Direction(x, y);
+      lookup.Gathers = 0;
+      const lfd::ViewSample expected = lfd::RenderView(eye, d, boxes, lookup, settings, reference);
+      const int expectedGathers = lookup.Gathers;
+      // The walk leaves out the intervals of boxes at rest (box 0) whose
+      // label the view ray does not show: they cannot give the pixel.
+      lfd::RaySamples viewSamples;
+      lookup.Gather(eye, d, viewSamples);
+      const int viewLabel = lfd::VoteLabel(viewSamples);
+      std::vector<lfd::BoxSegment> kept;
+      for (const lfd::BoxSegment& segment : reference)
+      {
+        const lfd::RenderBox& box = boxes[segment.Box];
+        if (box.Moved || box.Label == viewLabel)
+        {
+          kept.push_back(segment);
+        }
+      }
+      for (const lfd::FrameCage* frame : { &culled, &unculled })
+      {
+        lookup.Gathers = 0;
+        const lfd::ViewSample seen = lfd::RenderView(*frame, x, y, lookup, settings, scratch);
+        // The walk hands the intervals out up to the one that gave the pixel.
+        const std::vector<lfd::BoxSegment>& segments = scratch.Segments;
+        bool same = seen.Label == expected.Label && seen.Color == expected.Color &&
+          seen.Depth == expected.Depth && segments.size() <= kept.size() &&
+          (seen.Label > 0 || segments.size() == kept.size());
+        for (std::size_t k = 0; same && k < segments.size(); ++k)
+        {
+          same = segments[k].Box == kept[k].Box &&
+            segments[k].Segment.TEnter == kept[k].Segment.TEnter &&
+            segments[k].Segment.RestExit == kept[k].Segment.RestExit;
+        }
+        different += !same;
+        lookupsDiffer += lookup.Gathers != expectedGathers;
+      }
+      parts += expected.Label > 0;
+      tried += culled.CountCandidates(x, y);
+      triedUnculled += unculled.CountCandidates(x, y);
+      met += static_cast<long long>(scratch.Entries.size());
+      warped += static_cast<long long>(scratch.NextEntry);
+    }
+  }
+  Expect("100-box frame: pixels seeing a part", parts, 767);
+  Expect("  pixels (culled or not) unlike testing every box", different, 0);
+  Expect("  pixels whose lookups differ", lookupsDiffer, 0);
+  Expect("  boxes tried without culling", static_cast<double>(triedUnculled), 64 * 64 * 102);
+  Expect("  boxes tried with culling", static_cast<double>(tried), 29888);
+  Expect("  boxes whose bounds a ray meets", static_cast<double>(met), 5815);
+  Expect(
+    "  boxes warped, front to back up to the pixel's interval", static_cast<double>(warped), 5815);
 }
 }
 
@@ -248,5 +375,6 @@ int TestRenderView(int, char*[])
   OcclusionOrder();
   TwistedBox();
   TwoHundredBoxes();
+  HundredBoxFrame();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
