@@ -2,6 +2,7 @@
 
 #include "lfdCylinderSampling.h"
 #include "lfdPinholeCamera.h"
+#include "lfdViewCoverage.h"
 
 #include "vtkCamera.h"
 #include "vtkIdList.h"
@@ -903,23 +904,16 @@ std::string vtkCameraRig::DescribeExtrapolation(const double eye[3], const doubl
   double above = 0.0;
   double below = 0.0;
   RingGap gap;
-  for (int corner = 0; corner < 9; ++corner)
+  for (const glm::dvec3& target : lfd::BoundsProbes(bounds))
   {
-    // The 8 corners, then the centre.
-    glm::dvec3 target;
-    for (int c = 0; c < 3; ++c)
-    {
-      target[c] = corner < 8 ? bounds[2 * c + ((corner >> c) & 1)]
-                             : 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
-    }
-    double s = 0.0;
-    if (target == origin || !lfd::IntersectCylinderEntry(layout.Cyl, origin, target - origin, s))
+    glm::dvec3 entry;
+    if (!lfd::RayEntry(layout.Cyl, origin, target, entry))
     {
       continue;
     }
     double azimuth = 0.0;
     double height = 0.0;
-    layout.Locate(origin + s * (target - origin), azimuth, height);
+    layout.Locate(entry, azimuth, height);
     above = std::max(above, height - highest);
     below = std::max(below, lowest - height);
     if (!gap.Found)
