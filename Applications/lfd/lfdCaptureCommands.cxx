@@ -371,12 +371,15 @@ void Synth(const SynthOptions& options)
     std::cout << "\n";
   }
   vtkCameraRig* rig = lightField->GetRig();
-  std::cout << "rows:";
+  std::printf("rows:");
   for (int row = 0; row < rig->GetNumberOfRows(); ++row)
   {
-    std::cout << (row ? ", " : " ") << rig->GetRowHeight(row);
+    // Heights are fitted: print a rounding residue of 0 as 0.
+    const double h = rig->GetRowHeight(row);
+    std::printf("%s%.4g", row ? ", " : " ", std::abs(h) < 1e-9 * rig->GetRadius() ? 0.0 : h);
   }
-  std::cout << " (heights along the axis; radius " << rig->GetRadius() << ")\n";
+  std::printf(
+    " (heights along the axis about the cameras' mean height; radius %.4g)\n", rig->GetRadius());
   std::cout << "wrote " << lightField->GetNumberOfViews() << " views of " << lightField->GetWidth()
             << "x" << lightField->GetHeight() << " to " << options.Out << " in " << Seconds(start)
             << " s\n";

@@ -189,12 +189,13 @@ bool FitCircle(const std::vector<glm::dvec3>& centers,
   return true;
 }
 
-/// Near-duplicates: a view closer than `distance` to an earlier one that
-/// looks the same way within 5 degrees (roll is free: a view rotated by 180
+/// Near-duplicates: a view closer than `distance` to an earlier one of the
+/// same row that looks the same way within 5 degrees (roll is free: a view rotated by 180
 /// degrees in its image plane sees the same rays) duplicates the first such
 /// view; -1 for the others.
 std::vector<int> FindDuplicates(const std::vector<glm::dvec3>& centers,
   const std::vector<lfd::PinholeCamera>& cameras,
+  const std::vector<int>& rows,
   double distance)
 {
   const double cosLimit = std::cos(vtkMath::RadiansFromDegrees(5.0));
@@ -204,7 +205,8 @@ std::vector<int> FindDuplicates(const std::vector<glm::dvec3>& centers,
   {
     for (int i = 0; i < j; ++i)
     {
-      if (duplicateOf[i] < 0 && glm::distance(centers[i], centers[j]) < distance &&
+      if (duplicateOf[i] < 0 && rows[i] == rows[j] &&
+        glm::distance(centers[i], centers[j]) < distance &&
         glm::dot(cameras[i].Forward(), cameras[j].Forward()) > cosLimit)
       {
         duplicateOf[j] = i;
@@ -730,8 +732,10 @@ bool vtkCameraRig::FitCylinder(std::string& problem)
   }
   this->FitResidual = std::sqrt(residual2 / n);
 
-  in.DuplicateOf = FindDuplicates(centers, in.Cameras, this->DuplicateTolerance * radius);
+  // Rows first: views of two rows are never duplicates, however close the
+  // rows (a row is a deliberate height, a duplicate an accidental repeat).
   ClusterRows(in.Height, this->MinimumRowGap * radius, this->RowGapRatio, in.Row, in.RowHeights);
+  in.DuplicateOf = FindDuplicates(centers, in.Cameras, in.Row, this->DuplicateTolerance * radius);
   in.Fitted = true;
   in.FitTime.Modified();
   return true;

@@ -16,20 +16,21 @@
  * next FitCylinder(). Nothing that reads a rig fits it (GetRingLayout() and
  * the renderers only read the fit), so no filter modifies its input's rig.
  *
- * the axis is the principal direction of the centres whose spread stands apart
- * from the other two (for a ring, the normal of the plane fitted by SVD; for a
- * stack of rings taller than wide, the long direction), oriented like most
- * views' image "up" (or towards +Y when they do not agree, as on rigs whose
- * cameras are rolled by 90 degrees), the centre and radius come from a least-squares circle fit
- * in the plane orthogonal to the axis. Each view then gets an azimuth about
- * the axis, a height along it and a row. Rows are found from the heights
- * themselves: sorted heights are split at the gaps that are at least
- * RowGapRatio times wider than the widest row's own spread of heights (and
- * at least MinimumRowGap x radius), so that rows of any spacing are told
- * apart while the noise of a real ring does not split it. Views whose centres are closer than
- * DuplicateTolerance x radius and look the same way are near-duplicates: the
- * first of them (by index) is kept, the others report it in GetDuplicateOf()
- * and are left out of the sampling layout.
+ * the axis is the principal direction of the centres whose spread stands
+ * apart from the other two (for a ring, the normal of the plane fitted by
+ * SVD; for a stack of rings taller than wide, the long direction), oriented
+ * like most views' image "up" (or towards +Y when they do not agree, as on
+ * rigs whose cameras are rolled by 90 degrees), the centre and radius come
+ * from a least-squares circle fit in the plane orthogonal to the axis. Each
+ * view then gets an azimuth about the axis, a height along it and a row.
+ * Rows are found from the heights themselves: sorted heights are split at
+ * the gaps that are at least RowGapRatio times wider than the widest row's
+ * own spread of heights (and at least MinimumRowGap x radius), so that rows
+ * of any spacing are told apart while the noise of a real ring does not
+ * split it. Views of a row whose centres are closer than DuplicateTolerance
+ * x radius and look the same way are near-duplicates: the first of them (by
+ * index) is kept, the others report it in GetDuplicateOf() and are left out
+ * of the sampling layout.
  *
  * Real rings are not perfect cylinders (templeRing is tilted and has a gap):
  * the cylinder is only used to choose neighbouring views; rays are always
@@ -181,10 +182,10 @@ public:
 
   ///@{
   /**
-   * Tolerances of FitCylinder(). Views closer than DuplicateTolerance x
-   * radius (and looking the same way within 5 degrees) are duplicates
-   * (default 0.01). Neighbouring heights start a new row when their gap is
-   * at least RowGapRatio times the largest spread of heights within a row
+   * Tolerances of FitCylinder(). Views of one row closer than
+   * DuplicateTolerance x radius (and looking the same way within 5 degrees)
+   * are duplicates (default 0.01); views of two rows never are. Neighbouring heights start a new
+   * row when their gap is at least RowGapRatio times the largest spread of heights within a row
    * (default 4) and at least MinimumRowGap x radius (default 0.001, far
    * below any row spacing a capture uses; it keeps rounding noise of an
    * exact ring from counting as rows). Among the splits that qualify the
