@@ -106,7 +106,8 @@ covered = os.path.join(WORK, "covered.lf")
 # this high need a wider view; the radius is kept.
 code, out, err = lfd("synth", *SMALL, "--scene", scene_path, "--radius", str(radius),
                      "--view-angle", "60", "--out", covered)
-t.check(code == 0 and "warning" not in err, "synth --scene covers the scene camera", last(err) or last(out))
+t.check(code == 0 and "warning" not in err, "synth --scene covers the scene camera",
+        last(err) or last(out))
 rows, counts, _ = info_rows(covered)
 t.check(rows == 3 and counts == [12] * 3, "synth --scene: 3 rows of 12", (rows, counts))
 scene["lightfield"] = "covered.lf"
