@@ -8,20 +8,15 @@ the real templeRing is one row of 47 views (skipped without its data);
 import json
 import os
 import shutil
-import subprocess
 
 import lfdtesting as t
 
 import lfd as lfd_module
 
-WORK = t.temp_path("rows", "x")[:-2]
+lfd = t.run_lfd
+WORK = os.path.join(t.TEMP_DIR, "rows")
 shutil.rmtree(WORK, ignore_errors=True)
 os.makedirs(WORK)
-
-
-def lfd(*args):
-    result = subprocess.run([t.LFD, *args], capture_output=True, text=True, timeout=600)
-    return result.returncode, result.stdout, result.stderr
 
 
 def last(text):
