@@ -1,8 +1,11 @@
 // `lfd synth`, `lfd import` and `lfd info`: light fields in.
 #include "lfdCommands.h"
 
+#include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkCellData.h"
+#include "vtkDeformationCage.h"
+#include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkLabelPalette.h"
 #include "vtkLightField.h"
@@ -41,6 +44,46 @@ vtkSmartPointer<vtkPolyData> SourceMesh(const std::string& name,
   source->Update();
   texture = source->GetTextureOutput();
   return source->GetOutput();
+}
+
+void WarnIfExtrapolating(vtkLightField* lightField,
+  vtkLightFieldSceneLogic* scene,
+  vtkDeformationCage* cage)
+{
+  vtkCameraRig* rig = lightField->GetRig();
+  const double* eye = scene->GetScene()->GetCamera()->GetPosition();
+  const std::string why =
+    cage ? rig->DescribeExtrapolation(eye, cage->GetBounds()) : rig->DescribeExtrapolation(eye);
+  if (!why.empty())
+  {
+    PrintWarning(why);
+  }
+}
+
+RowCoverage SceneCoverage(vtkLightFieldSceneLogic* scene, vtkDeformationCage* cage)
+{
+  RowCoverage coverage;
+  coverage.Eyes = vtkSmartPointer<vtkPoints>::New();
+  coverage.Eyes->InsertNextPoint(scene->GetScene()->GetCamera()->GetPosition());
+  // What the camera looks at besides the mesh: the boxes at rest, as they
+  // stand, and at every keyframe.
+  coverage.Targets = vtkSmartPointer<vtkPoints>::New();
+  for (vtkIdType p = 0; p < cage->GetNumberOfPoints(); ++p)
+  {
+    double rest[3];
+    cage->GetRestPoint(p, rest);
+    coverage.Targets->InsertNextPoint(rest);
+    coverage.Targets->InsertNextPoint(cage->GetPoint(p));
+  }
+  for (int k = 0; k < scene->GetScene()->GetNumberOfKeyframes(); ++k)
+  {
+    vtkPoints* points = scene->GetScene()->GetKeyframePoints(k);
+    for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+    {
+      coverage.Targets->InsertNextPoint(points->GetPoint(p));
+    }
+  }
+  return coverage;
 }
 
 namespace
@@ -97,13 +140,33 @@ vtkSmartPointer<vtkImageData> ReadProjectorMasks(const std::vector<std::string>&
 
 vtkSmartPointer<vtkLightField> Capture(vtkPolyData* mesh,
   vtkImageData* texture,
-  const SynthOptions& options)
+  const SynthOptions& options,
+  const RowCoverage* coverage)
 {
   vtkNew<vtkLightFieldCapture> capture;
   capture->SetInputData(mesh);
   capture->SetTextureData(texture);
   capture->SetViewsPerRing(options.Views);
   capture->SetNumberOfRows(options.Rows);
+  capture->SetRowSpacing(options.RowSpacing);
+  capture->SetRowMargin(options.RowMargin);
+  vtkNew<vtkDoubleArray> rowHeights;
+  for (double h : options.RowHeights)
+  {
+    rowHeights->InsertNextValue(h);
+  }
+  capture->SetRowHeights(rowHeights);
+  vtkNew<vtkDoubleArray> elevations;
+  for (double e : options.Elevations)
+  {
+    elevations->InsertNextValue(e);
+  }
+  capture->SetRowElevations(elevations);
+  if (coverage)
+  {
+    capture->SetEyes(coverage->Eyes);
+    capture->SetEyeTargets(coverage->Targets);
+  }
   capture->SetWidth(options.Width);
   capture->SetHeight(options.Height);
   capture->SetRadius(options.Radius);
@@ -176,8 +239,12 @@ vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options)
     {
       Fail("scene '" + options.Scene + "' has no cage: its rest boxes are what label the mesh");
     }
-    SceneCage(scene, nullptr);
+    auto cage = SceneCage(scene, nullptr);
     mesh = LabelByScene(mesh, scene);
+    const RowCoverage coverage = SceneCoverage(scene, cage);
+    auto lightField = Capture(mesh, texture, options, &coverage);
+    WarnIfExtrapolating(lightField, scene, cage);
+    return lightField;
   }
   return Capture(mesh, texture, options);
 }
@@ -202,6 +269,37 @@ void AddSynthOptions(CLI::App* command, SynthOptions& options, NumericOptions& n
     limits->GetNumberOfRowsMinValue(),
     limits->GetNumberOfRowsMaxValue(),
     "rings (rows) of views");
+  numbers.Add(command,
+    "--row-spacing",
+    options.RowSpacing,
+    limits->GetRowSpacingMinValue(),
+    limits->GetRowSpacingMaxValue(),
+    "distance between neighbouring rows along the axis, in the mesh's units (built-in objects: "
+    "metres); 0: 0.05 x the ring radius");
+  auto* heights = numbers
+                    .AddReal(command,
+                      "--row-heights",
+                      options.RowHeights,
+                      "explicit row heights along the axis relative to the mesh centre, in the "
+                      "mesh's units, comma-separated (replaces --rows and --row-spacing)")
+                    ->delimiter(',');
+  numbers
+    .Add(command,
+      "--elevations",
+      options.Elevations,
+      -89.0,
+      89.0,
+      "explicit row elevations in degrees seen from the mesh centre, comma-separated (replaces "
+      "--rows and --row-spacing)")
+    ->delimiter(',')
+    ->excludes(heights);
+  numbers.Add(command,
+    "--row-margin",
+    options.RowMargin,
+    limits->GetRowMarginMinValue(),
+    limits->GetRowMarginMaxValue(),
+    "with --scene: the rows reach this many ring radii beyond the heights the scene's camera "
+    "looks up");
   numbers.Add(command,
     "--width",
     options.Width,
@@ -272,6 +370,16 @@ void Synth(const SynthOptions& options)
     }
     std::cout << "\n";
   }
+  vtkCameraRig* rig = lightField->GetRig();
+  std::printf("rows:");
+  for (int row = 0; row < rig->GetNumberOfRows(); ++row)
+  {
+    // Heights are fitted: print a rounding residue of 0 as 0.
+    const double h = rig->GetRowHeight(row);
+    std::printf("%s%.4g", row ? ", " : " ", std::abs(h) < 1e-9 * rig->GetRadius() ? 0.0 : h);
+  }
+  std::printf(
+    " (heights along the axis about the cameras' mean height; radius %.4g)\n", rig->GetRadius());
   std::cout << "wrote " << lightField->GetNumberOfViews() << " views of " << lightField->GetWidth()
             << "x" << lightField->GetHeight() << " to " << options.Out << " in " << Seconds(start)
             << " s\n";
@@ -367,7 +475,10 @@ void AddCaptureCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comm
   synthCommand->add_option("--scene",
     synth->Scene,
     "scene.json whose rest boxes label the mesh (a triangle takes the box holding its centroid); "
-    "its boxes are validated as lfd render validates them");
+    "its boxes are validated as lfd render validates them. Unless --row-heights or --elevations "
+    "are given, the --rows rows are spread over the heights the scene's camera looks up when it "
+    "views the mesh and the boxes (at rest, deformed and at every keyframe), --row-margin beyond "
+    "them, so that lfd render never clamps its rays to the outermost row");
   synthCommand->add_option("--out", synth->Out, "output light-field directory")->required();
   AddSynthOptions(synthCommand, *synth, numbers);
   commands.push_back({ synthCommand, [synth] { Synth(*synth); }, true });

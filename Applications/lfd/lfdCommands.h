@@ -13,6 +13,8 @@
 
 #include "lfdCommandSupport.h"
 
+#include "vtkPoints.h" // For RowCoverage
+
 class vtkCalibratedImageImporter;
 
 namespace lfd::cli
@@ -54,6 +56,10 @@ struct SynthOptions
   std::string Out;
   int Views = 120;
   int Rows = 3;
+  double RowSpacing = 0.0;
+  std::vector<double> RowHeights;
+  std::vector<double> Elevations;
+  double RowMargin = 0.05;
   int Width = 256;
   int Height = 256;
   double Radius = 0.0;
@@ -72,10 +78,33 @@ struct SynthOptions
 vtkSmartPointer<vtkPolyData> SourceMesh(const std::string& name,
   vtkSmartPointer<vtkImageData>& texture);
 
-/// Captures a light field of `mesh` (with `texture`, optional) with the options' rig and light.
+/// Eyes the captured rows must cover and what they look at besides the mesh
+/// (vtkLightFieldCapture::SetEyes, SetEyeTargets).
+struct RowCoverage
+{
+  vtkSmartPointer<vtkPoints> Eyes;
+  vtkSmartPointer<vtkPoints> Targets;
+};
+
+/// The rows `synth --scene` covers: the scene's camera looking at its boxes
+/// at rest, as they stand and at every keyframe.
+RowCoverage SceneCoverage(vtkLightFieldSceneLogic* scene, vtkDeformationCage* cage);
+
+/// Captures a light field of `mesh` (with `texture`, optional) with the
+/// options' rig and light; rows placed by the options, or to cover `coverage`
+/// when given and the options set no explicit heights or elevations.
 vtkSmartPointer<vtkLightField> Capture(vtkPolyData* mesh,
   vtkImageData* texture,
-  const SynthOptions& options);
+  const SynthOptions& options,
+  const RowCoverage* coverage = nullptr);
+
+/// Says in one warning line when the scene's camera looks beyond the light
+/// field's captured rows or into a gap of its ring
+/// (vtkCameraRig::DescribeExtrapolation; the view looks at the cage's bounds
+/// when there is a cage).
+void WarnIfExtrapolating(vtkLightField* lightField,
+  vtkLightFieldSceneLogic* scene,
+  vtkDeformationCage* cage);
 
 /// Captures a light field of a mesh (or a built-in object) with the options.
 vtkSmartPointer<vtkLightField> Synthesize(const SynthOptions& options);

@@ -120,6 +120,7 @@ void Render(const std::string& scenePath,
   auto cage = SceneCage(scene, lightField, time);
   vtkNew<vtkLightFieldRenderer> renderer;
   scene->ConfigureRenderer(renderer, lightField, cage);
+  WarnIfExtrapolating(lightField, scene, cage);
   Run(renderer.Get(), "rendering");
   WriteImage(renderer->GetOutput(), out);
   std::cout << "wrote " << out << " (" << scene->GetScene()->GetWidth() << "x"

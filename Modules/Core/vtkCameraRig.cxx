@@ -2,6 +2,7 @@
 
 #include "lfdCylinderSampling.h"
 #include "lfdPinholeCamera.h"
+#include "lfdViewCoverage.h"
 
 #include "vtkCamera.h"
 #include "vtkIdList.h"
@@ -12,8 +13,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
+#include <limits>
 #include <map>
 #include <numeric>
+#include <sstream>
 #include <string>
 
 vtkStandardNewMacro(vtkCameraRig);
@@ -185,12 +189,13 @@ bool FitCircle(const std::vector<glm::dvec3>& centers,
   return true;
 }
 
-/// Near-duplicates: a view closer than `distance` to an earlier one that
-/// looks the same way within 5 degrees (roll is free: a view rotated by 180
+/// Near-duplicates: a view closer than `distance` to an earlier one of the
+/// same row that looks the same way within 5 degrees (roll is free: a view rotated by 180
 /// degrees in its image plane sees the same rays) duplicates the first such
 /// view; -1 for the others.
 std::vector<int> FindDuplicates(const std::vector<glm::dvec3>& centers,
   const std::vector<lfd::PinholeCamera>& cameras,
+  const std::vector<int>& rows,
   double distance)
 {
   const double cosLimit = std::cos(vtkMath::RadiansFromDegrees(5.0));
@@ -200,7 +205,8 @@ std::vector<int> FindDuplicates(const std::vector<glm::dvec3>& centers,
   {
     for (int i = 0; i < j; ++i)
     {
-      if (duplicateOf[i] < 0 && glm::distance(centers[i], centers[j]) < distance &&
+      if (duplicateOf[i] < 0 && rows[i] == rows[j] &&
+        glm::distance(centers[i], centers[j]) < distance &&
         glm::dot(cameras[i].Forward(), cameras[j].Forward()) > cosLimit)
       {
         duplicateOf[j] = i;
@@ -211,10 +217,19 @@ std::vector<int> FindDuplicates(const std::vector<glm::dvec3>& centers,
   return duplicateOf;
 }
 
-/// Rows: heights sorted and split where two neighbours differ by more than
-/// `gap`; rows are numbered by increasing height, with their mean height.
+/// Rows: the heights sorted, split at every gap between neighbours wider
+/// than a threshold found from the data, not fixed. Merging the gaps in
+/// increasing order (single linkage) gives every candidate split "all gaps
+/// wider than g"; the candidate kept is the one whose narrowest split gap is
+/// the largest multiple of the widest row (its height spread), when that
+/// multiple reaches `ratio` and the gap `minimumGap`. Evenly spaced rows of
+/// exact heights therefore split at any spacing, a noisy ring stays whole,
+/// and rows never merge because their spacing equals a tolerance. The
+/// candidate "every view its own row" is not considered (a helix is a
+/// ring). Rows are numbered by increasing height, with their mean height.
 void ClusterRows(const std::vector<double>& heights,
-  double gap,
+  double minimumGap,
+  double ratio,
   std::vector<int>& rows,
   std::vector<double>& rowHeights)
 {
@@ -222,25 +237,112 @@ void ClusterRows(const std::vector<double>& heights,
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return heights[a] < heights[b]; });
+  std::vector<double> sorted(n);
+  for (int k = 0; k < n; ++k)
+  {
+    sorted[k] = heights[order[k]];
+  }
+  const int gaps = std::max(n - 1, 0);
+  std::vector<int> byWidth(gaps);
+  std::iota(byWidth.begin(), byWidth.end(), 0);
+  const auto width = [&](int g) { return sorted[g + 1] - sorted[g]; };
+  std::sort(byWidth.begin(), byWidth.end(), [&](int a, int b) { return width(a) < width(b); });
+
+  // Segments of sorted views merged so far: each end knows the other end.
+  std::vector<int> otherEnd(n);
+  std::iota(otherEnd.begin(), otherEnd.end(), 0);
+  const double span = n > 0 ? sorted[n - 1] - sorted[0] : 0.0;
+  const double spreadFloor = 1e-12 * std::max(span, minimumGap);
+  double widestRow = 0.0;
+  double bestSeparation = 0.0;
+  double threshold = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < gaps; ++k)
+  {
+    const int g = byWidth[k];
+    const int low = otherEnd[g];
+    const int high = otherEnd[g + 1];
+    otherEnd[low] = high;
+    otherEnd[high] = low;
+    widestRow = std::max(widestRow, sorted[high] - sorted[low]);
+    if (k + 1 == gaps || width(byWidth[k + 1]) <= width(g))
+    {
+      continue;
+    }
+    const double narrowestSplit = width(byWidth[k + 1]);
+    const double separation = narrowestSplit / std::max(widestRow, spreadFloor);
+    if (narrowestSplit >= minimumGap && separation >= ratio && separation > bestSeparation)
+    {
+      bestSeparation = separation;
+      threshold = width(g);
+    }
+  }
+
   rows.assign(n, 0);
   rowHeights.clear();
   std::vector<int> rowCounts;
   for (int k = 0; k < n; ++k)
   {
-    const int v = order[k];
-    if (k == 0 || heights[v] - heights[order[k - 1]] > gap)
+    if (k == 0 || sorted[k] - sorted[k - 1] > threshold)
     {
       rowHeights.push_back(0.0);
       rowCounts.push_back(0);
     }
-    rows[v] = static_cast<int>(rowHeights.size()) - 1;
-    rowHeights.back() += heights[v];
+    rows[order[k]] = static_cast<int>(rowHeights.size()) - 1;
+    rowHeights.back() += sorted[k];
     rowCounts.back() += 1;
   }
   for (std::size_t r = 0; r < rowHeights.size(); ++r)
   {
     rowHeights[r] /= rowCounts[r];
   }
+}
+
+/// A gap of a ring that an azimuth falls in: an azimuth step of the row
+/// nearest to `height` wider than twice the row's median step.
+struct RingGap
+{
+  bool Found = false;
+  double Azimuth = 0.0;
+  double Width = 0.0;
+  double MedianStep = 0.0;
+  int From = -1;
+  int To = -1;
+};
+
+RingGap FindRingGap(const lfd::RingLayout& layout, double azimuth, double height)
+{
+  RingGap gap;
+  const auto nearest = std::min_element(layout.Rows.begin(),
+    layout.Rows.end(),
+    [height](const lfd::RingRow& a, const lfd::RingRow& b)
+    { return std::abs(a.Height - height) < std::abs(b.Height - height); });
+  const std::vector<double>& azimuths = nearest->Azimuth;
+  const std::size_t n = azimuths.size();
+  if (n < 2)
+  {
+    return gap;
+  }
+  std::vector<double> steps(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    steps[k] = k + 1 < n ? azimuths[k + 1] - azimuths[k] : azimuths[0] + lfd::TwoPi - azimuths[k];
+  }
+  // The step that holds the azimuth: from the last view at or below it.
+  const std::size_t upper =
+    std::upper_bound(azimuths.begin(), azimuths.end(), azimuth) - azimuths.begin();
+  const std::size_t from = (upper + n - 1) % n;
+  const double width = steps[from];
+  std::nth_element(steps.begin(), steps.begin() + n / 2, steps.end());
+  gap.MedianStep = steps[n / 2];
+  if (width > 2.0 * gap.MedianStep)
+  {
+    gap.Found = true;
+    gap.Azimuth = azimuth;
+    gap.Width = width;
+    gap.From = nearest->View[from];
+    gap.To = nearest->View[(from + 1) % n];
+  }
+  return gap;
 }
 }
 
@@ -630,8 +732,10 @@ bool vtkCameraRig::FitCylinder(std::string& problem)
   }
   this->FitResidual = std::sqrt(residual2 / n);
 
-  in.DuplicateOf = FindDuplicates(centers, in.Cameras, this->DuplicateTolerance * radius);
-  ClusterRows(in.Height, this->RowTolerance * radius, in.Row, in.RowHeights);
+  // Rows first: views of two rows are never duplicates, however close the
+  // rows (a row is a deliberate height, a duplicate an accidental repeat).
+  ClusterRows(in.Height, this->MinimumRowGap * radius, this->RowGapRatio, in.Row, in.RowHeights);
+  in.DuplicateOf = FindDuplicates(centers, in.Cameras, in.Row, this->DuplicateTolerance * radius);
   in.Fitted = true;
   in.FitTime.Modified();
   return true;
@@ -772,6 +876,79 @@ lfd::RingLayout vtkCameraRig::GetRingLayout(const std::vector<int>& excluded) co
 }
 
 //------------------------------------------------------------------------------
+std::string vtkCameraRig::DescribeExtrapolation(const double eye[3]) const
+{
+  if (!this->HasCylinder())
+  {
+    return std::string();
+  }
+  const std::vector<double>& rows = this->Internal->RowHeights;
+  const glm::dvec3 low = ToVec(this->Center) + rows.front() * ToVec(this->Axis);
+  const glm::dvec3 high = ToVec(this->Center) + rows.back() * ToVec(this->Axis);
+  double bounds[6];
+  for (int c = 0; c < 3; ++c)
+  {
+    bounds[2 * c] = std::min(low[c], high[c]);
+    bounds[2 * c + 1] = std::max(low[c], high[c]);
+  }
+  return this->DescribeExtrapolation(eye, bounds);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkCameraRig::DescribeExtrapolation(const double eye[3], const double bounds[6]) const
+{
+  const lfd::RingLayout layout = this->GetRingLayout();
+  if (layout.Rows.empty())
+  {
+    return std::string();
+  }
+  const glm::dvec3 origin = ToVec(eye);
+  const double lowest = layout.Rows.front().Height;
+  const double highest = layout.Rows.back().Height;
+  double above = 0.0;
+  double below = 0.0;
+  RingGap gap;
+  for (const glm::dvec3& target : lfd::BoundsProbes(bounds))
+  {
+    glm::dvec3 entry;
+    if (!lfd::RayEntry(layout.Cyl, origin, target, entry))
+    {
+      continue;
+    }
+    double azimuth = 0.0;
+    double height = 0.0;
+    layout.Locate(entry, azimuth, height);
+    above = std::max(above, height - highest);
+    below = std::max(below, lowest - height);
+    if (!gap.Found)
+    {
+      gap = FindRingGap(layout, azimuth, height);
+    }
+  }
+  const double tolerance = 0.01 * layout.Cyl.Radius;
+  std::ostringstream line;
+  line << std::setprecision(4);
+  if (above > tolerance || below > tolerance)
+  {
+    const bool up = above >= below;
+    line << "rays from the eye (" << eye[0] << ", " << eye[1] << ", " << eye[2]
+         << ") reach the rig cylinder " << (up ? above : below) << (up ? " above" : " below")
+         << " the " << (up ? "highest" : "lowest") << " of the " << layout.Rows.size()
+         << " captured rows (height " << (up ? highest : lowest)
+         << "), where the renderer clamps them to that row";
+  }
+  if (gap.Found)
+  {
+    line << (line.tellp() > 0 ? "; they also enter" : "rays from the eye enter")
+         << " the ring at azimuth " << vtkMath::DegreesFromRadians(gap.Azimuth) << " degrees, in a "
+         << vtkMath::DegreesFromRadians(gap.Width) << "-degree gap between views " << gap.From
+         << " and " << gap.To << " (the row's median step is "
+         << vtkMath::DegreesFromRadians(gap.MedianStep) << " degrees)";
+  }
+  return line.str();
+}
+
+//------------------------------------------------------------------------------
 void vtkCameraRig::DeepCopy(vtkCameraRig* source)
 {
   if (!source || source == this)
@@ -782,7 +959,8 @@ void vtkCameraRig::DeepCopy(vtkCameraRig* source)
   *this->Internal = *source->Internal;
   this->SetImageSize(source->ImageSize);
   this->DuplicateTolerance = source->DuplicateTolerance;
-  this->RowTolerance = source->RowTolerance;
+  this->MinimumRowGap = source->MinimumRowGap;
+  this->RowGapRatio = source->RowGapRatio;
   std::copy(source->Axis, source->Axis + 3, this->Axis);
   std::copy(source->Center, source->Center + 3, this->Center);
   this->Radius = source->Radius;
@@ -800,7 +978,8 @@ void vtkCameraRig::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfViews: " << this->GetNumberOfViews() << "\n";
   os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
   os << indent << "DuplicateTolerance: " << this->DuplicateTolerance << "\n";
-  os << indent << "RowTolerance: " << this->RowTolerance << "\n";
+  os << indent << "MinimumRowGap: " << this->MinimumRowGap << "\n";
+  os << indent << "RowGapRatio: " << this->RowGapRatio << "\n";
   os << indent << "Distortion: " << (this->HasDistortion() ? "yes" : "none") << "\n";
   os << indent << "Cylinder fitted: " << (this->HasCylinder() ? "yes" : "no") << "\n";
   if (this->HasCylinder())

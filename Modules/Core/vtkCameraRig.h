@@ -16,17 +16,21 @@
  * next FitCylinder(). Nothing that reads a rig fits it (GetRingLayout() and
  * the renderers only read the fit), so no filter modifies its input's rig.
  *
- * the axis is the principal direction of the centres whose spread stands apart
- * from the other two (for a ring, the normal of the plane fitted by SVD; for a
- * stack of rings taller than wide, the long direction), oriented like most
- * views' image "up" (or towards +Y when they do not agree, as on rigs whose
- * cameras are rolled by 90 degrees), the centre and radius come from a least-squares circle fit
- * in the plane orthogonal to the axis. Each view then gets an azimuth about
- * the axis, a height along it and a row (views whose heights differ by less
- * than RowTolerance x radius share a row). Views whose centres are closer than
- * DuplicateTolerance x radius and look the same way are near-duplicates: the
- * first of them (by index) is kept, the others report it in GetDuplicateOf()
- * and are left out of the sampling layout.
+ * the axis is the principal direction of the centres whose spread stands
+ * apart from the other two (for a ring, the normal of the plane fitted by
+ * SVD; for a stack of rings taller than wide, the long direction), oriented
+ * like most views' image "up" (or towards +Y when they do not agree, as on
+ * rigs whose cameras are rolled by 90 degrees), the centre and radius come
+ * from a least-squares circle fit in the plane orthogonal to the axis. Each
+ * view then gets an azimuth about the axis, a height along it and a row.
+ * Rows are found from the heights themselves: sorted heights are split at
+ * the gaps that are at least RowGapRatio times wider than the widest row's
+ * own spread of heights (and at least MinimumRowGap x radius), so that rows
+ * of any spacing are told apart while the noise of a real ring does not
+ * split it. Views of a row whose centres are closer than DuplicateTolerance
+ * x radius and look the same way are near-duplicates: the first of them (by
+ * index) is kept, the others report it in GetDuplicateOf() and are left out
+ * of the sampling layout.
  *
  * Real rings are not perfect cylinders (templeRing is tilted and has a gap):
  * the cylinder is only used to choose neighbouring views; rays are always
@@ -178,22 +182,29 @@ public:
 
   ///@{
   /**
-   * Tolerances of FitCylinder(), as fractions of the fitted radius: views
-   * closer than DuplicateTolerance (and looking the same way within 5
-   * degrees) are duplicates; views whose heights differ by less than
-   * RowTolerance share a row. Defaults 0.01 and 0.05.
+   * Tolerances of FitCylinder(). Views of one row closer than
+   * DuplicateTolerance x radius (and looking the same way within 5 degrees)
+   * are duplicates (default 0.01); views of two rows never are. Neighbouring heights start a new
+   * row when their gap is at least RowGapRatio times the largest spread of heights within a row
+   * (default 4) and at least MinimumRowGap x radius (default 0.001, far
+   * below any row spacing a capture uses; it keeps rounding noise of an
+   * exact ring from counting as rows). Among the splits that qualify the
+   * one with the largest ratio is kept; none qualifies on a single ring.
    */
   vtkSetClampMacro(DuplicateTolerance, double, 0.0, 1.0);
   vtkGetMacro(DuplicateTolerance, double);
-  vtkSetClampMacro(RowTolerance, double, 0.0, 10.0);
-  vtkGetMacro(RowTolerance, double);
+  vtkSetClampMacro(MinimumRowGap, double, 0.0, 10.0);
+  vtkGetMacro(MinimumRowGap, double);
+  vtkSetClampMacro(RowGapRatio, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(RowGapRatio, double);
   ///@}
 
   /**
    * Fits the cylinder, azimuths, heights, rows and duplicates: the axis (see
    * above), a circle fit in the plane orthogonal to it (algebraic start,
    * Gauss-Newton on the geometric distance), each view located on the
-   * cylinder, near-duplicates, then rows clustered by height. Returns false
+   * cylinder, near-duplicates, then rows clustered by the gaps between
+   * heights (see MinimumRowGap). Returns false
    * (with an error) when there are fewer than 3 distinct camera centres or
    * they are collinear.
    */
@@ -255,6 +266,25 @@ public:
    */
   void GetSortedViews(vtkIdList* views) const;
 
+  ///@{
+  /**
+   * Whether a view from `eye` extrapolates outside the captured views, in
+   * one line ("" when it does not, or when the rig has no fitted cylinder).
+   * The renderer looks a ray up where it enters the rig cylinder on the
+   * eye's side (Chen et al. 2005, Sec. 6.2) and clamps heights beyond the
+   * outermost rows to them; so the rays from `eye` to the 8 corners and the
+   * centre of `bounds` (xmin, xmax, ymin, ymax, zmin, zmax: what the view
+   * looks at, e.g. the deformed cage) are followed to the cylinder, and the
+   * line says how far the farthest one lands above the highest row or below
+   * the lowest one (by more than 1 % of the radius), or that one lands in
+   * a gap of the ring (an azimuth step more than twice the row's median
+   * step, as on templeRing). Without `bounds` the view is taken to look at
+   * the axis between the lowest and the highest row.
+   */
+  std::string DescribeExtrapolation(const double eye[3], const double bounds[6]) const;
+  std::string DescribeExtrapolation(const double eye[3]) const;
+  ///@}
+
   /**
    * Deep copy of another rig (calibration, names and fit).
    */
@@ -300,7 +330,8 @@ protected:
 
   int ImageSize[2] = { 0, 0 };
   double DuplicateTolerance = 0.01;
-  double RowTolerance = 0.05;
+  double MinimumRowGap = 0.001;
+  double RowGapRatio = 4.0;
   double Axis[3] = { 0.0, 1.0, 0.0 };
   double Center[3] = { 0.0, 0.0, 0.0 };
   double Radius = 0.0;

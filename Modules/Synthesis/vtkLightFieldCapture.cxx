@@ -3,6 +3,7 @@
 #include "lfdPerspectiveDepth.h"
 #include "lfdPinholeCamera.h"
 #include "lfdProjectorMasks.h"
+#include "lfdViewCoverage.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
@@ -20,6 +21,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProceduralObjectSource.h"
@@ -31,6 +33,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -40,6 +43,9 @@
 vtkStandardNewMacro(vtkLightFieldCapture);
 vtkCxxSetObjectMacro(vtkLightFieldCapture, Rig, vtkCameraRig);
 vtkCxxSetObjectMacro(vtkLightFieldCapture, RowHeights, vtkDoubleArray);
+vtkCxxSetObjectMacro(vtkLightFieldCapture, RowElevations, vtkDoubleArray);
+vtkCxxSetObjectMacro(vtkLightFieldCapture, Eyes, vtkPoints);
+vtkCxxSetObjectMacro(vtkLightFieldCapture, EyeTargets, vtkPoints);
 vtkCxxSetObjectMacro(vtkLightFieldCapture, Projectors, vtkCameraRig);
 vtkCxxSetObjectMacro(vtkLightFieldCapture, ProjectorMasks, vtkImageData);
 vtkCxxSetObjectMacro(vtkLightFieldCapture, Palette, vtkUnsignedCharArray);
@@ -49,6 +55,70 @@ namespace
 // Default row spacing as a fraction of the radius: rows ~3 degrees of
 // elevation apart keep the object near the image centre in every row.
 constexpr double DefaultRowSpacingFraction = 0.05;
+// Largest |elevation| of a row in degrees: tan() grows without bound at 90.
+constexpr double MaximumElevation = 89.0;
+
+/// Where the rows of a cylinder rig go, as a function of its radius (the
+/// framing searches the radius): explicit heights, elevations, rows that
+/// cover what eyes see, or evenly spaced rows (vtkLightFieldCapture's
+/// documentation).
+struct RowPlacement
+{
+  std::vector<double> Explicit;
+  std::vector<double> Elevations; // degrees
+  int Count = 1;
+  double Spacing = 0.0; // 0: DefaultRowSpacingFraction x radius
+  std::vector<glm::dvec3> Eyes;
+  std::vector<glm::dvec3> Targets;
+  glm::dvec3 Center{ 0.0 };
+  glm::dvec3 Axis{ 0.0, 1.0, 0.0 };
+  double Margin = 0.0; // x radius
+
+  std::vector<double> Heights(double radius) const
+  {
+    if (!this->Explicit.empty())
+    {
+      return this->Explicit;
+    }
+    std::vector<double> heights;
+    for (double elevation : this->Elevations)
+    {
+      heights.push_back(radius * std::tan(vtkMath::RadiansFromDegrees(elevation)));
+    }
+    if (!heights.empty())
+    {
+      return heights;
+    }
+    const double spacing = this->Spacing > 0.0 ? this->Spacing : DefaultRowSpacingFraction * radius;
+    double low = -0.5 * (this->Count - 1) * spacing;
+    double high = -low;
+    // The heights where the eyes' rays enter the cylinder (Sec. 6.2: where
+    // the renderer looks them up), with the margin.
+    const lfd::Cylinder cylinder{ this->Center, this->Axis, radius };
+    for (const glm::dvec3& eye : this->Eyes)
+    {
+      for (const glm::dvec3& target : this->Targets)
+      {
+        glm::dvec3 entry;
+        if (lfd::RayEntry(cylinder, eye, target, entry))
+        {
+          const double h = glm::dot(entry - this->Center, this->Axis);
+          low = std::min(low, h - this->Margin * radius);
+          high = std::max(high, h + this->Margin * radius);
+        }
+      }
+    }
+    if (this->Count == 1)
+    {
+      return { 0.5 * (low + high) };
+    }
+    for (int r = 0; r < this->Count; ++r)
+    {
+      heights.push_back(low + (high - low) * r / (this->Count - 1));
+    }
+    return heights;
+  }
+};
 // Fraction of the half field of view the framed object may fill.
 constexpr double FramingMargin = 0.9;
 
@@ -686,6 +756,9 @@ vtkLightFieldCapture::~vtkLightFieldCapture()
 {
   this->SetRig(nullptr);
   this->SetRowHeights(nullptr);
+  this->SetRowElevations(nullptr);
+  this->SetEyes(nullptr);
+  this->SetEyeTargets(nullptr);
   this->SetProjectors(nullptr);
   this->SetObjectName(nullptr);
   this->SetProjectorMasks(nullptr);
@@ -768,10 +841,7 @@ int vtkLightFieldCapture::RequestInformation(vtkInformation*,
   }
   else
   {
-    const int rows = (this->RowHeights && this->RowHeights->GetNumberOfTuples() > 0)
-      ? static_cast<int>(this->RowHeights->GetNumberOfTuples())
-      : this->NumberOfRows;
-    views = rows * this->ViewsPerRing;
+    views = this->GetNumberOfRigRows() * this->ViewsPerRing;
   }
   SetOutputLayout(outputVector, width, height, views);
   return 1;
@@ -802,6 +872,20 @@ int vtkLightFieldCapture::RequestUpdateExtent(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
+int vtkLightFieldCapture::GetNumberOfRigRows()
+{
+  if (this->RowHeights && this->RowHeights->GetNumberOfTuples() > 0)
+  {
+    return static_cast<int>(this->RowHeights->GetNumberOfTuples());
+  }
+  if (this->RowElevations && this->RowElevations->GetNumberOfTuples() > 0)
+  {
+    return static_cast<int>(this->RowElevations->GetNumberOfTuples());
+  }
+  return this->NumberOfRows;
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightFieldCapture::BuildRig(const double bounds[6], vtkCameraRig* rig)
 {
   double center[3] = { this->Center[0], this->Center[1], this->Center[2] };
@@ -820,29 +904,50 @@ bool vtkLightFieldCapture::BuildRig(const double bounds[6], vtkCameraRig* rig)
     return false;
   }
 
-  // Heights as a function of the radius: explicit, absolute spacing, or a
-  // spacing proportional to the radius.
-  const bool explicitHeights = this->RowHeights && this->RowHeights->GetNumberOfTuples() > 0;
-  const int rows =
-    explicitHeights ? static_cast<int>(this->RowHeights->GetNumberOfTuples()) : this->NumberOfRows;
-  auto heightsFor = [&](double radius)
+  RowPlacement placement;
+  placement.Center = glm::dvec3(center[0], center[1], center[2]);
+  placement.Axis = glm::dvec3(axis[0], axis[1], axis[2]);
+  placement.Count = this->NumberOfRows;
+  placement.Spacing = this->RowSpacing;
+  placement.Margin = this->RowMargin;
+  if (this->RowHeights && this->RowHeights->GetNumberOfTuples() > 0)
   {
-    std::vector<double> heights(rows);
-    for (int r = 0; r < rows; ++r)
+    for (vtkIdType r = 0; r < this->RowHeights->GetNumberOfTuples(); ++r)
     {
-      if (explicitHeights)
-      {
-        heights[r] = this->RowHeights->GetValue(r);
-      }
-      else
-      {
-        const double spacing =
-          this->RowSpacing > 0.0 ? this->RowSpacing : DefaultRowSpacingFraction * radius;
-        heights[r] = (r - 0.5 * (rows - 1)) * spacing;
-      }
+      placement.Explicit.push_back(this->RowHeights->GetValue(r));
     }
-    return heights;
-  };
+  }
+  else if (this->RowElevations && this->RowElevations->GetNumberOfTuples() > 0)
+  {
+    for (vtkIdType r = 0; r < this->RowElevations->GetNumberOfTuples(); ++r)
+    {
+      const double elevation = this->RowElevations->GetValue(r);
+      if (!(std::abs(elevation) <= MaximumElevation))
+      {
+        vtkErrorMacro("RowElevations: row " << r << " at " << elevation
+                                            << " degrees; an elevation is in [-" << MaximumElevation
+                                            << ", " << MaximumElevation << "] degrees.");
+        return false;
+      }
+      placement.Elevations.push_back(elevation);
+    }
+  }
+  else if (this->Eyes && this->Eyes->GetNumberOfPoints() > 0)
+  {
+    for (vtkIdType e = 0; e < this->Eyes->GetNumberOfPoints(); ++e)
+    {
+      const double* eye = this->Eyes->GetPoint(e);
+      placement.Eyes.emplace_back(eye[0], eye[1], eye[2]);
+    }
+    const std::array<glm::dvec3, 9> probes = lfd::BoundsProbes(bounds);
+    placement.Targets.assign(probes.begin(), probes.end());
+    for (vtkIdType t = 0; this->EyeTargets && t < this->EyeTargets->GetNumberOfPoints(); ++t)
+    {
+      const double* target = this->EyeTargets->GetPoint(t);
+      placement.Targets.emplace_back(target[0], target[1], target[2]);
+    }
+  }
+  const int rows = this->GetNumberOfRigRows();
 
   double radius = this->Radius;
   if (radius <= 0.0)
@@ -862,7 +967,7 @@ bool vtkLightFieldCapture::BuildRig(const double bounds[6], vtkCameraRig* rig)
     auto fits = [&](double r)
     {
       double hmax = 0.0;
-      for (double h : heightsFor(r))
+      for (double h : placement.Heights(r))
       {
         hmax = std::max(hmax, std::abs(h));
       }
@@ -879,8 +984,12 @@ bool vtkLightFieldCapture::BuildRig(const double bounds[6], vtkCameraRig* rig)
     }
     if (doublings >= 60)
     {
-      vtkErrorMacro("Cannot frame the mesh: the rows are too far apart for a view angle of "
-        << this->ViewAngle << " degrees; reduce RowSpacing or widen ViewAngle.");
+      vtkErrorMacro("Cannot frame the mesh: the rows span too wide a range of heights for a view "
+                    "angle of "
+        << this->ViewAngle
+        << " degrees; give fewer or closer rows (NumberOfRows, RowSpacing, RowHeights, "
+           "RowElevations; lfd synth --rows, --row-spacing, --row-heights, --elevations), a "
+           "wider ViewAngle (--view-angle) or a Radius (--radius).");
       return false;
     }
     for (int i = 0; i < 50; ++i)
@@ -891,7 +1000,16 @@ bool vtkLightFieldCapture::BuildRig(const double bounds[6], vtkCameraRig* rig)
     radius = high;
   }
 
-  const std::vector<double> heights = heightsFor(radius);
+  std::vector<double> heights = placement.Heights(radius);
+  std::vector<double> sorted = heights;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+  {
+    vtkErrorMacro("Two rows at the same height "
+      << *std::adjacent_find(sorted.begin(), sorted.end())
+      << " (RowHeights or RowElevations): give each row its own height.");
+    return false;
+  }
   rig->MakeCylinder(center,
     axis,
     radius,
@@ -1070,6 +1188,16 @@ void vtkLightFieldCapture::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << "(none)\n";
   }
+  os << indent << "RowElevations: ";
+  for (vtkIdType r = 0; this->RowElevations && r < this->RowElevations->GetNumberOfTuples(); ++r)
+  {
+    os << this->RowElevations->GetValue(r) << " ";
+  }
+  os << (this->RowElevations ? "\n" : "(none)\n");
+  os << indent << "Eyes: " << (this->Eyes ? this->Eyes->GetNumberOfPoints() : 0) << "\n";
+  os << indent << "EyeTargets: " << (this->EyeTargets ? this->EyeTargets->GetNumberOfPoints() : 0)
+     << "\n";
+  os << indent << "RowMargin: " << this->RowMargin << "\n";
   os << indent << "Width: " << this->Width << "\n";
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "ViewAngle: " << this->ViewAngle << "\n";

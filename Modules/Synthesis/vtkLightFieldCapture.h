@@ -25,11 +25,24 @@
  *   24-bit depth buffer resolves a small fraction of the object size.
  *
  * The rig is a cylinder built with vtkCameraRig::MakeCylinder: NumberOfRows
- * rings (or one ring per entry of RowHeights) of ViewsPerRing cameras about
- * Axis through Center, at distance Radius, Width x Height pixels and a
- * vertical ViewAngle. Radius 0 frames the mesh: the sphere about Center that
- * holds the bounds fills the narrower field of view with a 10 % margin.
- * Rows are symmetric about Center, RowSpacing apart (0 = 0.05 x radius).
+ * rings (or one ring per entry of RowHeights or RowElevations) of
+ * ViewsPerRing cameras about Axis through Center, at distance Radius,
+ * Width x Height pixels and a vertical ViewAngle. Radius 0 frames the mesh:
+ * the sphere about Center that holds the bounds fills the narrower field of
+ * view with a 10 % margin, seen from every row. The rows are placed, by
+ * priority:
+ * - RowHeights: heights along the axis, world units, relative to Center;
+ * - RowElevations: elevation angles (degrees) seen from Center, a row at
+ *   radius x tan(elevation);
+ * - Eyes: NumberOfRows rows spread evenly (at least RowSpacing apart) over
+ *   the heights where the rays from every eye to the mesh bounds (and to
+ *   the EyeTargets) enter the rig cylinder, RowMargin x radius beyond them
+ *   at both ends, so that a renderer at those eyes never clamps a ray to
+ *   the outermost row (issue 11: a camera above the top row lost ~10 dB);
+ * - otherwise NumberOfRows rows symmetric about Center, RowSpacing apart
+ *   (0 = 0.05 x radius).
+ * vtkCameraRig tells rows of any spacing apart (see its MinimumRowGap), so
+ * the spacing is free.
  * Alternatively SetRig() captures from the views of a given rig (its image
  * size wins over Width and Height). The views are rendered as ideal
  * pinholes (vtkCamera): a rig or projector rig with lens distortion is
@@ -85,6 +98,7 @@ class vtkCameraRig;
 class vtkDoubleArray;
 class vtkImageData;
 class vtkLightField;
+class vtkPoints;
 class vtkPolyData;
 class vtkUnsignedCharArray;
 
@@ -124,11 +138,41 @@ public:
 
   ///@{
   /**
-   * Explicit row heights along the axis, relative to Center. When set and
-   * not empty they replace NumberOfRows and RowSpacing.
+   * Explicit row heights along the axis (world units, relative to Center).
+   * When set and not empty they replace NumberOfRows, RowSpacing and Eyes.
    */
   virtual void SetRowHeights(vtkDoubleArray* heights);
   vtkGetObjectMacro(RowHeights, vtkDoubleArray);
+  ///@}
+
+  ///@{
+  /**
+   * Explicit row elevations in degrees (-89..89) seen from Center: a row
+   * at height radius x tan(elevation), so the angles hold whatever radius
+   * the framing chooses. When set and not empty (and RowHeights is not)
+   * they replace NumberOfRows, RowSpacing and Eyes.
+   */
+  virtual void SetRowElevations(vtkDoubleArray* elevations);
+  vtkGetObjectMacro(RowElevations, vtkDoubleArray);
+  ///@}
+
+  ///@{
+  /**
+   * Eyes the rows must cover (e.g. a scene's camera): NumberOfRows rows
+   * are spread over the heights where the rays from each eye to the 8
+   * corners and the centre of the mesh bounds, and to every EyeTargets
+   * point (e.g. a cage's corners at every keyframe), enter the rig
+   * cylinder, extended by RowMargin x radius at both ends (default 0.05),
+   * and over the rows NumberOfRows and RowSpacing give without eyes; the
+   * rows are never closer than RowSpacing (or its default). One row sits in
+   * the middle of those heights. Default nullptr: no eyes.
+   */
+  virtual void SetEyes(vtkPoints* eyes);
+  vtkGetObjectMacro(Eyes, vtkPoints);
+  virtual void SetEyeTargets(vtkPoints* targets);
+  vtkGetObjectMacro(EyeTargets, vtkPoints);
+  vtkSetClampMacro(RowMargin, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(RowMargin, double);
   ///@}
 
   ///@{
@@ -320,6 +364,12 @@ protected:
   bool BuildRig(const double bounds[6], vtkCameraRig* rig);
 
   /**
+   * The number of rows the rig will have: the explicit heights' or
+   * elevations' count, or NumberOfRows.
+   */
+  int GetNumberOfRigRows();
+
+  /**
    * The projectors to simulate for the camera rig `rig` (Projectors, or
    * NumberOfProjectors views of the middle ring); false when there are none.
    */
@@ -330,6 +380,10 @@ protected:
   double Radius = 0.0;
   double RowSpacing = 0.0;
   vtkDoubleArray* RowHeights = nullptr;
+  vtkDoubleArray* RowElevations = nullptr;
+  vtkPoints* Eyes = nullptr;
+  vtkPoints* EyeTargets = nullptr;
+  double RowMargin = 0.05;
   int Width = 256;
   int Height = 256;
   double ViewAngle = 30.0;

@@ -3,6 +3,7 @@ numpy views of VTK arrays, exact-result checks, and the captures, cameras
 and ground-truth evaluations of the deformed-rendering tests."""
 
 import os
+import subprocess
 import sys
 
 import numpy as np
@@ -186,3 +187,9 @@ def expect(name, ev, psnr, ssim, iou):
     check(ev.GetPSNR() > psnr, f"{name}: object PSNR > {psnr} dB", ev.GetPSNR())
     check(ev.GetSSIM() > ssim, f"{name}: object SSIM > {ssim}", ev.GetSSIM())
     check(ev.GetIoU() > iou, f"{name}: silhouette IoU > {iou}", ev.GetIoU())
+
+
+def run_lfd(*args):
+    """Runs the `lfd` executable: (exit status, stdout, stderr)."""
+    result = subprocess.run([LFD, *args], capture_output=True, text=True, timeout=600)
+    return result.returncode, result.stdout, result.stderr

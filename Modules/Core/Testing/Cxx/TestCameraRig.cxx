@@ -1,5 +1,6 @@
 // Cylinder fit of vtkCameraRig: a noisy, tilted synthetic ring with a
-// near-duplicate and a view rolled by 180 degrees, a three-row rig, the fit
+// near-duplicate and a view rolled by 180 degrees, a three-row rig, rows
+// found at every count, spacing and radius (and uneven, noisy rows), the fit
 // made once and cached by the rig's modification time (reading the layout
 // neither fits nor modifies the rig), and the refusal of a degenerate rig.
 #include "lfdCylinderSampling.h"
@@ -14,6 +15,7 @@
 #include <iostream>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -137,7 +139,7 @@ bool TestNoisyRing()
     "a deep copy keeps the fit",
     copy->GetNumberOfDuplicates(),
     2);
-  copy->SetRowTolerance(0.1);
+  copy->SetMinimumRowGap(0.1);
   Check(!copy->HasCylinder() && copy->GetNumberOfRows() == 0 && copy->GetRingLayout().Rows.empty(),
     "a changed tolerance makes the fit stale",
     copy->GetNumberOfRows(),
@@ -184,6 +186,112 @@ void TestRows()
   Check(zero[2] > 1.0 - 1e-12 && quarter[0] > 1.0 - 1e-12, "azimuth frame +Z, +X", zero[2], 1.0);
 }
 
+/// Rows told apart at any spacing (issue 11: a spacing equal to the old
+/// fixed tolerance of 0.05 x radius merged rows): 1, 2, 3, 5, 7 and 11 rows
+/// at spacings from 0.2 % to 100 % of radii from 0.1 to 250, evenly spaced
+/// or not, exact or with noise; a noisy single ring stays one row.
+void TestRowCounts()
+{
+  const double center[3] = { 0.5, -1.0, 2.0 };
+  double axis[3] = { 0.1, 1.0, -0.2 };
+  vtkMath::Normalize(axis);
+  const int counts[] = { 1, 2, 3, 5, 7, 11 };
+  // x radius; from a fifth of the duplicate tolerance (views of two rows
+  // are never near-duplicates, however close) to a whole radius.
+  const double spacings[] = { 0.002, 0.05, 0.2, 1.0 };
+  const double radii[] = { 0.1, 3.0, 250.0 };
+  const int ring = 24;
+  int wrong = 0;
+  int rigs = 0;
+  for (int rows : counts)
+  {
+    for (double spacing : spacings)
+    {
+      for (double radius : radii)
+      {
+        std::vector<double> heights(rows);
+        for (int r = 0; r < rows; ++r)
+        {
+          heights[r] = (r - 0.5 * (rows - 1)) * spacing * radius;
+        }
+        vtkNew<vtkCameraRig> rig;
+        rig->MakeCylinder(center, axis, radius, ring, rows, heights.data(), 32, 32, 30.0);
+        const lfd::RingLayout layout = rig->GetRingLayout();
+        bool ok = rig->HasCylinder() && rig->GetNumberOfRows() == rows &&
+          static_cast<int>(layout.Rows.size()) == rows;
+        for (int r = 0; ok && r < rows; ++r)
+        {
+          ok = static_cast<int>(layout.Rows[r].View.size()) == ring &&
+            std::abs(rig->GetRowHeight(r) - heights[r]) < 1e-9 * radius;
+          for (int k = 0; ok && k < ring; ++k)
+          {
+            ok = rig->GetRow(r * ring + k) == r;
+          }
+        }
+        ++rigs;
+        if (!ok)
+        {
+          ++wrong;
+          std::cout << "     " << rows << " rows " << spacing << " x radius " << radius
+                    << " apart: found " << rig->GetNumberOfRows() << ", row 0 at "
+                    << rig->GetRowHeight(0) << " (built at " << heights[0] << ")\n";
+        }
+      }
+    }
+  }
+  Check(wrong == 0, "rigs with the wrong rows (of 72: 6 counts x 4 spacings x 3 radii)", wrong, 0);
+  Check(rigs == 72, "rigs tried", rigs, 72);
+
+  // Uneven rows (0.1 to 0.8 radius apart) with 0.2 % radius noise on the
+  // centres, and 5 views of a sixth row: 6 rows of 30, 30, 30, 30, 30, 5.
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0.0, 0.002);
+  const double uneven[6] = { -1.0, -0.2, 0.0, 0.1, 0.9, 1.5 };
+  vtkNew<vtkCameraRig> rig;
+  rig->SetImageSize(32, 32);
+  rig->SetNumberOfViews(5 * 30 + 5);
+  const double yAxis[3] = { 0.0, 1.0, 0.0 };
+  int view = 0;
+  for (int r = 0; r < 6; ++r)
+  {
+    const int views = r < 5 ? 30 : 5;
+    for (int k = 0; k < views; ++k, ++view)
+    {
+      const double phi = 2.0 * vtkMath::Pi() * k / views;
+      const double p[3] = {
+        std::cos(phi) + noise(rng), uneven[r] + noise(rng), std::sin(phi) + noise(rng)
+      };
+      const double target[3] = { 0.0, uneven[r], 0.0 };
+      SetLookAt(rig, view, p, target, yAxis);
+    }
+  }
+  const bool fitted = rig->FitCylinder();
+  const lfd::RingLayout layout = rig->GetRingLayout();
+  bool ok = fitted && rig->GetNumberOfRows() == 6 && layout.Rows.size() == 6;
+  for (int r = 0; ok && r < 6; ++r)
+  {
+    ok = layout.Rows[r].View.size() == (r < 5 ? 30u : 5u);
+  }
+  Check(ok, "uneven noisy rows found (6)", rig->GetNumberOfRows(), 6);
+
+  // Rows closer than their own noise are one row: 2 rows 0.002 apart with
+  // 0.002 noise.
+  for (int k = 0; k < 60; ++k)
+  {
+    const double phi = 2.0 * vtkMath::Pi() * k / 30;
+    const double h = k < 30 ? 0.0 : 0.002;
+    const double p[3] = { std::cos(phi) + noise(rng), h + noise(rng), std::sin(phi) + noise(rng) };
+    const double target[3] = { 0.0, h, 0.0 };
+    SetLookAt(rig, k, p, target, yAxis);
+  }
+  rig->SetNumberOfViews(60);
+  const bool refitted = rig->FitCylinder();
+  Check(refitted && rig->GetNumberOfRows() == 1,
+    "rows within the noise are one row",
+    rig->GetNumberOfRows(),
+    1);
+}
+
 /// A degenerate rig is refused with one error line.
 void TestDegenerate()
 {
@@ -218,6 +326,7 @@ int TestCameraRig(int, char*[])
     return EXIT_FAILURE;
   }
   TestRows();
+  TestRowCounts();
   TestDegenerate();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
