@@ -313,6 +313,7 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
   AddSplitCommands(app, numbers, commands);
   AddStudioCommand(app, numbers, commands);
   AddAcquisitionCommands(app, numbers, commands);
+  AddCameraSimCommand(app, numbers, commands);
   AddHelpCommand(app, commands);
 
   ConfigureCommands(&app);

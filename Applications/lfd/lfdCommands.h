@@ -31,6 +31,8 @@ void AddDemoCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>
 void AddStudioCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd gantry-sim`, `lfd gantry status|home|move|stop|reset` (lfdAcquisitionCommands.cxx).
 void AddAcquisitionCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd camera-sim` (lfdCameraSimCommand.cxx).
+void AddCameraSimCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 
 //------------------------------------------------------------------------------
 // Capture (lfdCaptureCommands.cxx), also used by bench, demo and eval.

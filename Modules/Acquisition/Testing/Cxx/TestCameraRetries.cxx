@@ -1,0 +1,79 @@
+// Frames lost on the way from the simulated camera: a dropped frame (never
+// sent) and a damaged one (half its packets lost) are triggered again and
+// the next good frame is returned; a camera whose frames keep getting lost
+// gives one error after MaximumAttempts.
+#include "lfdCameraTestScene.h"
+#include "vtkAravisCamera.h"
+#include "vtkLightFieldErrorObserver.h"
+
+int TestCameraRetries(int, char*[])
+{
+  lfdtest::CameraScene scene;
+  vtkNew<vtkSimulatedRigCamera> simulated;
+  scene.SetUp(simulated);
+  simulated->SetCoaxialLight(true);
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(simulated);
+  vtkNew<vtkAravisCamera> camera;
+  camera->SetAddress("127.0.0.1");
+  camera->SetFrameTimeout(1000);
+  errors->Observe(camera);
+  if (!simulated->Start() || !camera->Open())
+  {
+    std::cerr << errors->GetErrorMessage() << "\n";
+    return EXIT_FAILURE;
+  }
+  vtkSmartPointer<vtkLightField> reference = scene.Reference({ 0 });
+  vtkNew<vtkImageData> frame;
+
+  simulated->DropFrames(1);
+  const bool dropped = camera->Acquire(frame);
+  lfdtest::Check(dropped && camera->GetNumberOfRetries() == 1,
+    "retries after a dropped frame",
+    camera->GetNumberOfRetries(),
+    1);
+  const double afterDrop = dropped ? lfdtest::FramePSNR(frame, reference, 0, 0) : 0.0;
+  lfdtest::Check(afterDrop > 60.0, "PSNR of the frame after the dropped one (dB)", afterDrop, 60.0);
+
+  simulated->DamageFrames(1);
+  const bool damaged = camera->Acquire(frame);
+  lfdtest::Check(damaged && camera->GetNumberOfRetries() == 2,
+    "retries after a damaged frame (total)",
+    camera->GetNumberOfRetries(),
+    2);
+  const double afterDamage = damaged ? lfdtest::FramePSNR(frame, reference, 0, 0) : 0.0;
+  lfdtest::Check(
+    afterDamage > 60.0, "PSNR of the frame after the damaged one (dB)", afterDamage, 60.0);
+  lfdtest::Check(!errors->HasError(), "errors so far", errors->HasError(), 0);
+
+  camera->SetMaximumAttempts(3);
+  camera->SetFrameTimeout(300);
+  simulated->DropFrames(3);
+  const bool failed = !camera->Acquire(frame);
+  const std::string expected =
+    "Camera 127.0.0.1: no good frame after 3 attempts (last: no frame within 300 ms)";
+  const std::string message = errors->GetErrorMessage();
+  std::cout << "error: " << message << "\n";
+  lfdtest::Check(
+    failed && message == expected, "exact error after 3 dropped frames", message == expected, 1);
+  errors->Clear();
+
+  // A gantry that cannot tell its angle: the simulated camera sends nothing.
+  simulated->SetAngleSource([](double&) { return false; });
+  camera->SetMaximumAttempts(1);
+  const bool noAngle = !camera->Acquire(frame);
+  const std::string angleError =
+    "Simulated camera 127.0.0.1: the angle source gave no gantry angle; the frame is dropped.";
+  std::cout << "errors: " << errors->GetErrorMessage() << " | "
+            << (errors->GetNumberOfErrors() > 1 ? errors->GetError(1) : "") << "\n";
+  lfdtest::Check(noAngle && errors->GetNumberOfErrors() == 2 &&
+      errors->GetErrorMessage() == angleError &&
+      std::string(errors->GetError(1)) ==
+        "Camera 127.0.0.1: no good frame after 1 attempt (last: no frame within 300 ms)",
+    "exact errors without a gantry angle",
+    errors->GetNumberOfErrors(),
+    2);
+  camera->Close();
+  simulated->Stop();
+  return lfdtest::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

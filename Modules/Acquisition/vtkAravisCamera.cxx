@@ -1,0 +1,341 @@
+#include "vtkAravisCamera.h"
+
+#include "lfdPixelFormat.h"
+#include "vtkImageData.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <arv.h>
+
+#include <sstream>
+#include <string>
+
+vtkStandardNewMacro(vtkAravisCamera);
+
+namespace
+{
+// The stream settings that loopback and cameras without pacing need
+// (PLATFORM-NOTES.md, Aravis): the kernel buffers a whole frame, packets
+// fit a standard MTU.
+constexpr int SocketBufferBytes = 4 * 1024 * 1024;
+constexpr int PacketBytes = 1400;
+// Frames queued for the stream: one being filled, one late, one spare.
+constexpr int StreamBuffers = 3;
+
+// The GigE Vision codes of vtkAravisCamera::PixelFormats, in their order.
+const ArvPixelFormat WireFormats[] = { ARV_PIXEL_FORMAT_RGB_8_PACKED,
+  ARV_PIXEL_FORMAT_BAYER_RG_8,
+  ARV_PIXEL_FORMAT_BAYER_BG_8,
+  ARV_PIXEL_FORMAT_BAYER_GB_8,
+  ARV_PIXEL_FORMAT_BAYER_GR_8,
+  ARV_PIXEL_FORMAT_MONO_8 };
+
+const char* StatusName(ArvBufferStatus status)
+{
+  switch (status)
+  {
+    case ARV_BUFFER_STATUS_SUCCESS:
+      return "success";
+    case ARV_BUFFER_STATUS_CLEARED:
+      return "cleared";
+    case ARV_BUFFER_STATUS_TIMEOUT:
+      return "timeout while receiving";
+    case ARV_BUFFER_STATUS_MISSING_PACKETS:
+      return "missing packets";
+    case ARV_BUFFER_STATUS_WRONG_PACKET_ID:
+      return "wrong packet id";
+    case ARV_BUFFER_STATUS_SIZE_MISMATCH:
+      return "size mismatch";
+    case ARV_BUFFER_STATUS_FILLING:
+      return "still filling";
+    case ARV_BUFFER_STATUS_ABORTED:
+      return "aborted";
+    default:
+      return "unknown status";
+  }
+}
+
+// The message of a GError, which is then freed.
+std::string Consume(GError*& error)
+{
+  std::string message = error && error->message ? error->message : "unknown error";
+  g_clear_error(&error);
+  return message;
+}
+}
+
+// The Aravis objects of an open camera.
+struct vtkAravisCamera::Device
+{
+  ArvCamera* Camera = nullptr;
+  ArvStream* Stream = nullptr;
+  bool Acquiring = false;
+
+  ~Device()
+  {
+    if (this->Acquiring)
+    {
+      arv_camera_stop_acquisition(this->Camera, nullptr);
+    }
+    g_clear_object(&this->Stream);
+    g_clear_object(&this->Camera);
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkAravisCamera::vtkAravisCamera() = default;
+
+//------------------------------------------------------------------------------
+vtkAravisCamera::~vtkAravisCamera()
+{
+  this->Close();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkAravisCamera::GetPixelFormatName(int format)
+{
+  return format >= RGB8 && format <= MONO8
+    ? lfd::PixelFormatName(static_cast<lfd::PixelFormat>(format))
+    : nullptr;
+}
+
+//------------------------------------------------------------------------------
+int vtkAravisCamera::GetPixelFormatFromName(const char* name)
+{
+  for (int format = RGB8; name && format <= MONO8; ++format)
+  {
+    if (std::string(name) == GetPixelFormatName(format))
+    {
+      return format;
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAravisCamera::Open()
+{
+  this->Close();
+  const std::string address = this->Address ? this->Address : "";
+  if (address.empty())
+  {
+    vtkErrorMacro("Camera: no Address set (an IP address or an Aravis device id).");
+    return false;
+  }
+  auto device = std::unique_ptr<Device>(new Device);
+  GError* error = nullptr;
+  device->Camera = arv_camera_new(address.c_str(), &error);
+  if (!device->Camera)
+  {
+    vtkErrorMacro("Camera " << address << ": cannot connect: " << Consume(error));
+    return false;
+  }
+  // Each setting is one GenICam feature; a camera that refuses one is named
+  // with the feature and the value it refused.
+  auto refused = [&](const std::string& feature) -> bool
+  {
+    if (!error)
+    {
+      return false;
+    }
+    vtkErrorMacro("Camera " << address << ": refuses " << feature << ": " << Consume(error));
+    return true;
+  };
+  if (arv_camera_is_gv_device(device->Camera))
+  {
+    arv_gv_device_set_stream_options(ARV_GV_DEVICE(arv_camera_get_device(device->Camera)),
+      ARV_GV_STREAM_OPTION_PACKET_SOCKET_DISABLED);
+    arv_camera_gv_set_packet_size(device->Camera, PacketBytes, &error);
+    if (refused("GevSCPSPacketSize = " + std::to_string(PacketBytes)))
+    {
+      return false;
+    }
+  }
+  arv_camera_clear_triggers(device->Camera, &error);
+  if (refused("TriggerMode = Off (clearing the triggers)"))
+  {
+    return false;
+  }
+  const char* format = GetPixelFormatName(this->PixelFormat);
+  arv_camera_set_pixel_format_from_string(device->Camera, format, &error);
+  if (refused(std::string("PixelFormat = ") + format))
+  {
+    return false;
+  }
+  // Aravis writes any value into a camera's registers; a value outside the
+  // camera's own bounds is refused here, with the bounds.
+  auto setBounded = [&](const char* feature,
+                      double value,
+                      const char* unit,
+                      void (*getBounds)(ArvCamera*, double*, double*, GError**),
+                      void (*set)(ArvCamera*, double, GError**)) -> bool
+  {
+    std::ostringstream setting;
+    setting << feature << " = " << value << " " << unit;
+    double low = 0.0, high = 0.0;
+    getBounds(device->Camera, &low, &high, &error);
+    if (refused(setting.str() + " (reading its range)"))
+    {
+      return false;
+    }
+    if (value < low || value > high)
+    {
+      vtkErrorMacro("Camera " << address << ": refuses " << setting.str() << ": its range is ["
+                              << low << ", " << high << "] " << unit);
+      return false;
+    }
+    set(device->Camera, value, &error);
+    return !refused(setting.str());
+  };
+  if (!setBounded("ExposureTime",
+        this->ExposureTime,
+        "us",
+        &arv_camera_get_exposure_time_bounds,
+        &arv_camera_set_exposure_time) ||
+    !setBounded("Gain", this->Gain, "dB", &arv_camera_get_gain_bounds, &arv_camera_set_gain))
+  {
+    return false;
+  }
+  arv_camera_set_acquisition_mode(device->Camera, ARV_ACQUISITION_MODE_CONTINUOUS, &error);
+  if (refused("AcquisitionMode = Continuous"))
+  {
+    return false;
+  }
+  arv_camera_set_trigger(device->Camera, "Software", &error);
+  if (refused("TriggerSource = Software"))
+  {
+    return false;
+  }
+  int x = 0, y = 0;
+  arv_camera_get_region(device->Camera, &x, &y, &this->FrameSize[0], &this->FrameSize[1], &error);
+  const guint payload = error ? 0 : arv_camera_get_payload(device->Camera, &error);
+  if (refused("Width, Height and PayloadSize (reading the frame size)"))
+  {
+    return false;
+  }
+  device->Stream = arv_camera_create_stream(device->Camera, nullptr, nullptr, &error);
+  if (!device->Stream)
+  {
+    vtkErrorMacro("Camera " << address << ": cannot open its stream: " << Consume(error));
+    return false;
+  }
+  if (ARV_IS_GV_STREAM(device->Stream))
+  {
+    g_object_set(device->Stream,
+      "socket-buffer",
+      ARV_GV_STREAM_SOCKET_BUFFER_FIXED,
+      "socket-buffer-size",
+      SocketBufferBytes,
+      nullptr);
+  }
+  for (int i = 0; i < StreamBuffers; ++i)
+  {
+    arv_stream_push_buffer(device->Stream, arv_buffer_new(payload, nullptr));
+  }
+  arv_camera_start_acquisition(device->Camera, &error);
+  if (refused("AcquisitionStart"))
+  {
+    return false;
+  }
+  device->Acquiring = true;
+  this->NumberOfRetries = 0;
+  this->Connection = std::move(device);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAravisCamera::Acquire(vtkImageData* frame)
+{
+  const std::string address = this->Address ? this->Address : "";
+  if (!this->Connection)
+  {
+    vtkErrorMacro("Camera " << address << ": not open; call Open() first.");
+    return false;
+  }
+  if (!frame)
+  {
+    vtkErrorMacro("Camera " << address << ": Acquire() needs an image to fill.");
+    return false;
+  }
+  ArvCamera* camera = this->Connection->Camera;
+  ArvStream* stream = this->Connection->Stream;
+  std::string problem;
+  for (int attempt = 0; attempt < this->MaximumAttempts; ++attempt)
+  {
+    // A frame that came after its attempt gave up would be taken for this
+    // one: give it back to the stream first.
+    while (ArvBuffer* late = arv_stream_try_pop_buffer(stream))
+    {
+      arv_stream_push_buffer(stream, late);
+    }
+    if (attempt > 0)
+    {
+      ++this->NumberOfRetries;
+    }
+    GError* error = nullptr;
+    arv_camera_software_trigger(camera, &error);
+    if (error)
+    {
+      vtkErrorMacro("Camera " << address << ": refuses TriggerSoftware: " << Consume(error));
+      return false;
+    }
+    ArvBuffer* buffer =
+      arv_stream_timeout_pop_buffer(stream, static_cast<guint64>(this->FrameTimeout) * 1000);
+    if (!buffer)
+    {
+      problem = "no frame within " + std::to_string(this->FrameTimeout) + " ms";
+      continue;
+    }
+    const ArvBufferStatus status = arv_buffer_get_status(buffer);
+    if (status != ARV_BUFFER_STATUS_SUCCESS)
+    {
+      problem = std::string("frame ") + StatusName(status);
+      arv_stream_push_buffer(stream, buffer);
+      continue;
+    }
+    const int width = arv_buffer_get_image_width(buffer);
+    const int height = arv_buffer_get_image_height(buffer);
+    size_t size = 0;
+    const auto* data = static_cast<const unsigned char*>(arv_buffer_get_image_data(buffer, &size));
+    const auto wire = static_cast<lfd::PixelFormat>(this->PixelFormat);
+    if (arv_buffer_get_image_pixel_format(buffer) != WireFormats[this->PixelFormat] ||
+      size < static_cast<size_t>(width) * height * lfd::PixelFormatBytes(wire))
+    {
+      arv_stream_push_buffer(stream, buffer);
+      vtkErrorMacro("Camera " << address << ": sent a frame of " << width << " x " << height
+                              << " pixels in " << size << " bytes, not "
+                              << GetPixelFormatName(this->PixelFormat));
+      return false;
+    }
+    frame->SetDimensions(width, height, 1);
+    frame->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    lfd::DecodePixels(
+      data, width, height, wire, static_cast<unsigned char*>(frame->GetScalarPointer()));
+    frame->GetPointData()->GetScalars()->SetName("RGB");
+    arv_stream_push_buffer(stream, buffer);
+    return true;
+  }
+  vtkErrorMacro("Camera " << address << ": no good frame after " << this->MaximumAttempts
+                          << (this->MaximumAttempts == 1 ? " attempt" : " attempts")
+                          << " (last: " << problem << ")");
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkAravisCamera::Close()
+{
+  this->Connection.reset();
+}
+
+//------------------------------------------------------------------------------
+void vtkAravisCamera::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "PixelFormat: " << GetPixelFormatName(this->PixelFormat) << "\n";
+  os << indent << "FrameTimeout: " << this->FrameTimeout << " ms\n";
+  os << indent << "MaximumAttempts: " << this->MaximumAttempts << "\n";
+  os << indent << "NumberOfRetries: " << this->NumberOfRetries << "\n";
+  os << indent << "FrameSize: " << this->FrameSize[0] << " x " << this->FrameSize[1] << "\n";
+  os << indent << "Open: " << (this->Connection ? "yes" : "no") << "\n";
+}
