@@ -112,8 +112,11 @@ bool vtkCaptureSession::Run(bool resume)
   {
     this->DeviceErrors->Observe(light);
   }
-  bool ok = resume ? this->Writer->Resume() : this->Writer->Start();
-  ok = ok ? this->PrepareDevices() : this->Fail(std::string());
+  // A new dataset is created once the devices are ready (an unreachable
+  // device leaves nothing behind); a resumed one is checked first.
+  bool ok = !resume || this->Writer->Resume() || this->Fail(std::string());
+  ok = ok && this->PrepareDevices();
+  ok = ok && (resume || this->Writer->Start() || this->Fail(std::string()));
   const int planned = this->Writer->GetNumberOfPlannedViews();
   const Clock::time_point start = Clock::now();
   for (int view = this->Writer->GetNumberOfCompleteViews(); ok && view < planned; ++view)
@@ -150,7 +153,6 @@ bool vtkCaptureSession::Run(bool resume)
 //------------------------------------------------------------------------------
 bool vtkCaptureSession::PrepareDevices()
 {
-  const Clock::time_point start = Clock::now();
   vtkModbusGantry* gantry = this->Gantry;
   bool ok = gantry->Connect() && gantry->UpdateState();
   // A fault left by the run that failed is cleared: resuming is the user's
@@ -165,7 +167,6 @@ bool vtkCaptureSession::PrepareDevices()
   {
     return this->Fail("opening the camera");
   }
-  this->DeviceSeconds += SecondsSince(start);
   return true;
 }
 

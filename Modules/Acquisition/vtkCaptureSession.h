@@ -110,10 +110,11 @@ public:
 
   ///@{
   /**
-   * The last run: views taken by it, the total seconds the gantry spent
-   * moving (and homing) and the camera acquiring, and everything else
-   * (lights, writing, the session's own work) from the first move to the
-   * last commit; the estimate of the seconds still needed (after each view).
+   * The last run: views taken by it; from the first move to the last
+   * commit, the seconds the gantry spent moving and the camera acquiring,
+   * and the seconds of everything else (lights, writing, the session's own
+   * work; connecting and homing before are in neither); the estimate of the
+   * seconds still needed (after each view).
    */
   vtkGetMacro(NumberOfViewsTaken, int);
   vtkGetMacro(DeviceSeconds, double);

@@ -267,6 +267,11 @@ int TestCaptureSession(int, char*[])
     "abort: stopped after 1 view without error",
     rig.Session->GetNumberOfViewsTaken());
 
+  // A capture is never started over an existing one.
+  ok &= Check(!rig.Run(silent, false), "an existing capture is not replaced", "");
+  ok &= CheckError(rig.Errors,
+    silent + ": exists; resume that capture, or choose a new name (it is never replaced)");
+
   // The camera gone before view 2 of the resumed silent capture.
   rig.AfterView = [&rig](int complete)
   {
@@ -288,9 +293,5 @@ int TestCaptureSession(int, char*[])
     "camera gone: 2 views listed and written",
     CountFiles(silent, temporaries));
 
-  // A capture is never started over an existing one.
-  ok &= Check(!rig.Run(silent, false), "an existing capture is not replaced", "");
-  ok &= CheckError(rig.Errors,
-    silent + ": exists; resume that capture, or choose a new name (it is never replaced)");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
