@@ -67,7 +67,9 @@ struct CaptureRig
       this->Session->AddLight(this->Projectors[p]);
     }
     this->Camera->SetAddress("127.0.0.1");
-    this->Camera->SetFrameTimeout(300);
+    // Generous: a retried trigger under load could deliver the late frame
+    // of the first (the camera gone fails at its trigger, not here).
+    this->Camera->SetFrameTimeout(3000);
     this->Camera->SetMaximumAttempts(2);
     // Fast moves: a 10 degree step takes about 0.1 s.
     this->Gantry.Gantry->SetVelocity(360.0);
