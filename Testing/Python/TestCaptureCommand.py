@@ -3,7 +3,8 @@ simulator (Modbus TCP, a free port) and the simulated rig camera (GigE
 Vision, 127.0.0.1) served by the lfd process, 12 positions x 3 passes of a
 36-view ring of `lfd synth` with 2 projectors. The process is killed with
 SIGKILL mid-capture: the dataset then lists only complete views, every listed
-image is whole; `--resume` completes it with no view lost or duplicated
+image is whole; resumed and stopped with Ctrl-C (SIGINT) after the current
+view; `--resume` completes it with no view lost or duplicated
 (each image once, no temporary left). The capture matches `lfd synth`'s
 views of the same positions (PSNR) and `lfd split projector` labels it. Bad input: an unreachable gantry is one error naming it."""
 import glob
@@ -60,10 +61,25 @@ t.check(not errors.GetErrorMessage() and reader.GetOutput().GetNumberOfViews() =
         "the killed capture reads back with its listed views",
         errors.GetErrorMessage() or reader.GetOutput().GetNumberOfViews())
 
+# Resumed, then Ctrl-C once a view more is complete: stops after the view
+# being taken.
+process = subprocess.Popen(capture + ["--resume"], stdout=subprocess.PIPE,
+                           stderr=subprocess.PIPE, text=True)
+deadline = time.time() + 60
+while listed_views() <= killed_at and process.poll() is None and time.time() < deadline:
+    time.sleep(0.05)
+process.send_signal(signal.SIGINT)
+_, err = process.communicate(timeout=60)
+interrupted_at = listed_views()
+t.check(process.returncode == 1 and killed_at < interrupted_at < 12 and
+        f"lfd: error: interrupted: {interrupted_at} of 12 views complete in '{out}'; continue "
+        "with --resume" in err, "Ctrl-C stops after the current view",
+        err.strip().splitlines()[-1:])
+
 resumed = subprocess.run(capture + ["--resume"], capture_output=True, text=True)
 t.check(resumed.returncode == 0 and
-        f"Captured 12 views x 3 passes into {out} ({12 - killed_at} of them now; "
-        f"{killed_at} were complete)" in resumed.stdout,
+        f"Captured 12 views x 3 passes into {out} ({12 - interrupted_at} of them now; "
+        f"{interrupted_at} were complete)" in resumed.stdout,
         "--resume completes the capture", resumed.stdout.strip() or resumed.stderr.strip())
 print(resumed.stdout.strip())
 names = sorted(os.path.relpath(p, out) for p in glob.glob(os.path.join(out, "**", "*"),
