@@ -316,6 +316,7 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
   AddStudioCommand(app, numbers, commands);
   AddAcquisitionCommands(app, numbers, commands);
   AddCameraSimCommand(app, numbers, commands);
+  AddCaptureSessionCommand(app, numbers, commands);
   AddHelpCommand(app, commands);
 
   ConfigureCommands(&app);

@@ -42,6 +42,8 @@ void AddStudioCommand(CLI::App& app, NumericOptions& numbers, std::vector<Comman
 void AddAcquisitionCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd camera-sim` (lfdCameraSimCommand.cxx).
 void AddCameraSimCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd capture` (lfdCaptureSessionCommand.cxx).
+void AddCaptureSessionCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 
 //------------------------------------------------------------------------------
 // Capture (lfdCaptureCommands.cxx), also used by bench, demo and eval.
