@@ -19,8 +19,10 @@ case "$what" in
     ;;
   test)
     "$here/Utilities/setup.sh"
+    # Tests in parallel, one per core: tests sharing a port hold a CTest
+    # resource lock, the sanitizer suite runs alone (RUN_SERIAL).
     exec xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
-      ctest --test-dir "$build" --output-on-failure "$@"
+      ctest --test-dir "$build" -j "$(nproc)" --output-on-failure "$@"
     ;;
   *)
     echo "usage: Utilities/run.sh demo|test [options]" >&2
