@@ -43,7 +43,9 @@ void AddAcquisitionCommands(CLI::App& app, NumericOptions& numbers, std::vector<
 /// `lfd camera-sim` (lfdCameraSimCommand.cxx).
 void AddCameraSimCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd capture` (lfdCaptureSessionCommand.cxx).
-void AddCaptureSessionCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+void AddCaptureSessionCommand(CLI::App& app,
+  NumericOptions& numbers,
+  std::vector<Command>& commands);
 
 //------------------------------------------------------------------------------
 // Capture (lfdCaptureCommands.cxx), also used by bench, demo and eval.
