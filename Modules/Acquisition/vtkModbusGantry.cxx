@@ -484,9 +484,9 @@ bool vtkModbusGantry::Enable()
   uint16_t registers[gantry::Watchdog - gantry::Velocity];
   registers[0] = static_cast<uint16_t>(std::lround(this->Velocity / gantry::VelocityUnit));
   registers[1] = static_cast<uint16_t>(std::lround(this->Acceleration / gantry::AccelerationUnit));
-  gantry::SetInt32(registers + gantry::SoftLimitMinimum - gantry::Velocity,
+  gantry::SetInt32(registers + (gantry::SoftLimitMinimum - gantry::Velocity),
     static_cast<int32_t>(std::lround(this->SoftLimits[0] / gantry::PositionUnit)));
-  gantry::SetInt32(registers + gantry::SoftLimitMaximum - gantry::Velocity,
+  gantry::SetInt32(registers + (gantry::SoftLimitMaximum - gantry::Velocity),
     static_cast<int32_t>(std::lround(this->SoftLimits[1] / gantry::PositionUnit)));
   registers[gantry::WatchdogTimeout - gantry::Velocity] =
     static_cast<uint16_t>(std::lround(this->WatchdogTimeout * 1000.0));
