@@ -3,7 +3,10 @@
 #include "lfdColour.h"
 #include "lfdLabelMorphology.h"
 #include "vtkLabelPalette.h"
+#include "vtkLabelPropagation.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldErrorObserver.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
@@ -144,6 +147,7 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input,
   vtkLightField* output,
   std::string& error)
 {
+  this->NumberOfCompletedPixels = 0;
   auto* codedArray = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::CODED));
   auto* floodArray = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::FLOOD));
   if (!codedArray || !floodArray)
@@ -227,6 +231,45 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input,
         }
       }
     });
+  return !this->CompleteLabels || !input->GetPass(vtkLightField::COAXIAL) ||
+    this->Complete(input, output, error);
+}
+
+//------------------------------------------------------------------------------
+bool vtkProjectorSegmentation::Complete(vtkLightField* input,
+  vtkLightField* output,
+  std::string& error)
+{
+  auto* labels = vtkUnsignedCharArray::SafeDownCast(output->GetPass(vtkLightField::LABEL));
+  unsigned char* label = labels->GetPointer(0);
+  const vtkIdType values = labels->GetNumberOfTuples();
+  if (std::none_of(label, label + values, [](unsigned char l) { return l != 0; }))
+  {
+    return true; // nothing decided to complete from
+  }
+  vtkNew<vtkLabelPropagation> propagation;
+  propagation->SetInputData(input);
+  propagation->SetThreshold(this->ObjectThreshold);
+  propagation->SetPaintedViews(labels, input->GetWidth(), input->GetHeight());
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(propagation);
+  propagation->Update();
+  if (errors->HasError() || propagation->GetErrorCode() != 0)
+  {
+    error = "vtkProjectorSegmentation: completing the pixels no projector decided: " +
+      std::string(errors->HasError() ? errors->GetErrorMessage() : "the propagation failed");
+    return false;
+  }
+  const unsigned char* completed = static_cast<const unsigned char*>(
+    propagation->GetOutput()->GetPass(vtkLightField::LABEL)->GetVoidPointer(0));
+  for (vtkIdType i = 0; i < values; ++i)
+  {
+    if (label[i] == 0 && completed[i] != 0)
+    {
+      label[i] = completed[i];
+      ++this->NumberOfCompletedPixels;
+    }
+  }
   return true;
 }
 
@@ -241,4 +284,7 @@ void vtkProjectorSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RejectionFactor: " << this->RejectionFactor << "\n";
   os << indent << "MinimumConfidence: " << this->MinimumConfidence << "\n";
   os << indent << "MorphologyRadius: " << this->MorphologyRadius << "\n";
+  os << indent << "CompleteLabels: " << this->CompleteLabels << "\n";
+  os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
+  os << indent << "NumberOfCompletedPixels: " << this->NumberOfCompletedPixels << "\n";
 }
