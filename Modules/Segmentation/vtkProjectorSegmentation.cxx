@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkProjectorSegmentation);
@@ -256,8 +257,19 @@ bool vtkProjectorSegmentation::Complete(vtkLightField* input,
   propagation->Update();
   if (errors->HasError() || propagation->GetErrorCode() != 0)
   {
-    error = "vtkProjectorSegmentation: completing the pixels no projector decided: " +
-      std::string(errors->HasError() ? errors->GetErrorMessage() : "the propagation failed");
+    std::ostringstream proxy;
+    if (input->GetPass(vtkLightField::DEPTH))
+    {
+      proxy << "Depth pass";
+    }
+    else
+    {
+      proxy << "visual hull (Coaxial brighter than ObjectThreshold " << this->ObjectThreshold
+            << ")";
+    }
+    error = "vtkProjectorSegmentation: completing the pixels no projector decided through the " +
+      proxy.str() + ": " +
+      (errors->HasError() ? errors->GetErrorMessage() : "the propagation failed");
     return false;
   }
   const unsigned char* completed = static_cast<const unsigned char*>(

@@ -327,6 +327,18 @@ no_flood.GetPointData().RemoveArray("Flood")
 seg = segment(no_flood)
 t.check("no Flood pass" in seg.errors.GetErrorMessage(), "missing Flood pass",
         seg.errors.GetErrorMessage())
+# Projector labels on an object the Coaxial pass does not show: the
+# completion has no hull to carry them through, one error says so.
+unseen = light_field(np.tile(pal[1].astype(np.uint8), (8, 8, 1)), np.full((8, 8, 3), 255, np.uint8),
+                     colours)
+unseen.AllocatePass(lfd.vtkLightField.COAXIAL).Fill(0)
+seg = segment(unseen, NoiseSigma=0.0, MorphologyRadius=0)
+t.check(seg.errors.GetErrorMessage() == "vtkProjectorSegmentation: completing the pixels no "
+        "projector decided through the visual hull (Coaxial brighter than ObjectThreshold 20): "
+        "vtkLabelPropagation: no painted pixel lands on the proxy (are the label images empty, "
+        "or of other views?)" and seg.GetOutput().GetNumberOfPoints() == 0,
+        "completion without an object in the Coaxial pass: one error, no output",
+        seg.errors.GetErrorMessage())
 no_palette = lfd.vtkLightField()
 no_palette.DeepCopy(fish_lf)
 no_palette.SetPalette(None)
