@@ -259,6 +259,15 @@ void CaptureLightField(CaptureSessionOptions options)
   camera->SetAddress(options.Camera.c_str());
   camera->SetExposureTime(options.Exposure);
   camera->SetGain(options.Gain);
+  if (options.Simulate)
+  {
+    // A simulated frame is a render, which a loaded machine can stretch
+    // past the 2 s a real exposure gets. A trigger retried meanwhile is
+    // queued by the fake camera and answered by one more frame, which the
+    // next pass can take for its own (seen at load 18: a view's Flood pass
+    // holding its Coded image).
+    camera->SetFrameTimeout(30000);
+  }
 
   vtkNew<vtkCaptureSession> session;
   session->SetGantry(gantry);

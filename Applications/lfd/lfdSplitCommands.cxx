@@ -42,6 +42,8 @@ struct SplitOptions
   double Tolerance = 1.5;
   double Threshold = -1.0;
   int Morphology = 1;
+  bool NoCompletion = false;
+  double ObjectThreshold = 20.0;
   std::string Scene;
 };
 
@@ -112,8 +114,16 @@ void SplitProjector(const SplitOptions& options)
   {
     segmentation->SetDarkThreshold(options.Threshold);
   }
+  segmentation->SetCompleteLabels(!options.NoCompletion);
+  segmentation->SetObjectThreshold(options.ObjectThreshold);
   RunSplit(segmentation, lightField, options);
   std::printf("sensor noise sigma: %.2f\n", segmentation->GetEstimatedNoise());
+  if (!options.NoCompletion)
+  {
+    std::printf("completed pixels (no projector decided them): %lld, through the %s\n",
+      static_cast<long long>(segmentation->GetNumberOfCompletedPixels()),
+      lightField->GetPass(vtkLightField::DEPTH) ? "Depth pass" : "visual hull");
+  }
 }
 
 void SplitScanline(const SplitOptions& options)
@@ -272,7 +282,8 @@ void AddSplitCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comman
   };
   auto* splitProjector = splitCommand->add_subcommand("projector",
     "label by the projector colour masks: Eq. 1 normalisation of Coded by Flood, nearest "
-    "palette colour (CIELAB), morphological clean-up");
+    "palette colour (CIELAB), morphological clean-up, completion of the undecided object "
+    "pixels");
   addSplitIO(splitProjector);
   numbers
     .Add(splitProjector,
@@ -288,6 +299,19 @@ void AddSplitCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comman
     projectorLimits->GetMorphologyRadiusMinValue(),
     projectorLimits->GetMorphologyRadiusMaxValue(),
     "clean-up radius in pixels (0 = none)");
+  splitProjector->add_flag("--no-completion",
+    split->NoCompletion,
+    "leave the object pixels no projector decided (unlit, or of no clear palette colour) "
+    "unlabelled; by default they take the labels of the decided pixels of every view, carried "
+    "through the Depth pass or the visual hull (an unlabelled object pixel renders as "
+    "background)");
+  numbers.Add(splitProjector,
+    "--object-threshold",
+    split->ObjectThreshold,
+    projectorLimits->GetObjectThresholdMinValue(),
+    projectorLimits->GetObjectThresholdMaxValue(),
+    "completion through the visual hull: Coaxial level (mean of RGB) above which a pixel is "
+    "object");
   auto* splitScanline = splitCommand->add_subcommand("scanline",
     "label by image rows within the object (aligned rings): band 1 above the first row, ...");
   addSplitIO(splitScanline);

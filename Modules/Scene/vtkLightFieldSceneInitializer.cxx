@@ -29,22 +29,15 @@ vtkStandardNewMacro(vtkLightFieldSceneInitializer);
 
 namespace
 {
-// View `view` of a one-component pass, or of a constant, as a painted label
-// image for vtkLabelPropagation (VTK row order, like the pass).
-vtkSmartPointer<vtkImageData> PaintedView(vtkLightField* lightField, vtkDataArray* labels, int view)
+// View 0 painted label 1 all over, for a hull whose labels do not matter.
+vtkSmartPointer<vtkImageData> PaintedAllOne(vtkLightField* lightField)
 {
-  const int width = lightField->GetWidth();
-  const int height = lightField->GetHeight();
-  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
   auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(width, height, 1);
+  image->SetDimensions(lightField->GetWidth(), lightField->GetHeight(), 1);
   vtkNew<vtkUnsignedCharArray> painted;
-  painted->SetNumberOfTuples(pixels);
-  for (vtkIdType p = 0; p < pixels; ++p)
-  {
-    painted->SetValue(
-      p, labels ? static_cast<unsigned char>(labels->GetComponent(view * pixels + p, 0)) : 1);
-  }
+  painted->SetNumberOfTuples(
+    static_cast<vtkIdType>(lightField->GetWidth()) * lightField->GetHeight());
+  painted->FillValue(1);
   image->GetPointData()->SetScalars(painted);
   return image;
 }
@@ -156,9 +149,13 @@ bool vtkLightFieldSceneInitializer::Initialize(vtkLightFieldSceneLogic* logic)
   hull->SetResolution(this->Resolution);
   hull->SetThreshold(this->Threshold);
   const bool byLabel = this->BoxMode == LABELS;
-  for (int view = 0; view < (byLabel ? lightField->GetNumberOfViews() : 1); ++view)
+  if (byLabel)
   {
-    hull->SetPaintedView(view, PaintedView(lightField, byLabel ? labels : nullptr, view));
+    hull->SetPaintedViews(labels, lightField->GetWidth(), lightField->GetHeight());
+  }
+  else
+  {
+    hull->SetPaintedView(0, PaintedAllOne(lightField));
   }
   vtkNew<vtkLightFieldErrorObserver> errors;
   errors->Observe(hull);

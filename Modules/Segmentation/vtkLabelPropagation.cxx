@@ -510,6 +510,28 @@ void vtkLabelPropagation::SetPaintedView(int view, vtkImageData* labels)
 }
 
 //------------------------------------------------------------------------------
+void vtkLabelPropagation::SetPaintedViews(vtkDataArray* labels, int width, int height)
+{
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  this->Painted.clear();
+  for (int view = 0; labels && pixels > 0 && (view + 1) * pixels <= labels->GetNumberOfTuples();
+       ++view)
+  {
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(width, height, 1);
+    vtkNew<vtkUnsignedCharArray> painted;
+    painted->SetNumberOfTuples(pixels);
+    for (vtkIdType p = 0; p < pixels; ++p)
+    {
+      painted->SetValue(p, static_cast<unsigned char>(labels->GetComponent(view * pixels + p, 0)));
+    }
+    image->GetPointData()->SetScalars(painted);
+    this->Painted[view] = image;
+  }
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkLabelPropagation::RemoveAllPaintedViews()
 {
   this->Painted.clear();

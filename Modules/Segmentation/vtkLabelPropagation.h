@@ -45,6 +45,7 @@
 
 #include <map> // For std::map
 
+class vtkDataArray;
 class vtkImageData;
 class vtkPolyData;
 
@@ -63,8 +64,21 @@ public:
    */
   void SetPaintedView(int view, vtkImageData* labels);
   void RemoveAllPaintedViews();
-  int GetNumberOfPaintedViews() const { return static_cast<int>(this->Painted.size()); }
   ///@}
+
+  /**
+   * Paints every view at once from a one-component array of width x height
+   * x views values in the light field's layout, e.g. a Label pass (0 =
+   * unpainted): view v gets a copy of the v-th width x height slice. A
+   * splitter that decides only some pixels (vtkProjectorSegmentation)
+   * completes the others this way.
+   */
+  void SetPaintedViews(vtkDataArray* labels, int width, int height);
+
+  /**
+   * The number of painted views.
+   */
+  int GetNumberOfPaintedViews() const { return static_cast<int>(this->Painted.size()); }
 
   enum ProxyType
   {

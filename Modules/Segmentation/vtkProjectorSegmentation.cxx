@@ -3,7 +3,10 @@
 #include "lfdColour.h"
 #include "lfdLabelMorphology.h"
 #include "vtkLabelPalette.h"
+#include "vtkLabelPropagation.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldErrorObserver.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
@@ -11,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkProjectorSegmentation);
@@ -144,6 +148,7 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input,
   vtkLightField* output,
   std::string& error)
 {
+  this->NumberOfCompletedPixels = 0;
   auto* codedArray = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::CODED));
   auto* floodArray = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::FLOOD));
   if (!codedArray || !floodArray)
@@ -227,6 +232,56 @@ bool vtkProjectorSegmentation::Split(vtkLightField* input,
         }
       }
     });
+  return !this->CompleteLabels || !input->GetPass(vtkLightField::COAXIAL) ||
+    this->Complete(input, output, error);
+}
+
+//------------------------------------------------------------------------------
+bool vtkProjectorSegmentation::Complete(vtkLightField* input,
+  vtkLightField* output,
+  std::string& error)
+{
+  auto* labels = vtkUnsignedCharArray::SafeDownCast(output->GetPass(vtkLightField::LABEL));
+  unsigned char* label = labels->GetPointer(0);
+  const vtkIdType values = labels->GetNumberOfTuples();
+  if (std::none_of(label, label + values, [](unsigned char l) { return l != 0; }))
+  {
+    return true; // nothing decided to complete from
+  }
+  vtkNew<vtkLabelPropagation> propagation;
+  propagation->SetInputData(input);
+  propagation->SetThreshold(this->ObjectThreshold);
+  propagation->SetPaintedViews(labels, input->GetWidth(), input->GetHeight());
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(propagation);
+  propagation->Update();
+  if (errors->HasError() || propagation->GetErrorCode() != 0)
+  {
+    std::ostringstream proxy;
+    if (input->GetPass(vtkLightField::DEPTH))
+    {
+      proxy << "Depth pass";
+    }
+    else
+    {
+      proxy << "visual hull (Coaxial brighter than ObjectThreshold " << this->ObjectThreshold
+            << ")";
+    }
+    error = "vtkProjectorSegmentation: completing the pixels no projector decided through the " +
+      proxy.str() + ": " +
+      (errors->HasError() ? errors->GetErrorMessage() : "the propagation failed");
+    return false;
+  }
+  const unsigned char* completed = static_cast<const unsigned char*>(
+    propagation->GetOutput()->GetPass(vtkLightField::LABEL)->GetVoidPointer(0));
+  for (vtkIdType i = 0; i < values; ++i)
+  {
+    if (label[i] == 0 && completed[i] != 0)
+    {
+      label[i] = completed[i];
+      ++this->NumberOfCompletedPixels;
+    }
+  }
   return true;
 }
 
@@ -241,4 +296,7 @@ void vtkProjectorSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RejectionFactor: " << this->RejectionFactor << "\n";
   os << indent << "MinimumConfidence: " << this->MinimumConfidence << "\n";
   os << indent << "MorphologyRadius: " << this->MorphologyRadius << "\n";
+  os << indent << "CompleteLabels: " << this->CompleteLabels << "\n";
+  os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
+  os << indent << "NumberOfCompletedPixels: " << this->NumberOfCompletedPixels << "\n";
 }

@@ -29,12 +29,26 @@
  * 3. **Clean-up** with OpenCV morphology, per label: an opening removes
  *    specks smaller than a disc of MorphologyRadius pixels, a closing fills
  *    unlabelled holes of that size where the Flood pass is lit.
+ * 4. **Completion** (CompleteLabels, on by default, when the light field
+ *    has a Coaxial pass): a projector labels only what it lights, and an
+ *    object pixel left unlabelled renders as background once every label
+ *    has a box. With two projectors on a 36-view ring more than half of the
+ *    fish's object pixels are in no projector's light (the projectors face
+ *    its ends, its flanks are lit at grazing angles or shadowed), so its
+ *    own view 3 rendered at 15 dB against the photograph. The decided
+ *    pixels of every view are therefore painted onto a proxy of the object
+ *    (vtkLabelPropagation: the Depth pass when there is one, else the visual
+ *    hull of the Coaxial silhouettes brighter than ObjectThreshold), as the
+ *    paper suggests for painted labels (section 4.1), and every object pixel
+ *    left undecided takes the label of the proxy voxel it sees. Decided
+ *    pixels keep their label; completed ones have Confidence 0. A light
+ *    field with no decided pixel is left as it is.
  *
  * The output holds the input's passes plus `Label` and `Confidence`.
  * Bad input (no Coded or Flood pass, no palette or fewer than 2 entries) is
  * one error naming what is missing.
  *
- * @sa vtkLabelPalette vtkLightFieldCapture vtkLightFieldSplitter
+ * @sa vtkLabelPalette vtkLightFieldCapture vtkLightFieldSplitter vtkLabelPropagation
  */
 #ifndef vtkProjectorSegmentation_h
 #define vtkProjectorSegmentation_h
@@ -109,11 +123,42 @@ public:
   vtkGetMacro(MorphologyRadius, int);
   ///@}
 
+  ///@{
+  /**
+   * Completes the object pixels the projectors left undecided through a
+   * proxy of the object (step 4 above). Default on.
+   */
+  vtkSetMacro(CompleteLabels, bool);
+  vtkGetMacro(CompleteLabels, bool);
+  vtkBooleanMacro(CompleteLabels, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Completion without a Depth pass: the Coaxial level (mean of RGB) above
+   * which a pixel is object, for the visual hull. Default 20
+   * (vtkLabelPropagation's Threshold).
+   */
+  vtkSetClampMacro(ObjectThreshold, double, 0.0, 255.0);
+  vtkGetMacro(ObjectThreshold, double);
+  ///@}
+
+  /**
+   * Pixels the last update's completion labelled (0 without completion).
+   */
+  vtkGetMacro(NumberOfCompletedPixels, vtkIdType);
+
 protected:
   vtkProjectorSegmentation();
   ~vtkProjectorSegmentation() override;
 
   bool Split(vtkLightField* input, vtkLightField* output, std::string& error) override;
+
+  /**
+   * Step 4: the undecided object pixels of `output`'s Label pass take the
+   * labels propagated from the decided ones.
+   */
+  bool Complete(vtkLightField* input, vtkLightField* output, std::string& error);
 
   vtkUnsignedCharArray* Palette = nullptr;
   double NoiseSigma = -1.0;
@@ -122,6 +167,9 @@ protected:
   double RejectionFactor = 1.0;
   double MinimumConfidence = 0.3;
   int MorphologyRadius = 1;
+  bool CompleteLabels = true;
+  double ObjectThreshold = 20.0;
+  vtkIdType NumberOfCompletedPixels = 0;
 
 private:
   vtkProjectorSegmentation(const vtkProjectorSegmentation&) = delete;
