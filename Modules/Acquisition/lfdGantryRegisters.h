@@ -93,7 +93,7 @@ enum FaultMode : uint16_t
   LimitSwitchMode = 4,    ///< LimitSwitch
   SlowMode = 5,           ///< every move at SlowFactor of its velocity, until disarmed
   DropConnectionMode = 6, ///< closes every connection (ConnectionLost)
-  StuckCoilsMode = 7,     ///< the coils ignore writes (a relay that does not switch), until disarmed
+  StuckCoilsMode = 7, ///< the coils ignore writes (a relay that does not switch), until disarmed
   FaultModeCount = 8
 };
 

@@ -44,8 +44,8 @@ std::string CheckModbusSettings(const ModbusSettings& settings, bool fileFields)
   in_addr parsed{};
   if (inet_pton(AF_INET, settings.Address.c_str(), &parsed) != 1)
   {
-    return (fileFields ? "field \"address\": " : "Address ") + std::string("'") +
-      settings.Address + "' is not an IPv4 address (e.g. 192.168.1.20)";
+    return (fileFields ? "field \"address\": " : "Address ") + std::string("'") + settings.Address +
+      "' is not an IPv4 address (e.g. 192.168.1.20)";
   }
   const SettingCheck checks[] = {
     { "Port", "port", static_cast<double>(settings.Port), 1.0, 65535.0, true, "" },

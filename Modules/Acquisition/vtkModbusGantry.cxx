@@ -69,8 +69,8 @@ void vtkModbusGantry::Refuse(const std::string& reason)
 
 void vtkModbusGantry::RefuseRequest(int error, const std::string& during)
 {
-  this->Refuse(this->Internals->Client.DescribeFailure(error) +
-    (during.empty() ? "" : " during " + during));
+  this->Refuse(
+    this->Internals->Client.DescribeFailure(error) + (during.empty() ? "" : " during " + during));
 }
 
 namespace
@@ -227,8 +227,7 @@ bool vtkModbusGantry::Connect()
   }
   this->Internals->Client.Reset(ConnectionSettings(this));
   uint16_t identity[2] = { 0, 0 };
-  const int error = this->Internals->Client.Transact(
-    [&](modbus_t* context)
+  const int error = this->Internals->Client.Transact([&](modbus_t* context)
     { return modbus_read_registers(context, gantry::Identity, 2, identity); },
     this->Retries);
   if (error)
@@ -307,8 +306,8 @@ bool vtkModbusGantry::UpdateState()
 
 bool vtkModbusGantry::Command(int control, const std::string& during)
 {
-  const int error = this->Internals->Client.Transact(
-    [&](modbus_t* context) { return modbus_write_register(context, gantry::ControlWord, control); },
+  const int error = this->Internals->Client.Transact([&](modbus_t* context)
+    { return modbus_write_register(context, gantry::ControlWord, control); },
     this->Retries);
   if (error)
   {
@@ -440,8 +439,7 @@ bool vtkModbusGantry::StartMove(double angle)
   }
   uint16_t target[2];
   gantry::SetInt32(target, static_cast<int32_t>(std::lround(angle / gantry::PositionUnit)));
-  const int error = this->Internals->Client.Transact(
-    [&](modbus_t* context)
+  const int error = this->Internals->Client.Transact([&](modbus_t* context)
     { return modbus_write_registers(context, gantry::TargetPosition, 2, target); },
     this->Retries);
   if (error)
@@ -470,8 +468,7 @@ bool vtkModbusGantry::PollMotion()
     {
       // Best effort, once: the controller's watchdog stops the axis when
       // this does not reach it either.
-      internals.Client.Transact(
-        [](modbus_t* context)
+      internals.Client.Transact([](modbus_t* context)
         { return modbus_write_register(context, gantry::ControlWord, gantry::QuickStopBit); },
         0);
       return false;

@@ -55,8 +55,8 @@ bool vtkModbusLight::GetPassOn(int pass) const
 std::string vtkModbusLight::GetDeviceName() const
 {
   return std::string(this->Name ? this->Name : "lamp") + " " +
-    (this->Address ? this->Address : "(no address)") + ":" + std::to_string(this->Port) +
-    " coil " + std::to_string(this->Coil);
+    (this->Address ? this->Address : "(no address)") + ":" + std::to_string(this->Port) + " coil " +
+    std::to_string(this->Coil);
 }
 
 //------------------------------------------------------------------------------
@@ -94,14 +94,14 @@ bool vtkModbusLight::Switch(bool on)
     internals.Ready = true;
   }
   const char* state = on ? "on" : "off";
-  int error = internals.Client.Transact(
-    [&](modbus_t* context) { return modbus_write_bit(context, this->Coil, on ? 1 : 0); },
+  int error = internals.Client.Transact([&](modbus_t* context)
+    { return modbus_write_bit(context, this->Coil, on ? 1 : 0); },
     this->Retries);
   uint8_t readBack = 0;
   if (!error)
   {
-    error = internals.Client.Transact(
-      [&](modbus_t* context) { return modbus_read_bits(context, this->Coil, 1, &readBack); },
+    error = internals.Client.Transact([&](modbus_t* context)
+      { return modbus_read_bits(context, this->Coil, 1, &readBack); },
       this->Retries);
   }
   if (error)

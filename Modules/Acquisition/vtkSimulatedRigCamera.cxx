@@ -408,7 +408,8 @@ int vtkSimulatedRigCamera::GetNumberOfLitProjectors()
   for (const vtkSmartPointer<vtkImageData>& pattern : this->Internal->Current.Patterns)
   {
     vtkDataArray* scalars = pattern ? pattern->GetPointData()->GetScalars() : nullptr;
-    const auto* bytes = scalars ? static_cast<const unsigned char*>(scalars->GetVoidPointer(0)) : nullptr;
+    const auto* bytes =
+      scalars ? static_cast<const unsigned char*>(scalars->GetVoidPointer(0)) : nullptr;
     const vtkIdType size = scalars ? scalars->GetNumberOfValues() : 0;
     lit += std::any_of(bytes, bytes + size, [](unsigned char value) { return value != 0; }) ? 1 : 0;
   }

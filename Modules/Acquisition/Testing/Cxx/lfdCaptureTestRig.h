@@ -193,8 +193,8 @@ inline bool GantryStopped(CaptureRig& rig, int fault, const std::string& what)
   vtkGantrySimulator* simulator = rig.Gantry.Simulator;
   const int status = simulator->GetStatusWord();
   const double velocity = simulator->GetActualVelocity();
-  return Check((status & lfd::gantry::MovingBit) == 0 && velocity == 0.0 &&
-      simulator->GetFaultCode() == fault,
+  return Check(
+    (status & lfd::gantry::MovingBit) == 0 && velocity == 0.0 && simulator->GetFaultCode() == fault,
     what + ": the gantry stands still, fault code " + std::to_string(fault),
     "status " + std::to_string(status) + ", velocity " + std::to_string(velocity) + ", fault " +
       std::to_string(simulator->GetFaultCode()));
