@@ -6,7 +6,11 @@ SIGKILL mid-capture: the dataset then lists only complete views, every listed
 image is whole; resumed and stopped with Ctrl-C (SIGINT) after the current
 view; `--resume` completes it with no view lost or duplicated
 (each image once, no temporary left). The capture matches `lfd synth`'s
-views of the same positions (PSNR) and `lfd split projector` labels it. Bad input: an unreachable gantry is one error naming it."""
+views of the same positions (PSNR) and `lfd split projector` labels it. The
+coaxial lamp is switched on coil 5 of the simulator over Modbus
+(--coaxial-coil), the simulated camera sees that coil: the Coaxial pass lit
+and the others dark prove it followed the passes. Bad input: an unreachable
+gantry, and --coaxial-lamp with --simulate, are one error each naming them."""
 import glob
 import json
 import os
@@ -32,7 +36,7 @@ t.check(synth.returncode == 0, "lfd synth of a 36-view ring with 2 projectors",
         synth.returncode or "ok")
 capture = [t.LFD, "capture", "--simulate", "--gantry", "127.0.0.1:0", "--rig", ref,
            "--views", "12", "--projectors", "2", "--out", out,
-           "--velocity", "600", "--acceleration", "6000"]
+           "--velocity", "600", "--acceleration", "6000", "--coaxial-coil", "5"]
 
 
 def listed_views():
@@ -120,4 +124,13 @@ t.check(refused.returncode == 1 and error_lines == [
     "lfd: error: preparing the gantry: gantry 127.0.0.1:1: cannot connect: Connection refused "
     "(3 attempts)"] and not os.path.exists(os.path.join(folder, "refused.lf")),
     "an unreachable gantry: one error naming it, nothing written", error_lines)
+# The simulated lamp is on the simulator's coil: no other lamp device.
+lamp = subprocess.run([t.LFD, "capture", "--simulate", "--gantry", "127.0.0.1:0", "--rig", ref,
+                       "--views", "12", "--out", os.path.join(folder, "lamp.lf"),
+                       "--coaxial-coil", "5", "--coaxial-lamp", "127.0.0.1:502"],
+                      capture_output=True, text=True)
+t.check(lamp.returncode == 1 and lamp.stderr.strip().splitlines() == [
+    "lfd: error: --coaxial-lamp '127.0.0.1:502': not with --simulate (the simulated lamp is on "
+    "a coil of the gantry simulator)"] and not os.path.exists(os.path.join(folder, "lamp.lf")),
+    "--coaxial-lamp with --simulate: one error", lamp.stderr.strip())
 t.finish()
