@@ -129,7 +129,7 @@ lamp = subprocess.run([t.LFD, "capture", "--simulate", "--gantry", "127.0.0.1:0"
                        "--views", "12", "--out", os.path.join(folder, "lamp.lf"),
                        "--coaxial-coil", "5", "--coaxial-lamp", "127.0.0.1:502"],
                       capture_output=True, text=True)
-t.check(lamp.returncode == 1 and lamp.stderr.strip().splitlines() == [
+t.check(lamp.returncode == 1 and [line for line in lamp.stderr.splitlines() if "error" in line] == [
     "lfd: error: --coaxial-lamp '127.0.0.1:502': not with --simulate (the simulated lamp is on "
     "a coil of the gantry simulator)"] and not os.path.exists(os.path.join(folder, "lamp.lf")),
     "--coaxial-lamp with --simulate: one error", lamp.stderr.strip())
