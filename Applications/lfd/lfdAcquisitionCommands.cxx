@@ -140,7 +140,8 @@ void AddSimulatorCommand(CLI::App& app, NumericOptions& numbers, std::vector<Com
   auto options = std::make_shared<SimulatorOptions>();
   auto* command = app.add_subcommand("gantry-sim",
     "serve a simulated gantry controller over Modbus TCP (the register map of Data/README.md): "
-    "trapezoidal moves, homing, a watchdog and faults on demand; serves until SIGTERM/SIGINT");
+    "trapezoidal moves, homing, a watchdog, 8 coils (digital outputs, e.g. a lamp's) and faults "
+    "on demand; serves until SIGTERM/SIGINT");
   command->add_option("--address", options->Address, "IPv4 address to listen on")
     ->capture_default_str();
   numbers.Add(command, "--port", options->Port, 0, 65535, "TCP port to listen on (0: any free)");
@@ -154,7 +155,8 @@ void AddSimulatorCommand(CLI::App& app, NumericOptions& numbers, std::vector<Com
       options->Fault,
       "fault armed for the first move, fired half-way through it: silent (no answers for "
       "--silent-seconds), drive, estop, limit, drop (closes every connection); slow runs every "
-      "move at --slow-factor of its velocity")
+      "move at --slow-factor of its velocity; stuck makes the coils (digital outputs 0-7, e.g. "
+      "the coaxial lamp's) ignore writes")
     ->check(CLI::IsMember(modes))
     ->capture_default_str();
   numbers.AddReal(
