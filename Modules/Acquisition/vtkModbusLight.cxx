@@ -132,6 +132,13 @@ bool vtkModbusLight::Switch(bool on)
 //------------------------------------------------------------------------------
 void vtkModbusLight::Off()
 {
+  // Not switched since the last Off(): nothing to undo, and no reason to
+  // wait for a device that may not answer (a capture failing before its
+  // first photograph).
+  if (!this->Internals->Ready)
+  {
+    return;
+  }
   this->Switch(false);
   // The next Apply() connects again, with the settings then.
   this->Internals->Client.Close();

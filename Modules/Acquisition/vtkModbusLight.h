@@ -106,7 +106,8 @@ public:
 
   /**
    * Switches the coil off (best effort: a failure is reported, the
-   * connection closed anyway) and closes the connection.
+   * connection closed anyway) and closes the connection; does nothing when
+   * the lamp was not switched since the last Off().
    */
   void Off() override;
 

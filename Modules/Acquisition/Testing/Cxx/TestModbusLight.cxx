@@ -3,7 +3,8 @@
 // follows the passes (on for Coaxial only, then for Flood too), waits its
 // settle time when it switches, leaves the other coils alone and goes off
 // with Off(); a stuck relay (read-back mismatch), a coil the device does not
-// have, an unreachable device and bad settings are one exact error each.
+// have, an unreachable device and bad settings are one exact error each;
+// Off() of a lamp not switched sends nothing.
 #include "lfdGantryRegisters.h"
 #include "lfdGantryTestUtilities.h"
 #include "vtkLightField.h"
@@ -111,6 +112,17 @@ int TestModbusLight(int, char*[])
   lamp->SetCoil(-1);
   ok &= Check(!lamp->Apply(vtkLightField::COAXIAL), "a negative coil is refused", "");
   ok &= CheckError(errors, "coaxial lamp 127.0.0.1:1 coil -1: Coil -1 is out of range [0, 65535]");
+
+  // Off() without a switch since the last one: no request, no error (a
+  // capture failing before its first photograph does not wait for the lamp).
+  vtkNew<vtkModbusLight> unused;
+  errors->Observe(unused);
+  unused->SetAddress("127.0.0.1");
+  unused->SetPort(1);
+  unused->Off();
+  ok &= Check(!errors->HasError(),
+    "Off() of a lamp never switched: no error",
+    errors->HasError() ? errors->GetErrorMessage() : "none");
   simulator->Stop();
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
