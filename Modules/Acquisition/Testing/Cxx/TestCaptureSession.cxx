@@ -51,7 +51,8 @@ int TestCaptureSession(int, char*[])
   ok &= LightsOff(rig, "e-stop");
   ok &= CheckDataset(estop, 2, reference, "e-stop");
   rig.AfterView = nullptr;
-  ok &= Check(rig.Run(estop, true) && rig.Session->GetNumberOfViewsTaken() == 2,
+  const bool resumed = rig.Run(estop, true);
+  ok &= Check(resumed && rig.Session->GetNumberOfViewsTaken() == 2,
     "e-stop: resumed, views taken",
     rig.Session->GetNumberOfViewsTaken());
   ok &= Check(!rig.Errors->HasError(),
@@ -88,8 +89,9 @@ int TestCaptureSession(int, char*[])
   const std::string aborted = temp + "/session-abort.lf";
   lfd::io::RemoveQuietly(aborted);
   rig.AfterView = [&rig](int) { rig.Session->Abort(); };
-  ok &= Check(rig.Run(aborted, false) && rig.Session->GetAborted() &&
-      rig.Session->GetNumberOfViewsTaken() == 1 && !rig.Errors->HasError(),
+  const bool stopped = rig.Run(aborted, false);
+  ok &= Check(stopped && rig.Session->GetAborted() && rig.Session->GetNumberOfViewsTaken() == 1 &&
+      !rig.Errors->HasError(),
     "abort: stopped after 1 view without error",
     rig.Session->GetNumberOfViewsTaken());
 
@@ -120,8 +122,8 @@ int TestCaptureSession(int, char*[])
 
   // The camera back: the capture completes, each view once.
   rig.AfterView = nullptr;
-  ok &= Check(rig.Simulated->Start() && rig.Run(silent, true) &&
-      rig.Session->GetNumberOfViewsTaken() == 2 && !rig.Errors->HasError(),
+  const bool back = rig.Simulated->Start() && rig.Run(silent, true);
+  ok &= Check(back && rig.Session->GetNumberOfViewsTaken() == 2 && !rig.Errors->HasError(),
     "camera back: resumed, views taken without error",
     rig.Errors->HasError() ? rig.Errors->GetErrorMessage()
                            : std::to_string(rig.Session->GetNumberOfViewsTaken()));
