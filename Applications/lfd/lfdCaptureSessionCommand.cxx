@@ -456,8 +456,13 @@ void AddCaptureSessionCommand(CLI::App& app,
     options->CoaxialLamp,
     "ADDRESS:PORT of the Modbus TCP device (relay module) with --coaxial-coil, when it is not "
     "the gantry's controller");
-  numbers.Add(
-    command, "--coaxial-unit", options->CoaxialUnit, 0, 255, "Modbus unit id of the lamp's device");
+  numbers.Add(command,
+    "--coaxial-unit",
+    options->CoaxialUnit,
+    0,
+    255,
+    "Modbus unit id of the lamp's device: 0 to 247 (a relay module behind a gateway), or 255 "
+    "for the device itself");
   numbers.Add(command,
     "--coaxial-settle",
     options->CoaxialSettle,

@@ -54,7 +54,16 @@ std::string CheckModbusSettings(const ModbusSettings& settings, bool fileFields)
     { "ResponseTimeout", "response_timeout", settings.ResponseTimeout, 0.0, 3600.0, false, " s" },
     { "Retries", "retries", static_cast<double>(settings.Retries), 0.0, 100.0, true, "" },
   };
-  return CheckSettings(checks, static_cast<int>(sizeof(checks) / sizeof(checks[0])), fileFields);
+  const std::string refused =
+    CheckSettings(checks, static_cast<int>(sizeof(checks) / sizeof(checks[0])), fileFields);
+  // Modbus TCP takes the serial line's unit ids, or 255 for the device
+  // itself (libmodbus refuses the others).
+  if (refused.empty() && settings.UnitId > 247 && settings.UnitId != MODBUS_TCP_SLAVE)
+  {
+    return (fileFields ? "field \"unit_id\": " : "UnitId ") + std::to_string(settings.UnitId) +
+      " is not a Modbus unit id (0 to 247, or 255 for the device itself)";
+  }
+  return refused;
 }
 
 void ModbusClient::Reset(const ModbusSettings& settings)

@@ -51,7 +51,7 @@ std::string CheckSettings(const SettingCheck* checks, int count, bool fileFields
 
 /**
  * "" or why the connection settings are refused: the address is not IPv4,
- * or the port, unit id, timeouts or retries are out of range (named as the
+ * or the port, unit id (0-247 or 255), timeouts or retries are out of range (named as the
  * properties Address, Port, UnitId, ConnectTimeout, ResponseTimeout,
  * Retries or the fields address, port, unit_id, connect_timeout,
  * response_timeout, retries).

@@ -44,7 +44,8 @@ public:
   ///@{
   /**
    * The device's IPv4 address, Modbus TCP port and unit id (a relay module
-   * behind a gateway may need its own; 255 addresses the device itself).
+   * behind a gateway may need its own, 0 to 247; 255 addresses the device
+   * itself).
    * Defaults nullptr, 502 and 255.
    */
   vtkSetStringMacro(Address);

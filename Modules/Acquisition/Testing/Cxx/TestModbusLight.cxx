@@ -112,6 +112,12 @@ int TestModbusLight(int, char*[])
   lamp->SetCoil(-1);
   ok &= Check(!lamp->Apply(vtkLightField::COAXIAL), "a negative coil is refused", "");
   ok &= CheckError(errors, "coaxial lamp 127.0.0.1:1 coil -1: Coil -1 is out of range [0, 65535]");
+  lamp->SetCoil(0);
+  lamp->SetUnitId(250);
+  ok &= Check(!lamp->Apply(vtkLightField::COAXIAL), "unit id 250 is refused", "");
+  ok &= CheckError(errors,
+    "coaxial lamp 127.0.0.1:1 coil 0: UnitId 250 is not a Modbus unit id (0 to 247, or 255 for "
+    "the device itself)");
 
   // Off() without a switch since the last one: no request, no error (a
   // capture failing before its first photograph does not wait for the lamp).
