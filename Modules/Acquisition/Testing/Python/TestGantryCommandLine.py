@@ -4,7 +4,7 @@ move: homing, the e-stop mid-move (one error line, the axis stopped, the
 fault reported until reset), recovery, a move; the refusals (unreachable
 port, taken port, unknown fault mode, a description without its port); the
 coaxial lamp on a coil (`lfd gantry lamp on|off --coil N`); and the README's
-Python example. The
+Python examples (gantry, lamp). The
 other refusals and faults are the C++ tests' (Testing/Cxx)."""
 import os
 import re
@@ -117,6 +117,16 @@ device.SetAcceleration(480.0)
 moved = device.Connect() and device.Enable() and device.Home() and device.MoveTo(90.0)
 check(moved and device.GetActualAngle() == 90.0, "Python: homed, moved to 90 deg",
       device.GetActualAngle())
+# The README's lamp example (The coaxial lamp on a Modbus coil).
+lamp = lfd.vtkModbusLight()
+lamp.SetName("coaxial lamp")
+lamp.SetAddress("127.0.0.1")
+lamp.SetPort(simulator.GetBoundPort())
+lamp.SetCoil(2)
+on = lamp.Apply(lfd.vtkLightField.COAXIAL) and simulator.GetCoil(2)
+off = lamp.Apply(lfd.vtkLightField.FLOOD) and not simulator.GetCoil(2)
+lamp.Off()
+check(on and off, "Python: the lamp on coil 2 on for Coaxial, off for Flood", (on, off))
 simulator.Stop()
 
 print(f"{len(failures)} failure(s)")
