@@ -88,10 +88,9 @@ lfd::ModbusSettings ConnectionSettings(vtkModbusGantry* gantry)
 }
 }
 
-std::string vtkModbusGantry::CheckSettings(bool fileFields) const
+std::string vtkModbusGantry::CheckSettings(bool fileFields)
 {
-  const std::string connection =
-    lfd::CheckModbusSettings(ConnectionSettings(const_cast<vtkModbusGantry*>(this)), fileFields);
+  const std::string connection = lfd::CheckModbusSettings(ConnectionSettings(this), fileFields);
   if (!connection.empty())
   {
     return connection;
