@@ -167,6 +167,13 @@ bool vtkCaptureSession::PrepareDevices()
   {
     return this->Fail("opening the camera");
   }
+  for (vtkCaptureLight* light : this->Lights)
+  {
+    if (!light->Prepare())
+    {
+      return this->Fail("preparing the lights");
+    }
+  }
   return true;
 }
 

@@ -107,6 +107,13 @@ bool vtkModbusLight::Switch(bool on)
   if (error)
   {
     internals.State = -1;
+    // A device that does not answer is not asked again by Off(): the next
+    // Apply() connects anew.
+    if (!lfd::ModbusClient::IsException(error))
+    {
+      internals.Client.Close();
+      internals.Ready = false;
+    }
     vtkErrorMacro(<< device << internals.Client.DescribeFailure(error) << " while switching it "
                   << state);
     return false;
@@ -127,6 +134,12 @@ bool vtkModbusLight::Switch(bool on)
   }
   internals.State = on ? 1 : 0;
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkModbusLight::Prepare()
+{
+  return this->Switch(false);
 }
 
 //------------------------------------------------------------------------------

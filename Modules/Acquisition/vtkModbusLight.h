@@ -108,9 +108,15 @@ public:
   /**
    * Switches the coil off (best effort: a failure is reported, the
    * connection closed anyway) and closes the connection; does nothing when
-   * the lamp was not switched since the last Off().
+   * the lamp was not switched since the last Off(), or stopped answering.
    */
   void Off() override;
+
+  /**
+   * Switches the coil off, with Apply()'s checks: the lamp is there, its
+   * coil switches, and it is dark before the capture.
+   */
+  bool Prepare() override;
 
   /**
    * Switches the coil on or off, with Apply()'s checks.

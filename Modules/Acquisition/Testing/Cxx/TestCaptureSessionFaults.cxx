@@ -11,7 +11,9 @@
 // Resume() after each continues at the failed view, once the fault is gone:
 // to keep the test short the faults come in two chains of three, each
 // resumed run taking views up to the next fault, the last one completing
-// the capture with every view exactly once, matching the render.
+// the capture with every view exactly once, matching the render. A lamp
+// that is not there stops the capture before its first move, nothing
+// written.
 #include "lfdCaptureTestRig.h"
 #include "lfdMotionProfile.h"
 
@@ -185,5 +187,20 @@ int TestCaptureSessionFaults(int, char*[])
       1 },
   };
   ok &= RunFaults(rig, "rig-faults", rigFaults, reference);
+
+  // A lamp that is not there: the capture stops before its first move and
+  // writes nothing (as an unreachable gantry or camera).
+  const std::string noLamp = std::string(LFD_TEST_TEMP_DIR) + "/session-no-lamp.lf";
+  lfd::io::RemoveQuietly(noLamp);
+  rig.Lamp->SetPort(1);
+  const bool refused = !rig.Run(noLamp, false);
+  ok &= Check(refused && !std::filesystem::exists(noLamp),
+    "an unreachable lamp: the capture fails, nothing written",
+    std::filesystem::exists(noLamp) ? "written" : "nothing");
+  ok &= CheckError(rig.Errors,
+    "preparing the lights: coaxial lamp 127.0.0.1:1 coil 0: cannot connect: Connection refused (2 "
+    "attempts) while switching it off");
+  ok &= GantryStopped(rig, lfd::gantry::NoFault, "unreachable lamp");
+  rig.Lamp->SetPort(rig.Gantry.Simulator->GetBoundPort());
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
