@@ -5,7 +5,9 @@
 
 #include "lfdGantryRegisters.h"
 #include "vtkGantrySimulator.h"
+#include "vtkLightField.h"
 #include "vtkModbusGantry.h"
+#include "vtkModbusLight.h"
 #include "vtkNew.h"
 
 #include <CLI/CLI.hpp>
@@ -140,7 +142,8 @@ void AddSimulatorCommand(CLI::App& app, NumericOptions& numbers, std::vector<Com
   auto options = std::make_shared<SimulatorOptions>();
   auto* command = app.add_subcommand("gantry-sim",
     "serve a simulated gantry controller over Modbus TCP (the register map of Data/README.md): "
-    "trapezoidal moves, homing, a watchdog and faults on demand; serves until SIGTERM/SIGINT");
+    "trapezoidal moves, homing, a watchdog, 8 coils (digital outputs, e.g. a lamp's) and faults "
+    "on demand; serves until SIGTERM/SIGINT");
   command->add_option("--address", options->Address, "IPv4 address to listen on")
     ->capture_default_str();
   numbers.Add(command, "--port", options->Port, 0, 65535, "TCP port to listen on (0: any free)");
@@ -154,7 +157,8 @@ void AddSimulatorCommand(CLI::App& app, NumericOptions& numbers, std::vector<Com
       options->Fault,
       "fault armed for the first move, fired half-way through it: silent (no answers for "
       "--silent-seconds), drive, estop, limit, drop (closes every connection); slow runs every "
-      "move at --slow-factor of its velocity")
+      "move at --slow-factor of its velocity; stuck makes the coils (digital outputs 0-7, e.g. "
+      "the coaxial lamp's) ignore writes")
     ->check(CLI::IsMember(modes))
     ->capture_default_str();
   numbers.AddReal(
@@ -190,6 +194,9 @@ struct ClientOptions
   double Velocity = 30.0;
   double Acceleration = 60.0;
   double Angle = 0.0;
+  int Coil = 0;
+  int UnitId = 255;
+  std::string LampState;
   /// The options above as given on the command line (with --config, only
   /// those given override the description).
   std::vector<CLI::Option*> Given;
@@ -219,8 +226,32 @@ enum class GantryAction
   Home,
   Move,
   Stop,
-  Reset
+  Reset,
+  Lamp
 };
+
+/// Switches the lamp on coil --coil of the device the gantry's settings
+/// address (the controller, or a relay module at --address), as `lfd
+/// capture --coaxial-coil` does, and prints it read back.
+void SwitchLamp(vtkModbusGantry* device, const ClientOptions& options, StepErrors& errors)
+{
+  vtkNew<vtkModbusLight> lamp;
+  errors->Observe(lamp);
+  lamp->SetName("coaxial lamp");
+  lamp->SetAddress(device->GetAddress());
+  lamp->SetPort(device->GetPort());
+  lamp->SetUnitId(options.UnitId);
+  lamp->SetCoil(options.Coil);
+  lamp->SetConnectTimeout(device->GetConnectTimeout());
+  lamp->SetResponseTimeout(device->GetResponseTimeout());
+  lamp->SetRetries(device->GetRetries());
+  lamp->SetSettleTime(0.0);
+  if (!lamp->Switch(options.LampState == "on"))
+  {
+    errors.FailOnError();
+  }
+  std::printf("%s: %s (read back)\n", lamp->GetDeviceName().c_str(), options.LampState.c_str());
+}
 
 void RunGantry(const ClientOptions& options, GantryAction action)
 {
@@ -265,6 +296,12 @@ void RunGantry(const ClientOptions& options, GantryAction action)
   {
     device->SetAcceleration(options.Acceleration);
   }
+  if (action == GantryAction::Lamp)
+  {
+    // A relay module is no gantry controller: no identity to check.
+    SwitchLamp(device, options, errors);
+    return;
+  }
   check(device->Connect());
   switch (action)
   {
@@ -281,6 +318,7 @@ void RunGantry(const ClientOptions& options, GantryAction action)
       check(device->ResetFault());
       break;
     case GantryAction::Status:
+    case GantryAction::Lamp:
       break;
   }
   check(device->UpdateState());
@@ -303,6 +341,10 @@ void AddGantryCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     { "move", GantryAction::Move, "enable the axis and move it to ANGLE degrees (homed first)" },
     { "stop", GantryAction::Stop, "quick-stop the axis" },
     { "reset", GantryAction::Reset, "clear a drive fault (then home or move enables again)" },
+    { "lamp",
+      GantryAction::Lamp,
+      "switch the coaxial lamp on coil --coil of the controller (or of the relay module at "
+      "--address) on or off and check it reads back so, as lfd capture --coaxial-coil does" },
   };
   for (const auto& leaf : leaves)
   {
@@ -326,6 +368,19 @@ void AddGantryCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     if (leaf.Action == GantryAction::Move)
     {
       numbers.AddReal(command, "angle", options->Angle, "target angle in degrees")->required();
+    }
+    if (leaf.Action == GantryAction::Lamp)
+    {
+      command->add_option("state", options->LampState, "on or off")
+        ->check(CLI::IsMember({ "on", "off" }))
+        ->required();
+      numbers.Add(command, "--coil", options->Coil, 0, 65535, "the lamp's coil (0-based)");
+      numbers.Add(command,
+        "--unit",
+        options->UnitId,
+        0,
+        255,
+        "Modbus unit id: 0 to 247 (a relay module behind a gateway), or 255 for the device itself");
     }
     const GantryAction action = leaf.Action;
     commands.push_back({ command, [options, action] { RunGantry(*options, action); }, false });

@@ -14,12 +14,13 @@
 #include "vtkLightField.h"
 #include "vtkLightFieldCapture.h"
 #include "vtkModbusGantry.h"
+#include "vtkModbusLight.h"
 #include "vtkPolyData.h"
 #include "vtkProjectorWindow.h"
-#include "vtkSimulatedCoaxialLight.h"
 #include "vtkSimulatedProjector.h"
 #include "vtkSimulatedRigCamera.h"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <sstream>
@@ -47,6 +48,10 @@ struct CaptureSessionOptions
   bool Simulate = false;
   std::string Object = "fish";
   double Noise = 0.0;
+  int CoaxialCoil = -1;
+  std::string CoaxialLamp;
+  int CoaxialUnit = 255;
+  double CoaxialSettle = -1.0;
 };
 
 /// The session Ctrl-C stops (Abort() is async-signal-safe).
@@ -60,8 +65,11 @@ extern "C" void AbortCapture(int)
   }
 }
 
-/// "ADDR:PORT" split; fails naming --gantry.
-void SplitAddress(const std::string& text, std::string& address, int& port)
+/// "ADDR:PORT" split; fails naming the option.
+void SplitAddress(const std::string& option,
+  const std::string& text,
+  std::string& address,
+  int& port)
 {
   const size_t colon = text.rfind(':');
   char* end = nullptr;
@@ -70,7 +78,7 @@ void SplitAddress(const std::string& text, std::string& address, int& port)
   if (colon == std::string::npos || colon == 0 || !end || *end != '\0' || value < 0 ||
     value > 65535)
   {
-    Fail("--gantry '" + text + "': expected ADDRESS:PORT, e.g. 192.168.1.10:502");
+    Fail(option + " '" + text + "': expected ADDRESS:PORT, e.g. 192.168.1.10:502");
   }
   address = text.substr(0, colon);
   port = static_cast<int>(value);
@@ -122,13 +130,15 @@ vtkSmartPointer<vtkLightField> MakePlan(vtkLightField* rigField, CaptureSessionO
   return plan;
 }
 
-/// The simulated rig (gantry simulator, GigE camera, lamp and projectors)
-/// served by this process for --simulate.
+/// The simulated rig (gantry simulator, GigE camera, projectors) served by
+/// this process for --simulate; the coaxial lamp is wired to coil
+/// `LampCoil` of the gantry simulator, whose state the camera sees.
 struct SimulatedRig
 {
   vtkNew<vtkGantrySimulator> Gantry;
   vtkNew<vtkModbusGantry> AngleReader;
   vtkNew<vtkSimulatedRigCamera> Camera;
+  int LampCoil = 0;
 
   /// Serves the gantry on `address`:`port` (0: a free port, returned) and
   /// the camera on `cameraAddress`, rendering `rigField`'s rig at the
@@ -165,6 +175,9 @@ struct SimulatedRig
         degrees = reader->GetActualAngle();
         return true;
       });
+    vtkGantrySimulator* simulator = this->Gantry;
+    const int coil = this->LampCoil = std::max(0, options.CoaxialCoil);
+    this->Camera->SetCoaxialLightSource([simulator, coil] { return simulator->GetCoil(coil); });
     vtkSmartPointer<vtkImageData> texture;
     vtkSmartPointer<vtkPolyData> mesh = SourceMesh(options.Object, texture);
     this->Camera->SetAddress(cameraAddress.c_str());
@@ -185,21 +198,50 @@ struct SimulatedRig
   }
 };
 
-/// The lights of the rig: the simulated lamp and projectors, or the
-/// projectors' windows on their X screens (a real coaxial lamp is switched
-/// by the rig's own I/O, outside lfd).
+/// The coaxial lamp on a Modbus coil: `coil` of the gantry's controller, or
+/// of the device at --coaxial-lamp (with the gantry's timeouts and retries).
+vtkSmartPointer<vtkModbusLight> MakeLamp(vtkModbusGantry* gantry,
+  int coil,
+  const CaptureSessionOptions& options)
+{
+  auto lamp = vtkSmartPointer<vtkModbusLight>::New();
+  lamp->SetName("coaxial lamp");
+  lamp->SetAddress(gantry->GetAddress());
+  lamp->SetPort(gantry->GetPort());
+  if (!options.CoaxialLamp.empty())
+  {
+    std::string address;
+    int port = 0;
+    SplitAddress("--coaxial-lamp", options.CoaxialLamp, address, port);
+    lamp->SetAddress(address.c_str());
+    lamp->SetPort(port);
+  }
+  lamp->SetUnitId(options.CoaxialUnit);
+  lamp->SetCoil(coil);
+  // The simulated lamp is bright at once; a real one takes its time.
+  lamp->SetSettleTime(
+    options.CoaxialSettle >= 0.0 ? options.CoaxialSettle : (options.Simulate ? 0.0 : 0.05));
+  lamp->SetConnectTimeout(gantry->GetConnectTimeout());
+  lamp->SetResponseTimeout(gantry->GetResponseTimeout());
+  lamp->SetRetries(gantry->GetRetries());
+  return lamp;
+}
+
+/// The lights of the rig: the coaxial lamp on a Modbus coil (with
+/// --simulate, always: the simulator's coil), and the simulated projectors
+/// or the projectors' windows on their X screens.
 std::vector<vtkSmartPointer<vtkCaptureLight>> MakeLights(vtkLightField* plan,
-  vtkSimulatedRigCamera* simulated,
+  vtkModbusGantry* gantry,
+  SimulatedRig* simulated,
   const CaptureSessionOptions& options)
 {
   std::vector<vtkSmartPointer<vtkCaptureLight>> lights;
-  if (simulated)
+  if (simulated || options.CoaxialCoil >= 0)
   {
-    auto lamp = vtkSmartPointer<vtkSimulatedCoaxialLight>::New();
-    lamp->SetCamera(simulated);
-    lights.emplace_back(lamp);
+    lights.emplace_back(
+      MakeLamp(gantry, simulated ? simulated->LampCoil : options.CoaxialCoil, options));
   }
-  else if (options.Projectors > 0 &&
+  if (!simulated && options.Projectors > 0 &&
     static_cast<int>(options.ProjectorDisplays.size()) != options.Projectors)
   {
     Fail("--projectors " + std::to_string(options.Projectors) + ": give one --projector-display " +
@@ -211,7 +253,7 @@ std::vector<vtkSmartPointer<vtkCaptureLight>> MakeLights(vtkLightField* plan,
     if (simulated)
     {
       auto simulatedProjector = vtkSmartPointer<vtkSimulatedProjector>::New();
-      simulatedProjector->SetCamera(simulated);
+      simulatedProjector->SetCamera(simulated->Camera);
       projector = simulatedProjector;
     }
     else
@@ -234,7 +276,12 @@ void CaptureLightField(CaptureSessionOptions options)
   vtkSmartPointer<vtkLightField> plan = MakePlan(rigField, options);
   std::string gantryAddress;
   int gantryPort = 0;
-  SplitAddress(options.Gantry, gantryAddress, gantryPort);
+  SplitAddress("--gantry", options.Gantry, gantryAddress, gantryPort);
+  if (options.Simulate && !options.CoaxialLamp.empty())
+  {
+    Fail("--coaxial-lamp '" + options.CoaxialLamp +
+      "': not with --simulate (the simulated lamp is on a coil of the gantry simulator)");
+  }
 
   StepErrors errors;
   SimulatedRig simulated;
@@ -273,7 +320,7 @@ void CaptureLightField(CaptureSessionOptions options)
   session->SetGantry(gantry);
   session->SetCamera(camera);
   for (vtkCaptureLight* light :
-    MakeLights(plan, options.Simulate ? simulated.Camera.Get() : nullptr, options))
+    MakeLights(plan, gantry, options.Simulate ? &simulated : nullptr, options))
   {
     session->AddLight(light);
   }
@@ -405,6 +452,33 @@ void AddCaptureSessionCommand(CLI::App& app,
     0.0,
     255.0,
     "with --simulate: standard deviation of the sensor noise in 8-bit levels");
+  numbers.Add(command,
+    "--coaxial-coil",
+    options->CoaxialCoil,
+    -1,
+    65535,
+    "the Modbus coil (0-based) switching the coaxial lamp, on for the Coaxial pass only, read "
+    "back after each switch: a digital output of the gantry's controller, or of --coaxial-lamp "
+    "(-1: no lamp switched by lfd; with --simulate the lamp is on this coil of the simulator, "
+    "coil 0 for -1)");
+  command->add_option("--coaxial-lamp",
+    options->CoaxialLamp,
+    "ADDRESS:PORT of the Modbus TCP device (relay module) with --coaxial-coil, when it is not "
+    "the gantry's controller");
+  numbers.Add(command,
+    "--coaxial-unit",
+    options->CoaxialUnit,
+    0,
+    255,
+    "Modbus unit id of the lamp's device: 0 to 247 (a relay module behind a gateway), or 255 "
+    "for the device itself");
+  numbers.Add(command,
+    "--coaxial-settle",
+    options->CoaxialSettle,
+    -1.0,
+    60.0,
+    "seconds to wait after the lamp switches, before the photograph (-1: 0.05, or 0 with "
+    "--simulate, whose lamp is bright at once)");
   commands.push_back({ command, [options] { CaptureLightField(*options); }, true });
 }
 }

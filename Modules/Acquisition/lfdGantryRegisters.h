@@ -9,8 +9,10 @@
  * a fault code, 32-bit target and actual positions, velocity, acceleration,
  * soft limits and a watchdog. All are holding registers (function codes 3,
  * 6 and 16), 0-based addresses; a 32-bit value takes two registers, high word
- * first (signed, two's complement). Data/README.md documents the map for
- * users wiring a real controller.
+ * first (signed, two's complement). Besides the registers, the controller's
+ * digital outputs are coils 0 .. CoilCount - 1 (function codes 1, 5 and 15),
+ * e.g. the coaxial lamp (vtkModbusLight). Data/README.md documents the map
+ * for users wiring a real controller.
  */
 #ifndef lfdGantryRegisters_h
 #define lfdGantryRegisters_h
@@ -79,8 +81,9 @@ enum FaultCode : uint16_t
 };
 
 /// The simulator's faults on demand (SimulatorFault register, `lfd
-/// gantry-sim --fault`): armed, each but Slow fires half-way through the
-/// next move (by time) and disarms.
+/// gantry-sim --fault`): armed, each but Slow and StuckCoils fires half-way
+/// through the next move (by time) and disarms; those two last until another
+/// mode is armed.
 enum FaultMode : uint16_t
 {
   NoFaultMode = 0,
@@ -90,8 +93,13 @@ enum FaultMode : uint16_t
   LimitSwitchMode = 4,    ///< LimitSwitch
   SlowMode = 5,           ///< every move at SlowFactor of its velocity, until disarmed
   DropConnectionMode = 6, ///< closes every connection (ConnectionLost)
-  FaultModeCount = 7
+  StuckCoilsMode = 7, ///< the coils ignore writes (a relay that does not switch), until disarmed
+  FaultModeCount = 8
 };
+
+/// The controller's digital outputs (coils 0 .. CoilCount - 1), e.g. the
+/// coaxial lamp's relay.
+constexpr int CoilCount = 8;
 
 constexpr uint16_t IdentityValue = 0x4C46; // "LF"
 constexpr uint16_t MapVersionValue = 1;
@@ -130,7 +138,7 @@ inline const char* DescribeFault(int code)
 inline const char* FaultModeName(int mode)
 {
   static const char* const names[FaultModeCount] = {
-    "none", "silent", "drive", "estop", "limit", "slow", "drop"
+    "none", "silent", "drive", "estop", "limit", "slow", "drop", "stuck"
   };
   return mode >= 0 && mode < FaultModeCount ? names[mode] : "unknown";
 }

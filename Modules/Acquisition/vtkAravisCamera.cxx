@@ -160,6 +160,9 @@ struct vtkAravisCamera::Device
   ArvCamera* Camera = nullptr;
   ArvStream* Stream = nullptr;
   bool Acquiring = false;
+  /// The camera stopped answering: closing does not ask it to stop (each
+  /// request would wait for its GVCP timeouts and retries, seconds).
+  bool Lost = false;
 
   // Opens the stream, queues its buffers and starts the acquisition; the
   // problem in words, "" when it runs.
@@ -202,7 +205,7 @@ struct vtkAravisCamera::Device
 
   ~Device()
   {
-    if (this->Acquiring)
+    if (this->Acquiring && !this->Lost)
     {
       arv_camera_stop_acquisition(this->Camera, nullptr);
     }
@@ -311,6 +314,7 @@ bool vtkAravisCamera::Acquire(vtkImageData* frame)
     arv_camera_software_trigger(camera, &error);
     if (error)
     {
+      this->Connection->Lost = g_error_matches(error, ARV_DEVICE_ERROR, ARV_DEVICE_ERROR_TIMEOUT);
       vtkErrorMacro("Camera " << address << ": refuses TriggerSoftware: " << Consume(error));
       return false;
     }

@@ -44,6 +44,15 @@ public:
    */
   virtual void Off() = 0;
 
+  /**
+   * Gets the light ready before a capture's first move, so that a device
+   * that is not there stops the capture before anything is written: opens
+   * or connects to it (a lamp is switched off, which checks its coil). False,
+   * with an error naming the device, when it cannot. The default has nothing
+   * to do.
+   */
+  virtual bool Prepare() { return true; }
+
 protected:
   vtkCaptureLight();
   ~vtkCaptureLight() override;

@@ -71,6 +71,11 @@ public:
   void Off() override;
 
   /**
+   * Opens the device (PrepareDevice()).
+   */
+  bool Prepare() override { return this->PrepareDevice(); }
+
+  /**
    * Shows `pattern`: RGB uint8 scalars of the projector's size, one slice,
    * rows bottom first. False, with an error naming the projector, when the
    * pattern does not fit or the device fails.

@@ -167,6 +167,13 @@ bool vtkCaptureSession::PrepareDevices()
   {
     return this->Fail("opening the camera");
   }
+  for (vtkCaptureLight* light : this->Lights)
+  {
+    if (!light->Prepare())
+    {
+      return this->Fail("preparing the lights");
+    }
+  }
   return true;
 }
 
@@ -186,18 +193,19 @@ bool vtkCaptureSession::TakeView(int view)
   for (int i = 0; i < this->Writer->GetNumberOfPasses(); ++i)
   {
     const int pass = this->Writer->GetPass(i);
+    const std::string photograph = where + ", " + vtkLightField::GetPassName(pass) + " pass";
     for (vtkCaptureLight* light : this->Lights)
     {
       if (!light->Apply(pass))
       {
-        return this->Fail(where);
+        return this->Fail(photograph);
       }
     }
     vtkNew<vtkImageData> frame;
     start = Clock::now();
     if (!this->Camera->Acquire(frame))
     {
-      return this->Fail(where + ", " + vtkLightField::GetPassName(pass) + " pass");
+      return this->Fail(photograph);
     }
     this->DeviceSeconds += SecondsSince(start);
     if (!this->Writer->SetViewFrame(pass, frame))

@@ -17,7 +17,8 @@
  * views (after a fault, Abort(), a crash or kill -9: a view is either listed
  * complete with all its images or taken again). Before the first move the
  * gantry is connected, a fault it reports is reset, it is enabled, and
- * homed when it is not.
+ * homed when it is not; the camera is opened and the lights prepared
+ * (vtkCaptureLight::Prepare()); a new dataset is created only then.
  *
  * A failure of any device stops the gantry first (QuickStop()), switches
  * the lights off, closes the camera and is reported as ONE error: the view,
@@ -141,7 +142,8 @@ private:
   void operator=(const vtkCaptureSession&) = delete;
 
   bool Run(bool resume);
-  /// Connects, resets a fault, enables and homes the gantry; opens the camera.
+  /// Connects, resets a fault, enables and homes the gantry; opens the
+  /// camera; prepares the lights.
   bool PrepareDevices();
   /// Moves to view `view`'s angle, photographs every pass, commits the view.
   bool TakeView(int view);

@@ -77,6 +77,7 @@ public:
   bool LimitSwitchActive = false;
   int FaultCode = gantry::NoFault;
   int ArmedFault = gantry::NoFaultMode;
+  int QuickStops = 0;
   double TriggerTime = Never;
   double SilentUntil = -Never;
   double LastWatchdog = 0.0;
@@ -204,8 +205,8 @@ public:
     this->Homing = homing;
     this->InPosition = false;
     this->LastWatchdog = now;
-    const bool fires =
-      !homing && this->ArmedFault != gantry::NoFaultMode && this->ArmedFault != gantry::SlowMode;
+    const bool fires = !homing && this->ArmedFault != gantry::NoFaultMode &&
+      this->ArmedFault != gantry::SlowMode && this->ArmedFault != gantry::StuckCoilsMode;
     this->TriggerTime = fires ? now + 0.5 * this->Profile.GetDuration() : Never;
   }
 
@@ -223,6 +224,7 @@ public:
     const bool enable = (control & gantry::EnableBit) != 0;
     if (control & gantry::QuickStopBit || (!enable && this->Moving(now)))
     {
+      ++this->QuickStops;
       this->Halt(now, gantry::QuickStopFactor * acceleration);
     }
     else if (control & gantry::StopBit)
@@ -299,8 +301,8 @@ public:
     return 0;
   }
 
-  /// Answers one request (function codes 3, 6, 16 and 23) and carries out
-  /// what it wrote.
+  /// Answers one request (function codes 1, 3, 5, 6, 15, 16 and 23) and
+  /// carries out what it wrote.
   void Answer(const uint8_t* query, int length, double now)
   {
     const int header = modbus_get_header_length(this->Context);
@@ -327,7 +329,7 @@ public:
       count = word(7);
       values = query + header + 10;
     }
-    else if (function != 0x03)
+    else if (function != 0x03 && function != 0x01 && function != 0x05 && function != 0x0F)
     {
       modbus_reply_exception(this->Context, query, MODBUS_EXCEPTION_ILLEGAL_FUNCTION);
       return;
@@ -339,7 +341,15 @@ public:
       return;
     }
     this->Refresh(now);
+    // Stuck coils: the write is acknowledged, the outputs do not change
+    // (libmodbus checks the coils' addresses and answers).
+    const std::vector<uint8_t> coils(
+      this->Mapping->tab_bits, this->Mapping->tab_bits + this->Mapping->nb_bits);
     modbus_reply(this->Context, query, length, this->Mapping);
+    if (this->ArmedFault == gantry::StuckCoilsMode)
+    {
+      std::copy(coils.begin(), coils.end(), this->Mapping->tab_bits);
+    }
     for (int i = 0; i < count; ++i)
     {
       if (address + i == gantry::Watchdog)
@@ -489,7 +499,7 @@ bool vtkGantrySimulator::Listen()
   // A client that sends half a request must not stall the controller.
   modbus_set_indication_timeout(internals.Context, 1, 0);
 
-  internals.Mapping = modbus_mapping_new(0, 0, gantry::RegisterCount, 0);
+  internals.Mapping = modbus_mapping_new(gantry::CoilCount, 0, gantry::RegisterCount, 0);
   uint16_t* registers = internals.Registers();
   registers[gantry::Velocity] = 3000;    // 30 degree/s
   registers[gantry::Acceleration] = 600; // 60 degree/s^2
@@ -595,6 +605,27 @@ int vtkGantrySimulator::GetFaultCode()
 {
   std::lock_guard<std::mutex> lock(this->Internals->Mutex);
   return this->Internals->FaultCode;
+}
+
+double vtkGantrySimulator::GetActualVelocity()
+{
+  std::lock_guard<std::mutex> lock(this->Internals->Mutex);
+  double position, velocity;
+  this->Internals->Profile.Evaluate(this->Internals->Now(), position, velocity);
+  return velocity;
+}
+
+int vtkGantrySimulator::GetNumberOfQuickStops()
+{
+  std::lock_guard<std::mutex> lock(this->Internals->Mutex);
+  return this->Internals->QuickStops;
+}
+
+bool vtkGantrySimulator::GetCoil(int coil)
+{
+  std::lock_guard<std::mutex> lock(this->Internals->Mutex);
+  return this->Internals->Mapping && coil >= 0 && coil < this->Internals->Mapping->nb_bits &&
+    this->Internals->Mapping->tab_bits[coil] != 0;
 }
 
 int vtkGantrySimulator::GetNumberOfConnections()

@@ -18,8 +18,14 @@
  * the next move: silent (no answers for SilentTime seconds), drive fault,
  * emergency stop and limit switch (each quick-stops the axis and faults it),
  * dropped connection (every connection closed, axis quick-stopped); slow
- * runs every move at SlowFactor of its velocity. The watchdog quick-stops a
+ * runs every move at SlowFactor of its velocity; stuck coils acknowledge
+ * writes to the coils without changing them. The watchdog quick-stops a
  * move that receives no watchdog write within the watchdog timeout.
+ *
+ * The controller's digital outputs are coils 0 .. lfd::gantry::CoilCount - 1
+ * (read with function 1, written with 5 and 15), all off at power-up: a
+ * vtkModbusLight switches a lamp on one, and the simulated rig camera can
+ * follow it (GetCoil()).
  *
  * Start() serves in a thread of this process (tests); Serve() serves in the
  * calling thread until RequestStop() (`lfd gantry-sim`, which calls it from
@@ -69,7 +75,7 @@ public:
    * The fault (lfd::gantry::FaultMode) armed when serving starts. Default 0
    * (none).
    */
-  vtkSetClampMacro(Fault, int, 0, 6);
+  vtkSetClampMacro(Fault, int, 0, 7);
   vtkGetMacro(Fault, int);
   ///@}
 
@@ -127,14 +133,20 @@ public:
 
   ///@{
   /**
-   * The axis as the controller sees it now: position in degrees, status
-   * word and fault code (lfdGantryRegisters.h), and the number of client
-   * connections accepted so far.
+   * The axis as the controller sees it now: position in degrees, velocity
+   * in degree/s, status word and fault code (lfdGantryRegisters.h), the
+   * number of quick stops clients commanded (a quick-stop bit, or the
+   * enable bit dropped during a move) and of client connections accepted
+   * so far; and whether coil `coil` (a digital output) is on (false for a
+   * coil that does not exist or when not listening).
    */
   double GetActualAngle();
+  double GetActualVelocity();
   int GetStatusWord();
   int GetFaultCode();
+  int GetNumberOfQuickStops();
   int GetNumberOfConnections();
+  bool GetCoil(int coil);
   ///@}
 
 protected:

@@ -2,14 +2,11 @@
 
 #include "lfdGantryRegisters.h"
 #include "lfdJsonFields.h"
+#include "lfdModbusClient.h"
 #include "lfdMotionProfile.h"
 
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-
-#include <modbus/modbus.h>
-
-#include <arpa/inet.h>
 
 #include <cerrno>
 #include <chrono>
@@ -33,104 +30,18 @@ double Now()
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-
-void SetModbusTimeout(modbus_t* context, double seconds)
-{
-  const double whole = std::floor(seconds);
-  modbus_set_response_timeout(context,
-    static_cast<uint32_t>(whole),
-    static_cast<uint32_t>(std::lround((seconds - whole) * 1e6)));
-}
-
-/// A Modbus exception: the controller answered and refused the request.
-bool IsException(int error)
-{
-  return error > MODBUS_ENOBASE && error < MODBUS_ENOBASE + MODBUS_EXCEPTION_MAX;
-}
 }
 
 /// The connection and the motion being waited for.
 class vtkModbusGantry::vtkInternals
 {
 public:
-  modbus_t* Context = nullptr;
-  bool Connected = false;
-  /// Whether the last failure happened while connecting.
-  bool FailedToConnect = false;
+  lfd::ModbusClient Client;
   uint16_t WatchdogCount = 0;
   /// The motion waited for: "the move to 30 deg", "homing".
   std::string Motion;
   double Deadline = 0.0;
   double DeadlineSeconds = 0.0;
-
-  ~vtkInternals() { this->Close(); }
-
-  void Close()
-  {
-    if (this->Context)
-    {
-      modbus_close(this->Context);
-      modbus_free(this->Context);
-      this->Context = nullptr;
-    }
-    this->Connected = false;
-  }
-
-  /// Connects within the connect timeout; 0 or the errno.
-  int Open(vtkModbusGantry* self)
-  {
-    // libmodbus waits for a TCP connection as long as for an answer.
-    SetModbusTimeout(this->Context, self->ConnectTimeout);
-    if (modbus_connect(this->Context) == -1)
-    {
-      const int error = errno;
-      modbus_close(this->Context);
-      return error;
-    }
-    SetModbusTimeout(this->Context, self->ResponseTimeout);
-    this->Connected = true;
-    return 0;
-  }
-
-  /**
-   * Sends a request (`request(context)` returns -1 on failure, as libmodbus
-   * calls do) with up to `retries` retries, reconnecting after a failure
-   * that is not the controller's refusal. Returns 0 or the last errno.
-   */
-  template<typename Request>
-  int Transact(vtkModbusGantry* self, Request request, int retries)
-  {
-    if (!this->Context)
-    {
-      return ENOTCONN; // Connect() makes the context
-    }
-    int error = 0;
-    for (int attempt = 0; attempt <= retries; ++attempt)
-    {
-      this->FailedToConnect = false;
-      if (!this->Connected)
-      {
-        error = this->Open(self);
-        this->FailedToConnect = error != 0;
-        if (error)
-        {
-          continue;
-        }
-      }
-      if (request(this->Context) != -1)
-      {
-        return 0;
-      }
-      error = errno;
-      if (IsException(error))
-      {
-        return error;
-      }
-      modbus_close(this->Context);
-      this->Connected = false;
-    }
-    return error;
-  }
 };
 
 vtkStandardNewMacro(vtkModbusGantry);
@@ -151,47 +62,6 @@ std::string vtkModbusGantry::GetDeviceName() const
     std::to_string(this->Port);
 }
 
-namespace
-{
-/// Why a request failed, from its errno, for one message.
-std::string DescribeFailure(int error,
-  bool connecting,
-  double connectTimeout,
-  double responseTimeout,
-  int attempts)
-{
-  std::ostringstream text;
-  const std::string tries = attempts == 1 ? "1 attempt" : std::to_string(attempts) + " attempts";
-  if (error == ENOTCONN)
-  {
-    text << "not connected (call Connect() first)";
-  }
-  else if (IsException(error))
-  {
-    text << "the controller refused the request: " << modbus_strerror(error);
-  }
-  else if (connecting)
-  {
-    text << "cannot connect";
-    if (error == ETIMEDOUT || error == EINPROGRESS)
-    {
-      text << " within " << connectTimeout << " s";
-    }
-    text << ": " << modbus_strerror(error) << " (" << tries << ")";
-  }
-  else if (error == ETIMEDOUT)
-  {
-    text << "no answer within " << responseTimeout << " s (" << modbus_strerror(error) << "; "
-         << tries << ")";
-  }
-  else
-  {
-    text << "communication failed: " << modbus_strerror(error) << " (" << tries << ")";
-  }
-  return text.str();
-}
-}
-
 void vtkModbusGantry::Refuse(const std::string& reason)
 {
   vtkErrorMacro(<< this->GetDeviceName() << ": " << reason);
@@ -199,45 +69,33 @@ void vtkModbusGantry::Refuse(const std::string& reason)
 
 void vtkModbusGantry::RefuseRequest(int error, const std::string& during)
 {
-  this->Refuse(DescribeFailure(error,
-                 this->Internals->FailedToConnect,
-                 this->ConnectTimeout,
-                 this->ResponseTimeout,
-                 this->Retries + 1) +
-    (during.empty() ? "" : " during " + during));
+  this->Refuse(
+    this->Internals->Client.DescribeFailure(error) + (during.empty() ? "" : " during " + during));
 }
 
 namespace
 {
-/// The settings' ranges: the registers' units and sizes, and sane waits.
-struct SettingCheck
+/// The gantry's connection settings, as the Modbus client takes them.
+lfd::ModbusSettings ConnectionSettings(vtkModbusGantry* gantry)
 {
-  const char* Name;
-  const char* Field;
-  double Value;
-  double Lowest;
-  double Highest;
-  bool LowestIncluded;
-  const char* Unit;
-};
+  lfd::ModbusSettings settings;
+  settings.Address = gantry->GetAddress() ? gantry->GetAddress() : "";
+  settings.Port = gantry->GetPort();
+  settings.ConnectTimeout = gantry->GetConnectTimeout();
+  settings.ResponseTimeout = gantry->GetResponseTimeout();
+  settings.Retries = gantry->GetRetries();
+  return settings;
+}
 }
 
-std::string vtkModbusGantry::CheckSettings(bool fileFields) const
+std::string vtkModbusGantry::CheckSettings(bool fileFields)
 {
-  // The property's name, or the gantry description's field.
-  const auto name = [fileFields](const char* property, const char* field)
-  { return fileFields ? "field \"" + std::string(field) + "\": " : std::string(property) + " "; };
-  in_addr parsed{};
-  if (!this->Address || inet_pton(AF_INET, this->Address, &parsed) != 1)
+  const std::string connection = lfd::CheckModbusSettings(ConnectionSettings(this), fileFields);
+  if (!connection.empty())
   {
-    return name("Address", "address") + "'" + std::string(this->Address ? this->Address : "") +
-      "' is not an IPv4 address (e.g. 192.168.1.20)";
+    return connection;
   }
-  const SettingCheck checks[] = {
-    { "Port", "port", static_cast<double>(this->Port), 1.0, 65535.0, true, "" },
-    { "ConnectTimeout", "connect_timeout", this->ConnectTimeout, 0.0, 3600.0, false, " s" },
-    { "ResponseTimeout", "response_timeout", this->ResponseTimeout, 0.0, 3600.0, false, " s" },
-    { "Retries", "retries", static_cast<double>(this->Retries), 0.0, 100.0, true, "" },
+  const lfd::SettingCheck checks[] = {
     { "Velocity",
       "velocity",
       this->Velocity,
@@ -259,18 +117,11 @@ std::string vtkModbusGantry::CheckSettings(bool fileFields) const
     { "DeadlineMargin", "deadline_margin", this->DeadlineMargin, 0.0, 3600.0, true, " s" },
     { "PollInterval", "poll_interval", this->PollInterval, 0.0, 1.0, false, " s" },
   };
-  for (const SettingCheck& check : checks)
+  const std::string motion =
+    lfd::CheckSettings(checks, static_cast<int>(sizeof(checks) / sizeof(checks[0])), fileFields);
+  if (!motion.empty())
   {
-    // !(a <= b) also refuses NaN.
-    const bool low =
-      check.LowestIncluded ? !(check.Value >= check.Lowest) : !(check.Value > check.Lowest);
-    if (low || !(check.Value <= check.Highest))
-    {
-      std::ostringstream reason;
-      reason << name(check.Name, check.Field) << check.Value << check.Unit << " is out of range "
-             << (check.LowestIncluded ? "[" : "(") << check.Lowest << ", " << check.Highest << "]";
-      return reason.str();
-    }
+    return motion;
   }
   if (!(this->SoftLimits[0] < this->SoftLimits[1]))
   {
@@ -373,11 +224,9 @@ bool vtkModbusGantry::Connect()
     this->Refuse(refused);
     return false;
   }
-  this->Internals->Context = modbus_new_tcp(this->Address, this->Port);
+  this->Internals->Client.Reset(ConnectionSettings(this));
   uint16_t identity[2] = { 0, 0 };
-  const int error = this->Internals->Transact(
-    this,
-    [&](modbus_t* context)
+  const int error = this->Internals->Client.Transact([&](modbus_t* context)
     { return modbus_read_registers(context, gantry::Identity, 2, identity); },
     this->Retries);
   if (error)
@@ -402,12 +251,12 @@ bool vtkModbusGantry::Connect()
 
 void vtkModbusGantry::Disconnect()
 {
-  this->Internals->Close();
+  this->Internals->Client.Close();
 }
 
 bool vtkModbusGantry::IsConnected() const
 {
-  return this->Internals->Connected;
+  return this->Internals->Client.IsConnected();
 }
 
 bool vtkModbusGantry::IsReady() const
@@ -435,8 +284,7 @@ bool vtkModbusGantry::UpdateState()
   vtkInternals& internals = *this->Internals;
   // One request refreshes the watchdog and reads the state (function 23).
   uint16_t registers[4];
-  const int error = internals.Transact(
-    this,
+  const int error = internals.Client.Transact(
     [&](modbus_t* context)
     {
       const uint16_t count = ++internals.WatchdogCount;
@@ -457,9 +305,8 @@ bool vtkModbusGantry::UpdateState()
 
 bool vtkModbusGantry::Command(int control, const std::string& during)
 {
-  const int error = this->Internals->Transact(
-    this,
-    [&](modbus_t* context) { return modbus_write_register(context, gantry::ControlWord, control); },
+  const int error = this->Internals->Client.Transact([&](modbus_t* context)
+    { return modbus_write_register(context, gantry::ControlWord, control); },
     this->Retries);
   if (error)
   {
@@ -490,8 +337,7 @@ bool vtkModbusGantry::Enable()
     static_cast<int32_t>(std::lround(this->SoftLimits[1] / gantry::PositionUnit)));
   registers[gantry::WatchdogTimeout - gantry::Velocity] =
     static_cast<uint16_t>(std::lround(this->WatchdogTimeout * 1000.0));
-  const int error = this->Internals->Transact(
-    this,
+  const int error = this->Internals->Client.Transact(
     [&](modbus_t* context)
     {
       return modbus_write_registers(
@@ -592,9 +438,7 @@ bool vtkModbusGantry::StartMove(double angle)
   }
   uint16_t target[2];
   gantry::SetInt32(target, static_cast<int32_t>(std::lround(angle / gantry::PositionUnit)));
-  const int error = this->Internals->Transact(
-    this,
-    [&](modbus_t* context)
+  const int error = this->Internals->Client.Transact([&](modbus_t* context)
     { return modbus_write_registers(context, gantry::TargetPosition, 2, target); },
     this->Retries);
   if (error)
@@ -623,9 +467,7 @@ bool vtkModbusGantry::PollMotion()
     {
       // Best effort, once: the controller's watchdog stops the axis when
       // this does not reach it either.
-      internals.Transact(
-        this,
-        [](modbus_t* context)
+      internals.Client.Transact([](modbus_t* context)
         { return modbus_write_register(context, gantry::ControlWord, gantry::QuickStopBit); },
         0);
       return false;

@@ -219,7 +219,7 @@ private:
 
   /// "" or why a setting is refused, naming the property or (`fileFields`)
   /// the gantry description's field.
-  std::string CheckSettings(bool fileFields) const;
+  std::string CheckSettings(bool fileFields);
   /// The one error of a failed call: the device, then `reason`.
   void Refuse(const std::string& reason);
   /// Refuses with what a failed request's errno means.

@@ -111,6 +111,7 @@ struct vtkSimulatedRigCamera::Internals
     bool Coaxial = false;
     std::vector<vtkSmartPointer<vtkImageData>> Patterns;
     std::function<bool(double&)> AngleSource;
+    std::function<bool()> CoaxialSource;
   };
   Lights Current;
   // Faults still to come.
@@ -265,7 +266,7 @@ bool vtkSimulatedRigCamera::Internals::RenderFrame(vtkSimulatedRigCamera* owner,
   capture->CaptureDepthOff();
   capture->SetProjectorNoise(0.0);
   errors->Clear();
-  if (lights.Coaxial)
+  if (lights.CoaxialSource ? lights.CoaxialSource() : lights.Coaxial)
   {
     capture->CaptureCoaxialOn();
     capture->SetProjectors(nullptr);
@@ -378,10 +379,41 @@ void vtkSimulatedRigCamera::SetCoaxialLight(bool on)
 }
 
 //------------------------------------------------------------------------------
-bool vtkSimulatedRigCamera::GetCoaxialLight()
+void vtkSimulatedRigCamera::SetCoaxialLightSource(std::function<bool()> source)
 {
   std::lock_guard<std::mutex> lock(this->Internal->Mutex);
-  return this->Internal->Current.Coaxial;
+  this->Internal->Current.CoaxialSource = std::move(source);
+}
+
+//------------------------------------------------------------------------------
+bool vtkSimulatedRigCamera::GetCoaxialLight()
+{
+  std::function<bool()> source;
+  {
+    std::lock_guard<std::mutex> lock(this->Internal->Mutex);
+    if (!this->Internal->Current.CoaxialSource)
+    {
+      return this->Internal->Current.Coaxial;
+    }
+    source = this->Internal->Current.CoaxialSource;
+  }
+  return source();
+}
+
+//------------------------------------------------------------------------------
+int vtkSimulatedRigCamera::GetNumberOfLitProjectors()
+{
+  std::lock_guard<std::mutex> lock(this->Internal->Mutex);
+  int lit = 0;
+  for (const vtkSmartPointer<vtkImageData>& pattern : this->Internal->Current.Patterns)
+  {
+    vtkDataArray* scalars = pattern ? pattern->GetPointData()->GetScalars() : nullptr;
+    const auto* bytes =
+      scalars ? static_cast<const unsigned char*>(scalars->GetVoidPointer(0)) : nullptr;
+    const vtkIdType size = scalars ? scalars->GetNumberOfValues() : 0;
+    lit += std::any_of(bytes, bytes + size, [](unsigned char value) { return value != 0; }) ? 1 : 0;
+  }
+  return lit;
 }
 
 //------------------------------------------------------------------------------

@@ -18,7 +18,9 @@
  *   when one is set (the gantry's actual position, read at exposure
  *   time), else from Angle;
  * - the lights, as the simulated lights set them: the coaxial lamp
- *   (SetCoaxialLight, vtkSimulatedCoaxialLight) renders the Coaxial pass;
+ *   (SetCoaxialLight, vtkSimulatedCoaxialLight; or, with a
+ *   CoaxialLightSource, the lamp as the rig switched it, e.g. the gantry
+ *   simulator's coil that a vtkModbusLight drives) renders the Coaxial pass;
  *   each projector of Projectors that shows a pattern
  *   (SetProjectorPattern, vtkSimulatedProjector) lights the object as
  *   vtkLightFieldCapture's Coded pass with that pattern as its mask (a
@@ -120,6 +122,15 @@ public:
    * An empty function (the default) uses Angle.
    */
   void SetAngleSource(std::function<bool(double& degrees)> source);
+
+  /**
+   * Where the coaxial lamp's state comes from at each exposure: a function
+   * that returns whether the lamp is on now (e.g. the gantry simulator's
+   * coil, vtkGantrySimulator::GetCoil()). Called in the render thread and by
+   * GetCoaxialLight(). An empty function (the default) uses
+   * SetCoaxialLight().
+   */
+  void SetCoaxialLightSource(std::function<bool()> source);
 #endif
 
   ///@{
@@ -140,12 +151,19 @@ public:
    * projector's image size, rows bottom first as in a light field's
    * projector masks; copied), nullptr for dark. False, with an error, for
    * a projector that does not exist or a pattern of the wrong size. Safe
-   * to call while the camera runs.
+   * to call while the camera runs. GetCoaxialLight() asks the
+   * CoaxialLightSource when one is set.
    */
   void SetCoaxialLight(bool on);
   bool GetCoaxialLight();
   bool SetProjectorPattern(int projector, vtkImageData* pattern);
   ///@}
+
+  /**
+   * The projectors that light the object now: those showing a pattern that
+   * is not all black.
+   */
+  int GetNumberOfLitProjectors();
 
   ///@{
   /**

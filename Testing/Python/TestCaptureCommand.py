@@ -13,8 +13,11 @@ pixel unlabelled (the 2 projectors light less than half of them: without
 the completion through the visual hull its own view 3 rendered at 15 dB);
 (c) `lfd scene init` + `lfd render --view 3` gives back the photograph;
 (d) `lfd lattice` bends it and `lfd eval groundtruth` compares the render
-with the fish mesh bent by the same cage. Bad input: an unreachable gantry
-is one error naming it."""
+with the fish mesh bent by the same cage. The coaxial lamp is switched on
+coil 5 of the simulator over Modbus (--coaxial-coil) and the simulated
+camera sees that coil: (a) holding for the Coaxial pass proves the lamp
+followed the passes. Bad input: an unreachable gantry, and --coaxial-lamp
+with --simulate, are one error each naming them."""
 import glob
 import json
 import os
@@ -64,7 +67,7 @@ t.check(synth.returncode == 0, "lfd synth of a 36-view ring with 2 projectors",
         synth.returncode or "ok")
 capture = [t.LFD, "capture", "--simulate", "--gantry", "127.0.0.1:0", "--rig", ref,
            "--projectors", "2", "--out", out,
-           "--velocity", "600", "--acceleration", "6000"]
+           "--velocity", "600", "--acceleration", "6000", "--coaxial-coil", "5"]
 
 
 def listed_views():
@@ -197,4 +200,13 @@ t.check(refused.returncode == 1 and error_lines == [
     "lfd: error: preparing the gantry: gantry 127.0.0.1:1: cannot connect: Connection refused "
     "(3 attempts)"] and not os.path.exists(os.path.join(folder, "refused.lf")),
     "an unreachable gantry: one error naming it, nothing written", error_lines)
+# The simulated lamp is on the simulator's coil: no other lamp device.
+lamp = subprocess.run([t.LFD, "capture", "--simulate", "--gantry", "127.0.0.1:0", "--rig", ref,
+                       "--views", "12", "--out", os.path.join(folder, "lamp.lf"),
+                       "--coaxial-coil", "5", "--coaxial-lamp", "127.0.0.1:502"],
+                      capture_output=True, text=True)
+t.check(lamp.returncode == 1 and [line for line in lamp.stderr.splitlines() if "error" in line] == [
+    "lfd: error: --coaxial-lamp '127.0.0.1:502': not with --simulate (the simulated lamp is on "
+    "a coil of the gantry simulator)"] and not os.path.exists(os.path.join(folder, "lamp.lf")),
+    "--coaxial-lamp with --simulate: one error", lamp.stderr.strip())
 t.finish()

@@ -2,8 +2,9 @@
 127.0.0.1 (port LFD_GANTRY_PORT) with an emergency stop armed for the first
 move: homing, the e-stop mid-move (one error line, the axis stopped, the
 fault reported until reset), recovery, a move; the refusals (unreachable
-port, taken port, unknown fault mode, a description without its port); and
-the README's Python example. The
+port, taken port, unknown fault mode, a description without its port); the
+coaxial lamp on a coil (`lfd gantry lamp on|off --coil N`); and the README's
+Python examples (gantry, lamp). The
 other refusals and faults are the C++ tests' (Testing/Cxx)."""
 import os
 import re
@@ -96,6 +97,15 @@ bad_fault = subprocess.run([LFD, "gantry-sim", "--fault", "meteor"], capture_out
 check(bad_fault.returncode == 2 and "--fault" in bad_fault.stderr,
       "an unknown fault mode is a command-line error", bad_fault.stderr.strip())
 
+# The coaxial lamp on coil 2 of the controller, as `lfd capture
+# --coaxial-coil 2` switches it: read back after each switch.
+LAMP = f"coaxial lamp 127.0.0.1:{PORT} coil "
+expect(gantry("lamp", "on", "--coil", "2"), 0, LAMP + "2: on (read back)\n", "", "lamp on")
+expect(gantry("lamp", "off", "--coil", "2"), 0, LAMP + "2: off (read back)\n", "", "lamp off")
+expect(gantry("lamp", "on", "--coil", "8"), 1, "",
+       "lfd: error: " + LAMP + "8: the controller refused the request: Illegal data address "
+       "while switching it on\n", "a coil the controller lacks")
+
 # The README's Python example.
 simulator = lfd.vtkGantrySimulator()
 check(simulator.Start(), "simulator serving in this process", simulator.GetBoundPort())
@@ -107,6 +117,16 @@ device.SetAcceleration(480.0)
 moved = device.Connect() and device.Enable() and device.Home() and device.MoveTo(90.0)
 check(moved and device.GetActualAngle() == 90.0, "Python: homed, moved to 90 deg",
       device.GetActualAngle())
+# The README's lamp example (The coaxial lamp on a Modbus coil).
+lamp = lfd.vtkModbusLight()
+lamp.SetName("coaxial lamp")
+lamp.SetAddress("127.0.0.1")
+lamp.SetPort(simulator.GetBoundPort())
+lamp.SetCoil(2)
+on = lamp.Apply(lfd.vtkLightField.COAXIAL) and simulator.GetCoil(2)
+off = lamp.Apply(lfd.vtkLightField.FLOOD) and not simulator.GetCoil(2)
+lamp.Off()
+check(on and off, "Python: the lamp on coil 2 on for Coaxial, off for Flood", (on, off))
 simulator.Stop()
 
 print(f"{len(failures)} failure(s)")
