@@ -124,13 +124,31 @@ int CommandErrors::Finish()
   return 1;
 }
 
+namespace
+{
+bool Quiet = false;
+}
+
+void SetConsoleQuiet(bool quiet)
+{
+  Quiet = quiet;
+}
+
 void PrintError(const std::string& message)
 {
+  if (Quiet)
+  {
+    return;
+  }
   std::cerr << "lfd: error: " << lfd::io::NameTargets(message) << std::endl;
 }
 
 void PrintWarning(const std::string& message)
 {
+  if (Quiet)
+  {
+    return;
+  }
   std::cerr << "lfd: warning: " << lfd::io::NameTargets(message) << std::endl;
 }
 
