@@ -20,6 +20,9 @@
 
 namespace
 {
+/// SetConsoleQuiet(): nothing said, not even progress.
+bool Quiet = false;
+
 struct ProgressState
 {
   std::string What;
@@ -36,6 +39,10 @@ void OnProgress(vtkObject* caller, unsigned long event, void* clientData, void* 
   if (event == vtkCommand::DeleteEvent)
   {
     delete state;
+    return;
+  }
+  if (Quiet)
+  {
     return;
   }
   const double progress = *static_cast<double*>(callData);
@@ -122,11 +129,6 @@ int CommandErrors::Finish()
   }
   PrintError(first);
   return 1;
-}
-
-namespace
-{
-bool Quiet = false;
 }
 
 void SetConsoleQuiet(bool quiet)

@@ -52,7 +52,7 @@ private:
 };
 
 /**
- * Quiet: PrintError() and PrintWarning() print nothing. The processes of an
+ * Quiet: PrintError(), PrintWarning() and the progress print nothing. The processes of an
  * MPI job other than process 0 are quiet: process 0 speaks for the job
  * (lfd::cli::ProcessGroup).
  */

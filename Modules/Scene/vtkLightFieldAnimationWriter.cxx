@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -439,6 +440,10 @@ bool vtkLightFieldAnimationWriter::Internals::Encode(vtkLightFieldAnimationWrite
   const std::string movie = folder + "/" + MovieName;
   const std::string rate = std::to_string(self->FrameRate);
   const std::string frames = folder + "/frame_%04d.png";
+  // x264 writes its thread count into the movie and takes it from the cores
+  // this process may use: under mpirun process 0 is bound to one core. The
+  // machine's cores give the same movie either way.
+  const std::string threads = std::to_string(std::max(1U, std::thread::hardware_concurrency()));
   // H.264 in yuv420p, which every player decodes; yuv420p halves the chroma
   // resolution, so odd sizes are padded to even ones. No shell: any path works.
   const char* command[] = { ffmpeg.c_str(),
@@ -456,6 +461,8 @@ bool vtkLightFieldAnimationWriter::Internals::Encode(vtkLightFieldAnimationWrite
     "libx264",
     "-pix_fmt",
     "yuv420p",
+    "-threads",
+    threads.c_str(),
     movie.c_str(),
     nullptr };
   vtksysProcess* process = vtksysProcess_New();
