@@ -487,8 +487,8 @@ struct BenchRow
   std::string Table; ///< "reference", "render", "light-field size", "cage size"
   std::string Name;
   int Size = 0;                  ///< frame width and height
-  int Views = 0;                 ///< the light field's views and image width (= height)
-  int ImageSize = 0;             ///<
+  int Views = 0;                 ///< the light field's views
+  int ImageSize = 0;             ///< its image width (= height)
   long long LightFieldBytes = 0; ///< its passes in memory (Coaxial, Label)
   int Boxes = 0;                 ///< cage boxes (0: undeformed)
   Measure Figures;
@@ -536,7 +536,7 @@ BenchRow Row(const std::string& table,
   int boxes,
   const Measure& figures)
 {
-  BenchRow row{ table,
+  return { table,
     name,
     size,
     lightField->GetNumberOfViews(),
@@ -545,7 +545,6 @@ BenchRow Row(const std::string& table,
     boxes,
     figures,
     {} };
-  return row;
 }
 
 /// The frame size of the light-field-size and cage-size tables: 512 (the
@@ -629,12 +628,21 @@ void PrintTable(const std::string& title,
   const std::vector<BenchRow>& rows,
   const ReferenceTimes& reference)
 {
+  // The table's rows, and the further figures any of them has (a column each).
   std::vector<const BenchRow*> selected;
+  std::vector<std::string> columns;
   for (const BenchRow& row : rows)
   {
     if (row.Table == table)
     {
       selected.push_back(&row);
+      for (const auto& figure : row.Extra)
+      {
+        if (std::find(columns.begin(), columns.end(), figure.first) == columns.end())
+        {
+          columns.push_back(figure.first);
+        }
+      }
     }
   }
   if (selected.empty())
@@ -648,9 +656,9 @@ void PrintTable(const std::string& title,
     "rays/s",
     "vs ref",
     "peak MB");
-  for (const auto& [name, value] : selected.front()->Extra)
+  for (const std::string& column : columns)
   {
-    std::printf(" %12s", name.c_str());
+    std::printf(" %12s", column.c_str());
   }
   std::printf("\n");
   for (const BenchRow* row : selected)
@@ -664,9 +672,19 @@ void PrintTable(const std::string& title,
       pixels / seconds,
       seconds / reference.at(row->Size),
       row->Figures.PeakBytes / 1048576.0);
-    for (const auto& [name, value] : row->Extra)
+    for (const std::string& column : columns)
     {
-      std::printf(" %12.3g", value);
+      const auto figure = std::find_if(row->Extra.begin(),
+        row->Extra.end(),
+        [&column](const std::pair<std::string, double>& f) { return f.first == column; });
+      if (figure == row->Extra.end())
+      {
+        std::printf(" %12s", "");
+      }
+      else
+      {
+        std::printf(" %12.3g", figure->second);
+      }
     }
     std::printf("\n");
   }

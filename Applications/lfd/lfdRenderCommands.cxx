@@ -189,8 +189,10 @@ void Animate(const std::string& scenePath, int frames, const std::string& out, b
   std::unique_ptr<StagedFolder> folder;
   std::string refusal;
   {
-    StepErrors seen;
-    seen->Observe(vtkOutputWindow::GetInstance());
+    // The errors VTK objects report (their warnings are said as they come).
+    vtkNew<vtkLightFieldErrorObserver> seen;
+    vtkOutputWindow* window = vtkOutputWindow::GetInstance();
+    const unsigned long tag = window->AddObserver(vtkCommand::ErrorEvent, seen);
     try
     {
       scene = ReadScene(scenePath);
@@ -210,6 +212,7 @@ void Animate(const std::string& scenePath, int frames, const std::string& out, b
       // (An empty message: a VTK object said why.)
       refusal = failure.Message.empty() ? std::string(seen->GetErrorMessage()) : failure.Message;
     }
+    window->RemoveObserver(tag);
   }
   refusal = lfd::scene::AgreeOnError(ProcessGroup::GetController(), refusal);
   if (!refusal.empty())
