@@ -7,6 +7,7 @@
 // (lfdCommands.h); this file holds the command line itself: parsing,
 // suggestions for mistyped words, and main().
 #include "lfdCommands.h"
+#include "lfdProcessGroup.h"
 
 #include <CLI/CLI.hpp>
 
@@ -354,6 +355,7 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
     {
       if (*command.App)
       {
+        ProcessGroup::Check(command.App->get_name().c_str());
         if (command.NeedsDisplay)
         {
           RequireDisplay(command.App);
@@ -375,6 +377,8 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
 
 int main(int argc, char* argv[])
 {
+  // First and last: MPI under `mpirun` (lfdProcessGroup.h).
+  lfd::cli::ProcessGroup processes(&argc, &argv);
   lfd::CommandErrors errors;
   // No exception leaves lfd: whatever escapes a command is one error line.
   try

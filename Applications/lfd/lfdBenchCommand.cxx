@@ -1,6 +1,7 @@
-// `lfd bench`: rays/s and ms/frame of the renderer, against a reference loop
-// and against cage size; with --studio, the frame times of the editing view
-// (vtkLightFieldEditor) during a drag.
+// `lfd bench`: rays/s, ms/frame and peak memory of the renderer at several
+// frame sizes, against a reference loop, against light-field size and
+// against cage size, as tables and as JSON; with --studio, the frame times of
+// the editing view (vtkLightFieldEditor) during a drag.
 #include "lfdCommands.h"
 
 #include "vtkCagePoseFilter.h"
@@ -26,13 +27,19 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -40,9 +47,56 @@ namespace lfd::cli
 {
 namespace
 {
-/// Median time (s) of `repeat` updates of the renderer, after a warm-up.
-double MedianRenderTime(vtkLightFieldRenderer* renderer, int repeat)
+/**
+ * The process's peak resident memory over a stretch of work: Reset() sets
+ * the kernel's high-water mark (VmHWM) back to the current resident size
+ * (/proc/self/clear_refs, Linux 4.0 and later), Read() gives it in bytes,
+ * so that each configuration's peak is its own. Where the mark cannot be
+ * reset, Read() is the process's peak so far (getrusage) and Scope() says so.
+ */
+class PeakMemory
 {
+public:
+  void Reset()
+  {
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5";
+    clear.close();
+    this->Resettable = !clear.fail();
+  }
+
+  long long Read() const
+  {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+    {
+      if (line.rfind("VmHWM:", 0) == 0)
+      {
+        return 1024LL * std::atoll(line.c_str() + 6);
+      }
+    }
+    return 0;
+  }
+
+  const char* Scope() const { return this->Resettable ? "configuration" : "process"; }
+
+private:
+  bool Resettable = false;
+};
+
+/// A configuration's median time per frame (s) and peak memory (bytes).
+struct Measure
+{
+  double Seconds = 0.0;
+  long long PeakBytes = 0;
+};
+
+/// Median time (s) of `repeat` updates of the renderer after a warm-up, and
+/// the peak memory over them.
+Measure MeasureRender(vtkLightFieldRenderer* renderer, int repeat, PeakMemory& peak)
+{
+  peak.Reset();
   Run(renderer, "rendering"); // warm-up (rig layout, threads)
   std::vector<double> times;
   for (int i = 0; i < repeat; ++i)
@@ -53,7 +107,7 @@ double MedianRenderTime(vtkLightFieldRenderer* renderer, int repeat)
     times.push_back(Seconds(start));
   }
   std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
+  return { times[times.size() / 2], peak.Read() };
 }
 
 /// A renderer of `lightField` at `size` x `size` from the bench's orbit camera.
@@ -71,17 +125,18 @@ vtkSmartPointer<vtkLightFieldRenderer> OrbitRenderer(vtkLightField* lightField, 
 }
 
 /**
- * Median render times (s) of `object`'s light field at `size` x `size` from
- * an orbit camera, at rest and deformed: the fish swimming (3 boxes,
+ * Median render times and peaks of `object`'s light field at `size` x `size`
+ * from an orbit camera, at rest and deformed: the fish swimming (3 boxes,
  * Fig. 13), the figure twisted by 45 degrees (Fig. 1).
  */
-std::pair<double, double> RenderTimes(vtkLightField* lightField,
+std::pair<Measure, Measure> RenderTimes(vtkLightField* lightField,
   const std::string& object,
   int size,
-  int repeat)
+  int repeat,
+  PeakMemory& peak)
 {
   vtkSmartPointer<vtkLightFieldRenderer> renderer = OrbitRenderer(lightField, size);
-  const double rest = MedianRenderTime(renderer, repeat);
+  const Measure rest = MeasureRender(renderer, repeat, peak);
 
   vtkNew<vtkProceduralObjectSource> source;
   source->SetObject(vtkProceduralObjectSource::GetObjectFromString(object.c_str()));
@@ -103,7 +158,7 @@ std::pair<double, double> RenderTimes(vtkLightField* lightField,
   }
   Run(pose.Get(), "posing the cage");
   renderer->SetCageData(pose->GetOutput());
-  return { rest, MedianRenderTime(renderer, repeat) };
+  return { rest, MeasureRender(renderer, repeat, peak) };
 }
 
 /// What one recorded drag in the editor measured.
@@ -388,11 +443,16 @@ double ReferenceTime(vtkLightField* lightField, int size, int repeat)
 }
 
 /**
- * Median render time (s) of the fish bent by 30 degrees under the cage of
- * FishScene with `boxes` boxes, at `size` x `size`, with or without
- * the renderer's per-frame acceleration (vtkLightFieldRenderer::CageAcceleration).
+ * Median render time and peak of the fish bent by 30 degrees under the cage
+ * of FishScene with `boxes` boxes, at `size` x `size`, with or without the
+ * renderer's per-frame acceleration (vtkLightFieldRenderer::CageAcceleration).
  */
-double CageRenderTime(vtkLightField* lightField, int boxes, int size, int repeat, bool accelerated)
+Measure CageRenderTime(vtkLightField* lightField,
+  int boxes,
+  int size,
+  int repeat,
+  bool accelerated,
+  PeakMemory& peak)
 {
   auto logic = FishScene(lightField, boxes);
   vtkNew<vtkCagePoseFilter> pose;
@@ -405,104 +465,356 @@ double CageRenderTime(vtkLightField* lightField, int boxes, int size, int repeat
   vtkSmartPointer<vtkLightFieldRenderer> renderer = OrbitRenderer(lightField, size);
   renderer->SetCageData(pose->GetOutput());
   renderer->SetCageAcceleration(accelerated);
-  return MedianRenderTime(renderer, repeat);
+  return MeasureRender(renderer, repeat, peak);
+}
+
+/// What `lfd bench` measures: the sizes, tables and repeats of a run.
+struct BenchSettings
+{
+  int Repeat = 15;
+  std::vector<int> Sizes = { 256, 512, 1024 };
+  bool Quick = false;
+  std::string Json;
+};
+
+/**
+ * One measured configuration, a row of one of the bench's tables. Every
+ * table is a list of such rows, printed and written to JSON by the same
+ * code: a new path of the renderer is a new row (or a new table name).
+ */
+struct BenchRow
+{
+  std::string Table; ///< "reference", "render", "light-field size", "cage size"
+  std::string Name;
+  int Size = 0;                  ///< frame width and height
+  int Views = 0;                 ///< the light field's views
+  int ImageSize = 0;             ///< its image width (= height)
+  long long LightFieldBytes = 0; ///< its passes in memory (Coaxial, Label)
+  int Boxes = 0;                 ///< cage boxes (0: undeformed)
+  Measure Figures;
+  /// Further figures of the row's table, by name (e.g. "vs_rest": a ratio).
+  std::vector<std::pair<std::string, double>> Extra;
+};
+
+/// The light field of the bench's fish (or figure): `views` x `rows` views
+/// of `image` x `image` pixels, without the Depth pass (the renderer reads
+/// Coaxial and Label).
+vtkSmartPointer<vtkLightField> BenchLightField(const std::string& object,
+  int views,
+  int rows,
+  int image)
+{
+  SynthOptions options;
+  options.Object = object;
+  options.Views = views;
+  options.Rows = rows;
+  options.Width = image;
+  options.Height = image;
+  options.NoDepth = true;
+  return Synthesize(options);
+}
+
+/// The bytes of a light field's passes.
+long long LightFieldBytes(vtkLightField* lightField)
+{
+  long long bytes = 0;
+  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+  {
+    if (vtkDataArray* array = lightField->GetPass(pass))
+    {
+      bytes += static_cast<long long>(array->GetNumberOfValues()) * array->GetDataTypeSize();
+    }
+  }
+  return bytes;
+}
+
+/// The row of a configuration of `lightField`.
+BenchRow Row(const std::string& table,
+  const std::string& name,
+  int size,
+  vtkLightField* lightField,
+  int boxes,
+  const Measure& figures)
+{
+  return { table,
+    name,
+    size,
+    lightField->GetNumberOfViews(),
+    lightField->GetWidth(),
+    LightFieldBytes(lightField),
+    boxes,
+    figures,
+    {} };
+}
+
+/// The frame size of the light-field-size and cage-size tables: 512 (the
+/// issue's figures) when measured, else the largest size measured.
+int TableSize(const BenchSettings& settings)
+{
+  const auto& sizes = settings.Sizes;
+  return std::find(sizes.begin(), sizes.end(), 512) != sizes.end()
+    ? 512
+    : *std::max_element(sizes.begin(), sizes.end());
 }
 
 /**
- * The cost against cage size: the fish bent under 1, 3 (its parts), 10,
- * 30 and 100 boxes (slabs labelled by part), against the 3-box figure and
- * the reference loop; the last column without the per-frame acceleration.
+ * The cost against light-field size: the undeformed fish at TableSize()
+ * from light fields of several view counts and resolutions.
  */
-void CageSizeBench(vtkLightField* fish, int repeat, int size, double reference)
+void LightFieldSizeRows(const BenchSettings& settings,
+  PeakMemory& peak,
+  std::vector<BenchRow>& rows)
 {
-  std::printf("%-46s %8s %10s %12s %8s %8s %10s\n",
-    "deformed fish (bend 30), cage size",
-    "pixels",
-    "ms/frame",
-    "rays/s",
-    "vs 3",
-    "vs ref",
-    "no accel");
-  std::vector<std::pair<int, double>> rows;
-  double three = 0.0;
-  for (int boxes : { 1, 3, 10, 30, 100 })
+  struct Layout
   {
-    const double time = CageRenderTime(fish, boxes, size, repeat, true);
-    three = boxes == 3 ? time : three;
-    rows.emplace_back(boxes, time);
+    int Views, Rows, Image;
+  };
+  const std::vector<Layout> layouts = settings.Quick
+    ? std::vector<Layout>{ { 12, 1, 32 }, { 24, 1, 64 } }
+    : std::vector<Layout>{
+        { 30, 3, 256 }, { 120, 3, 128 }, { 120, 3, 256 }, { 120, 3, 512 }, { 240, 3, 256 }
+      };
+  const int size = TableSize(settings);
+  for (const Layout& layout : layouts)
+  {
+    auto lightField = BenchLightField("fish", layout.Views, layout.Rows, layout.Image);
+    const std::string name = std::to_string(layout.Views) + "x" + std::to_string(layout.Rows) +
+      " views of " + std::to_string(layout.Image) + "^2";
+    const Measure figures = MeasureRender(OrbitRenderer(lightField, size), settings.Repeat, peak);
+    rows.push_back(Row("light-field size", name, size, lightField, 0, figures));
   }
-  for (const auto& [boxes, time] : rows)
+}
+
+/**
+ * The cost against cage size: the fish bent under 1, 3 (its parts), 10, 30
+ * and 100 boxes (slabs labelled by part) at TableSize(), against the 3-box
+ * cage; "no_accel_ms": the same cage without the per-frame acceleration.
+ */
+void CageSizeRows(vtkLightField* fish,
+  const BenchSettings& settings,
+  PeakMemory& peak,
+  std::vector<BenchRow>& rows)
+{
+  const std::vector<int> counts =
+    settings.Quick ? std::vector<int>{ 1, 3 } : std::vector<int>{ 1, 3, 10, 30, 100 };
+  const int size = TableSize(settings);
+  const std::size_t first = rows.size();
+  double three = 0.0;
+  for (int boxes : counts)
   {
-    const double plain = CageRenderTime(fish, boxes, size, repeat, false);
+    const Measure figures = CageRenderTime(fish, boxes, size, settings.Repeat, true, peak);
+    three = boxes == 3 ? figures.Seconds : three;
     const std::string name = std::to_string(boxes) + (boxes == 1 ? " box" : " boxes") +
       (boxes == 3      ? " (its parts)"
           : boxes == 1 ? " (one slab)"
                        : " (slabs)");
-    std::printf("%-46s %8d %10.2f %12.3g %7.2fx %7.2fx %10.2f\n",
-      name.c_str(),
-      size * size,
-      1000.0 * time,
-      size * size / time,
-      time / three,
-      time / reference,
-      1000.0 * plain);
+    rows.push_back(Row("cage size", name, size, fish, boxes, figures));
+  }
+  for (std::size_t r = first; r < rows.size(); ++r)
+  {
+    const Measure plain = CageRenderTime(fish, rows[r].Boxes, size, settings.Repeat, false, peak);
+    rows[r].Extra = { { "vs_3_boxes", rows[r].Figures.Seconds / three },
+      { "no_accel_ms", 1000.0 * plain.Seconds } };
   }
 }
 
-void Bench(int repeat, int size)
+/// The reference loop's time at each size (s).
+using ReferenceTimes = std::map<int, double>;
+
+/// Prints the rows of `table` as one table, each figure also as a ratio to
+/// the reference loop at the row's frame size.
+void PrintTable(const std::string& title,
+  const std::string& table,
+  const std::vector<BenchRow>& rows,
+  const ReferenceTimes& reference)
 {
-  std::printf("threads: %d (vtkSMPTools, %s backend)\n",
-    vtkSMPTools::GetEstimatedNumberOfThreads(),
-    vtkSMPTools::GetBackend());
-  SynthOptions fishOptions;
-  fishOptions.NoDepth = true;
-  auto fish = Synthesize(fishOptions);
-  const double reference = ReferenceTime(fish, size, repeat);
-  std::printf("%-46s %8s %10s %12s %8s %8s\n",
-    "scene (light fields: 120x3 views of 256^2)",
+  // The table's rows, and the further figures any of them has (a column each).
+  std::vector<const BenchRow*> selected;
+  std::vector<std::string> columns;
+  for (const BenchRow& row : rows)
+  {
+    if (row.Table == table)
+    {
+      selected.push_back(&row);
+      for (const auto& figure : row.Extra)
+      {
+        if (std::find(columns.begin(), columns.end(), figure.first) == columns.end())
+        {
+          columns.push_back(figure.first);
+        }
+      }
+    }
+  }
+  if (selected.empty())
+  {
+    return;
+  }
+  std::printf("\n%-44s %8s %10s %12s %8s %8s",
+    title.c_str(),
     "pixels",
     "ms/frame",
     "rays/s",
-    "vs rest",
-    "vs ref");
-  std::printf("%-46s %8d %10.2f %12.3g %8s %7.2fx\n",
-    "reference loop (16 texel reads, no geometry)",
-    size * size,
-    1000.0 * reference,
-    size * size / reference,
-    "",
-    1.0);
+    "vs ref",
+    "peak MB");
+  for (const std::string& column : columns)
+  {
+    std::printf(" %12s", column.c_str());
+  }
+  std::printf("\n");
+  for (const BenchRow* row : selected)
+  {
+    const double pixels = static_cast<double>(row->Size) * row->Size;
+    const double seconds = row->Figures.Seconds;
+    std::printf("%-44s %8.0f %10.2f %12.3g %7.2fx %8.0f",
+      row->Name.c_str(),
+      pixels,
+      1000.0 * seconds,
+      pixels / seconds,
+      seconds / reference.at(row->Size),
+      row->Figures.PeakBytes / 1048576.0);
+    for (const std::string& column : columns)
+    {
+      const auto figure = std::find_if(row->Extra.begin(),
+        row->Extra.end(),
+        [&column](const std::pair<std::string, double>& f) { return f.first == column; });
+      if (figure == row->Extra.end())
+      {
+        std::printf(" %12s", "");
+      }
+      else
+      {
+        std::printf(" %12.3g", figure->second);
+      }
+    }
+    std::printf("\n");
+  }
+}
+
+/// Every figure of the run as JSON (format "lfd-bench", version 1; Data/README.md).
+nlohmann::json BenchJson(const BenchSettings& settings,
+  const std::vector<BenchRow>& rows,
+  const ReferenceTimes& reference,
+  const double load[2][3],
+  const char* peakScope)
+{
+  nlohmann::json machine = { { "cores", std::thread::hardware_concurrency() },
+    { "threads", vtkSMPTools::GetEstimatedNumberOfThreads() },
+    { "smp_backend", vtkSMPTools::GetBackend() },
+    { "load_average_start", { load[0][0], load[0][1], load[0][2] } },
+    { "load_average_end", { load[1][0], load[1][1], load[1][2] } } };
+  nlohmann::json out = { { "format", "lfd-bench" },
+    { "version", 1 },
+    { "machine", machine },
+    { "repeat", settings.Repeat },
+    { "sizes", settings.Sizes },
+    { "quick", settings.Quick },
+    { "peak_rss_scope", peakScope },
+    { "rows", nlohmann::json::array() } };
+  for (const BenchRow& row : rows)
+  {
+    const double pixels = static_cast<double>(row.Size) * row.Size;
+    nlohmann::json item = { { "table", row.Table },
+      { "name", row.Name },
+      { "size", row.Size },
+      { "pixels", static_cast<long long>(pixels) },
+      { "views", row.Views },
+      { "image_size", row.ImageSize },
+      { "light_field_bytes", row.LightFieldBytes },
+      { "boxes", row.Boxes },
+      { "ms_per_frame", 1000.0 * row.Figures.Seconds },
+      { "rays_per_second", pixels / row.Figures.Seconds },
+      { "vs_reference", row.Figures.Seconds / reference.at(row.Size) },
+      { "peak_rss_bytes", row.Figures.PeakBytes } };
+    for (const auto& [name, value] : row.Extra)
+    {
+      item[name] = value;
+    }
+    out["rows"].push_back(item);
+  }
+  return out;
+}
+
+/// The machine's load average (1, 5, 15 minutes); zeros where unknown.
+void LoadAverage(double load[3])
+{
+  load[0] = load[1] = load[2] = 0.0;
+  getloadavg(load, 3);
+}
+
+void Bench(const BenchSettings& settings)
+{
+  double load[2][3];
+  LoadAverage(load[0]);
+  std::printf("threads: %d (vtkSMPTools, %s backend), cores: %u, load average: %.2f %.2f %.2f\n",
+    vtkSMPTools::GetEstimatedNumberOfThreads(),
+    vtkSMPTools::GetBackend(),
+    std::thread::hardware_concurrency(),
+    load[0][0],
+    load[0][1],
+    load[0][2]);
+  // Quick: the same tables from tiny light fields, to check a run end to end.
+  const int views = settings.Quick ? 24 : 120, rowsOfViews = settings.Quick ? 1 : 3;
+  const int image = settings.Quick ? 64 : 256;
+  PeakMemory peak;
+  std::vector<BenchRow> rows;
+  ReferenceTimes reference;
+  auto fish = BenchLightField("fish", views, rowsOfViews, image);
+  for (int size : settings.Sizes)
+  {
+    peak.Reset();
+    reference[size] = ReferenceTime(fish, size, settings.Repeat);
+    rows.push_back(Row("reference",
+      "reference loop (16 texel reads, no geometry)",
+      size,
+      fish,
+      0,
+      { reference[size], peak.Read() }));
+  }
   for (const char* object : { "fish", "figure" })
   {
     const bool isFish = std::string(object) == "fish";
-    SynthOptions options;
-    options.Object = object;
-    options.NoDepth = true;
-    auto lightField = isFish ? fish : Synthesize(options);
-    const auto [rest, deformed] = RenderTimes(lightField, object, size, repeat);
-    const std::string restName = std::string("undeformed ") + object;
+    auto lightField = isFish ? fish : BenchLightField(object, views, rowsOfViews, image);
     const std::string deformedName =
       isFish ? "deformed fish (swim, 3 boxes)" : "deformed figure (twist 45, 3 boxes)";
-    std::printf("%-46s %8d %10.2f %12.3g %8s %7.2fx\n",
-      restName.c_str(),
-      size * size,
-      1000.0 * rest,
-      size * size / rest,
-      "",
-      rest / reference);
-    std::printf("%-46s %8d %10.2f %12.3g %7.2fx %7.2fx\n",
-      deformedName.c_str(),
-      size * size,
-      1000.0 * deformed,
-      size * size / deformed,
-      deformed / rest,
-      deformed / reference);
+    for (int size : settings.Sizes)
+    {
+      const auto [rest, deformed] = RenderTimes(lightField, object, size, settings.Repeat, peak);
+      rows.push_back(Row("render", std::string("undeformed ") + object, size, lightField, 0, rest));
+      rows.push_back(Row("render", deformedName, size, lightField, 3, deformed));
+      rows.back().Extra = { { "vs_rest", deformed.Seconds / rest.Seconds } };
+    }
   }
-  CageSizeBench(fish, repeat, size, reference);
-  std::printf("(median of %d renders each; vs ref: against the reference loop; vs 3: against "
-              "the 3 boxes of the same table; no accel: ms/frame of the same cage with "
-              "vtkLightFieldRenderer::CageAcceleration off)\n",
-    repeat);
+  LightFieldSizeRows(settings, peak, rows);
+  CageSizeRows(fish, settings, peak, rows);
+  LoadAverage(load[1]);
+
+  const std::string scene = "light field: " + std::to_string(views) + "x" +
+    std::to_string(rowsOfViews) + " views of " + std::to_string(image) + "^2";
+  PrintTable("reference loop", "reference", rows, reference);
+  PrintTable("scene (" + scene + ")", "render", rows, reference);
+  PrintTable("undeformed fish, light-field size", "light-field size", rows, reference);
+  PrintTable("deformed fish (bend 30), cage size", "cage size", rows, reference);
+  std::printf("(median of %d renders each; vs ref: against the reference loop at the same "
+              "frame size, timed in the same run; peak MB: the process's peak resident memory "
+              "during the configuration (its light fields included); vs_rest: against the "
+              "undeformed render; vs_3_boxes: against the 3 boxes of the same table; "
+              "no_accel_ms: the same cage with vtkLightFieldRenderer::CageAcceleration off; "
+              "load average at the end: %.2f %.2f %.2f)\n",
+    settings.Repeat,
+    load[1][0],
+    load[1][1],
+    load[1][2]);
+  if (!settings.Json.empty())
+  {
+    std::string error;
+    const std::string text =
+      BenchJson(settings, rows, reference, load, peak.Scope()).dump(2) + "\n";
+    if (!lfd::io::WriteFileAtomically(settings.Json, text, error))
+    {
+      Fail("--json " + settings.Json + ": " + error);
+    }
+    std::printf("wrote %s\n", settings.Json.c_str());
+  }
 }
 
 /// `lfd bench --studio`: the editing view's frame times during a recorded drag.
@@ -529,7 +841,9 @@ void StudioBench(int repeat)
   auto lightField = Synthesize(options);
   // The reference loop of `lfd bench` (deformed fish, 512x512) in the same
   // conditions: the ratios to it do not depend on the machine's load.
-  const double reference = RenderTimes(lightField, "fish", 512, std::min(repeat, 5)).second;
+  PeakMemory peak;
+  const double reference =
+    RenderTimes(lightField, "fish", 512, std::min(repeat, 5), peak).second.Seconds;
   for (int boxes : { 3, 100 })
   {
     auto logic = FishScene(lightField, boxes);
@@ -571,25 +885,51 @@ void StudioBench(int repeat)
 
 void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands)
 {
-  auto repeat = std::make_shared<int>(15);
-  auto size = std::make_shared<int>(512);
+  auto settings = std::make_shared<BenchSettings>();
   auto studio = std::make_shared<bool>(false);
   vtkNew<vtkLightFieldCapture> captureLimits;
   auto* benchCommand = app.add_subcommand("bench",
-    "print rays/s and ms/frame of the renderer on fixed scenes (median of repeated renders; "
-    "writes nothing), each also as a ratio to a reference loop (16 texel reads per pixel, no "
-    "geometry) timed in the same run, and the cost against cage size (the fish bent under 1 "
-    "to 100 boxes, with and without the renderer's cage acceleration); needs an X display "
-    "(xvfb-run -a)");
-  numbers.Add(benchCommand, "--repeat", *repeat, 1, 1000, "renders per scene");
-  numbers.Add(
-    benchCommand, "--size", *size, 1, captureLimits->GetWidthMaxValue(), "image width and height");
+    "print rays/s, ms/frame and peak memory of the renderer on fixed scenes (median of "
+    "repeated renders; writes nothing unless --json), undeformed and deformed at each --size, "
+    "each also as a ratio to a reference loop (16 texel reads per pixel, no geometry) timed in "
+    "the same run, the cost against light-field size (views x resolution) and against cage "
+    "size (the fish bent under 1 to 100 boxes, with and without the renderer's cage "
+    "acceleration); needs an X display (xvfb-run -a)");
+  auto* repeat =
+    numbers.Add(benchCommand, "--repeat", settings->Repeat, 1, 1000, "renders per configuration");
+  auto* sizes = numbers.Add(benchCommand,
+    "--size",
+    settings->Sizes,
+    1,
+    captureLimits->GetWidthMaxValue(),
+    "frame widths and heights (the light-field-size and cage-size tables at 512 when listed, "
+    "else at the largest)");
+  benchCommand->add_flag("--quick",
+    settings->Quick,
+    "a quick run that checks the tables end to end: tiny light fields (24 views of 64^2), "
+    "light-field sizes 12 and 24 views, cages of 1 and 3 boxes, and unless given --size 64 "
+    "128 and --repeat 1 (figures not comparable with a full run)");
+  benchCommand->add_option("--json",
+    settings->Json,
+    "also write every figure, the machine's core count and load average to FILE (format "
+    "lfd-bench, see Data/README.md; replaced when complete)");
   benchCommand->add_flag("--studio",
     *studio,
     "instead: the editing view of the Studio (vtkLightFieldEditor, 800x600): ms/frame during a "
     "recorded corner drag (--repeat motions), release to full resolution, with 3 and 100 boxes");
   commands.push_back({ benchCommand,
-    [repeat, size, studio] { *studio ? StudioBench(*repeat) : Bench(*repeat, *size); },
+    [settings, studio, repeat, sizes]
+    {
+      if (settings->Quick && repeat->count() == 0)
+      {
+        settings->Repeat = 1;
+      }
+      if (settings->Quick && sizes->count() == 0)
+      {
+        settings->Sizes = { 64, 128 };
+      }
+      *studio ? StudioBench(settings->Repeat) : Bench(*settings);
+    },
     true });
 }
 }

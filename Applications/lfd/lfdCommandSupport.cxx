@@ -136,10 +136,16 @@ vtkSmartPointer<vtkImageData> ReadImage(const std::string& path)
   return image;
 }
 
-vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
+vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path, Passes passes)
 {
   vtkNew<vtkLightFieldReader> reader;
   reader->SetFileName(path.c_str());
+  if (passes == Passes::Rendered)
+  {
+    reader->ReadNoPasses();
+    reader->SetReadPass(vtkLightField::COAXIAL, true);
+    reader->SetReadPass(vtkLightField::LABEL, true);
+  }
   lfd::ShowProgress(reader, "reading");
   Run(reader.Get(), "reading " + path);
   auto lightField = vtkSmartPointer<vtkLightField>::New();
@@ -147,13 +153,13 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path)
   return lightField;
 }
 
-vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene)
+vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene, Passes passes)
 {
   StepErrors errors;
   errors->Observe(scene->GetScene());
   scene->GetScene()->ConfigureReader(nullptr);
   errors.FailOnError();
-  return ReadLightField(scene->GetScene()->GetResolvedLightFieldPath());
+  return ReadLightField(scene->GetScene()->GetResolvedLightFieldPath(), passes);
 }
 
 vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldSceneLogic* scene,

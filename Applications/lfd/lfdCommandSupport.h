@@ -319,11 +319,25 @@ vtkSmartPointer<vtkLightFieldSceneLogic> ReadScene(const std::string& path);
 /// An image file (PNG, EXR, ... through OpenImageIO), rows bottom first.
 vtkSmartPointer<vtkImageData> ReadImage(const std::string& path);
 
-vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path);
+/**
+ * Which passes of a light-field dataset a command reads: all of them, or
+ * only those vtkLightFieldRenderer looks up (Coaxial and Label), so that a
+ * dataset's Depth, Coded, Flood and Confidence passes take no memory in
+ * `lfd render` and `lfd animate` (the Depth pass of a synthetic capture is
+ * 4 bytes a pixel, more than the 3 of its images).
+ */
+enum class Passes
+{
+  All,
+  Rendered
+};
+
+vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path, Passes passes = Passes::All);
 
 /// The light field a scene names (an error naming the scene and its field
 /// "lightfield" when it names none or a missing one).
-vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene);
+vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene,
+  Passes passes = Passes::All);
 
 /**
  * The scene's cage, validated by the scene logic (against the light field

@@ -20,6 +20,9 @@
 
 namespace
 {
+/// SetConsoleQuiet(): nothing said, not even progress.
+bool Quiet = false;
+
 struct ProgressState
 {
   std::string What;
@@ -36,6 +39,10 @@ void OnProgress(vtkObject* caller, unsigned long event, void* clientData, void* 
   if (event == vtkCommand::DeleteEvent)
   {
     delete state;
+    return;
+  }
+  if (Quiet)
+  {
     return;
   }
   const double progress = *static_cast<double*>(callData);
@@ -124,13 +131,26 @@ int CommandErrors::Finish()
   return 1;
 }
 
+void SetConsoleQuiet(bool quiet)
+{
+  Quiet = quiet;
+}
+
 void PrintError(const std::string& message)
 {
+  if (Quiet)
+  {
+    return;
+  }
   std::cerr << "lfd: error: " << lfd::io::NameTargets(message) << std::endl;
 }
 
 void PrintWarning(const std::string& message)
 {
+  if (Quiet)
+  {
+    return;
+  }
   std::cerr << "lfd: warning: " << lfd::io::NameTargets(message) << std::endl;
 }
 

@@ -52,6 +52,13 @@ private:
 };
 
 /**
+ * Quiet: PrintError(), PrintWarning() and the progress print nothing. The processes of an
+ * MPI job other than process 0 are quiet: process 0 speaks for the job
+ * (lfd::cli::ProcessGroup).
+ */
+void SetConsoleQuiet(bool quiet);
+
+/**
  * Prints "lfd: error: <message>" on stderr, a temporary name replaced by
  * the name the user gave (lfd::io::NameTargets()).
  */

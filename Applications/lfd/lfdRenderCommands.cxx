@@ -2,6 +2,8 @@
 #include "lfdCommands.h"
 
 #include "lfdLimits.h"
+#include "lfdProcessAgreement.h"
+#include "lfdProcessGroup.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkDeformationCage.h"
@@ -13,6 +15,7 @@
 #include "vtkLightFieldScene.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkOutputWindow.h"
 #include "vtkSmartPointer.h"
 #include "vtkTimerLog.h"
 #include "vtksys/SystemTools.hxx"
@@ -115,7 +118,7 @@ void Render(const std::string& scenePath,
 {
   const double start = vtkTimerLog::GetUniversalTime();
   auto scene = ReadScene(scenePath);
-  auto lightField = ReadSceneLightField(scene);
+  auto lightField = ReadSceneLightField(scene, Passes::Rendered);
   ApplyViewOptions(view, scene, lightField);
   auto cage = SceneCage(scene, lightField, time);
   vtkNew<vtkLightFieldRenderer> renderer;
@@ -140,6 +143,8 @@ vtkSmartPointer<vtkImageData> RenderAnimation(vtkLightFieldSceneLogic* scene,
   writer->SetNumberOfFrames(frames);
   writer->SetWriteParaView(paraview);
   writer->SetDirectoryName(out.c_str());
+  // The processes of `mpirun -np N lfd animate` split the frames.
+  writer->SetController(ProcessGroup::GetController());
   lfd::ShowSteps(writer,
     "animating",
     [](vtkObject* caller)
@@ -175,21 +180,57 @@ namespace
 {
 void Animate(const std::string& scenePath, int frames, const std::string& out, bool paraview)
 {
-  auto scene = ReadScene(scenePath);
-  if (scene->GetScene()->GetNumberOfKeyframes() < 2)
+  // Under mpirun every process reads the scene and its light field (on a
+  // cluster, from a shared file system) and process 0 stages the output; a
+  // process that cannot stops them all, with the first refusal said once.
+  const bool root = ProcessGroup::GetRank() == 0;
+  vtkSmartPointer<vtkLightFieldSceneLogic> scene;
+  vtkSmartPointer<vtkLightField> lightField;
+  std::unique_ptr<StagedFolder> folder;
+  std::string refusal;
   {
-    Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
+    // The errors VTK objects report (their warnings are said as they come).
+    vtkNew<vtkLightFieldErrorObserver> seen;
+    vtkOutputWindow* window = vtkOutputWindow::GetInstance();
+    const unsigned long tag = window->AddObserver(vtkCommand::ErrorEvent, seen);
+    try
+    {
+      scene = ReadScene(scenePath);
+      if (scene->GetScene()->GetNumberOfKeyframes() < 2)
+      {
+        Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
+      }
+      lightField = ReadSceneLightField(scene, Passes::Rendered);
+      if (root)
+      {
+        folder =
+          std::make_unique<StagedFolder>(out, "lfd animate", lfd::scene::AnimationFilePatterns());
+      }
+    }
+    catch (const Failure& failure)
+    {
+      // (An empty message: a VTK object said why.)
+      refusal = failure.Message.empty() ? std::string(seen->GetErrorMessage()) : failure.Message;
+    }
+    window->RemoveObserver(tag);
   }
-  auto lightField = ReadSceneLightField(scene);
-  StagedFolder folder(out, "lfd animate", lfd::scene::AnimationFilePatterns());
+  refusal = lfd::scene::AgreeOnError(ProcessGroup::GetController(), refusal);
+  if (!refusal.empty())
+  {
+    Fail(refusal);
+  }
   const double start = vtkTimerLog::GetUniversalTime();
-  RenderAnimation(scene, lightField, frames, folder.GetPath(), paraview);
-  PrintAnimation(scene, frames, Seconds(start), folder.GetPath(), out);
+  RenderAnimation(scene, lightField, frames, root ? folder->GetPath() : std::string(), paraview);
+  if (!root)
+  {
+    return;
+  }
+  PrintAnimation(scene, frames, Seconds(start), folder->GetPath(), out);
   if (paraview)
   {
     std::printf("paraview  %s/animation.pvd, %s/cage.pvd\n", out.c_str(), out.c_str());
   }
-  folder.Commit();
+  folder->Commit();
 }
 
 struct LatticeOptions

@@ -3,6 +3,7 @@
 #include "lfdFileUtilities.h"
 #include "lfdLimits.h"
 #include "lfdParaViewFiles.h"
+#include "lfdProcessAgreement.h"
 #include "lfdStagedFolder.h"
 #include "vtkCommand.h"
 #include "vtkDeformationCage.h"
@@ -13,6 +14,8 @@
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldRenderer.h"
 #include "vtkLightFieldSceneLogic.h"
+#include "vtkMultiProcessController.h"
+#include "vtkMultiProcessStream.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkSmartPointer.h"
@@ -23,12 +26,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkLightFieldAnimationWriter);
 vtkCxxSetObjectMacro(vtkLightFieldAnimationWriter, SceneLogic, vtkLightFieldSceneLogic);
 vtkCxxSetObjectMacro(vtkLightFieldAnimationWriter, LightField, vtkLightField);
+vtkCxxSetObjectMacro(vtkLightFieldAnimationWriter, Controller, vtkMultiProcessController);
 
 namespace
 {
@@ -37,6 +42,10 @@ const char* const ContactSheetName = "contact_sheet.png";
 
 const char* const FrameCollectionName = "animation.pvd";
 const char* const CageCollectionName = "cage.pvd";
+
+// Message tags between the processes of one export (lfdProcessAgreement uses 28410).
+const int OutcomeTag = 28411;
+const int ThumbnailTag = 28412;
 
 /// The name of step `frame`'s file: `stem`_NNNN.`extension`.
 std::string StepName(const char* stem, int frame, const char* extension)
@@ -85,11 +94,16 @@ struct vtkLightFieldAnimationWriter::Internals
   vtkNew<vtkImageData> ContactSheet;
   std::vector<vtkSmartPointer<vtkImageData>> Thumbnails;
   lfd::scene::StagedFolder Folder;
+  /// Where the frames go: the staged folder of process 0.
+  std::string FolderPath;
   vtkNew<vtkLightFieldRenderer> Renderer;
   vtkNew<vtkDeformationCage> Cage;
-  // The ParaView series: (scene time, file) of each frame and cage written.
-  std::vector<std::pair<double, std::string>> FrameSteps;
-  std::vector<std::pair<double, std::string>> CageSteps;
+  /// Process 0's ffmpeg ("" when no movie is encoded), and the progress steps.
+  std::string Ffmpeg;
+  double Steps = 1.0;
+  /// This process's last frame: its error ("" when written), its thumbnail.
+  std::string FrameError;
+  vtkSmartPointer<vtkImageData> Thumbnail;
 
   /// Sets the progress and invokes ProgressEvent.
   static void Report(vtkLightFieldAnimationWriter* self, double progress, const std::string& text)
@@ -99,25 +113,48 @@ struct vtkLightFieldAnimationWriter::Internals
     self->InvokeEvent(vtkCommand::ProgressEvent, &progress);
   }
 
-  /// Renders frame `frame` into the renderer's output.
+  /// This process's index and the number of processes (0 and 1 without a controller).
+  static int Rank(vtkLightFieldAnimationWriter* self)
+  {
+    return self->Controller ? self->Controller->GetLocalProcessId() : 0;
+  }
+  static int Processes(vtkLightFieldAnimationWriter* self)
+  {
+    return self->Controller ? self->Controller->GetNumberOfProcesses() : 1;
+  }
+
+  /// "" when the settings can be exported (and, on process 0, the folder is
+  /// staged), else the refusal; sets the light field to render.
+  static std::string CheckSettings(vtkLightFieldAnimationWriter* self, vtkLightField*& lightField);
+
+  /// Renders frame `frame` into the renderer's output; false after setting FrameError.
   static bool Render(vtkLightFieldAnimationWriter* self, vtkLightField* lightField, int frame);
 
-  /// Writes the renderer's output as frame `frame` and keeps its thumbnail.
+  /// Writes the renderer's output as frame `frame` and makes its thumbnail.
   static bool Save(vtkLightFieldAnimationWriter* self, int frame);
 
-  /// Writes `image` to `path` (PNG); false after an error naming the file.
-  static bool WriteImage(vtkLightFieldAnimationWriter* self,
-    vtkImageData* image,
-    const std::string& path);
+  /// Writes `image` to `path` (PNG); "" or the error naming the file.
+  static std::string WriteImage(vtkImageData* image, const std::string& path);
 
   /// Writes frame `frame` (and its cage when `cage`) for ParaView.
   static bool SaveParaView(vtkLightFieldAnimationWriter* self, int frame, bool cage);
 
-  /// Writes animation.pvd (and cage.pvd) listing the steps written.
+  /// Writes animation.pvd (and cage.pvd) listing every frame (and cage).
   static bool WriteCollections(vtkLightFieldAnimationWriter* self);
+
+  /**
+   * The round of frames [first, first + Processes()) rendered, one a
+   * process: process 0 collects the outcomes in frame order (thumbnails,
+   * progress, the first error, which it reports) and every process learns
+   * whether to go on. False when the export stops (an error or a cancel).
+   */
+  static bool FinishRound(vtkLightFieldAnimationWriter* self, int first);
 
   /// Encodes the frames with ffmpeg; false after an error or a cancel.
   static bool Encode(vtkLightFieldAnimationWriter* self, const std::string& ffmpeg);
+
+  /// Process 0's closing steps: contact sheet, collections, movie, rename.
+  static bool Finish(vtkLightFieldAnimationWriter* self);
 };
 
 //------------------------------------------------------------------------------
@@ -131,6 +168,7 @@ vtkLightFieldAnimationWriter::~vtkLightFieldAnimationWriter()
 {
   this->SetSceneLogic(nullptr);
   this->SetLightField(nullptr);
+  this->SetController(nullptr);
   this->SetDirectoryName(nullptr);
 }
 
@@ -140,6 +178,7 @@ void vtkLightFieldAnimationWriter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SceneLogic: " << this->SceneLogic << "\n";
   os << indent << "LightField: " << this->LightField << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "DirectoryName: " << (this->DirectoryName ? this->DirectoryName : "(none)")
      << "\n";
   os << indent << "NumberOfFrames: " << this->NumberOfFrames << "\n";
@@ -194,7 +233,7 @@ bool vtkLightFieldAnimationWriter::Internals::Render(vtkLightFieldAnimationWrite
     errors->StopObserving();
     if (!valid)
     {
-      vtkErrorWithObjectMacro(self, << lfd::io::NameTargets(errors->GetErrorMessage()));
+      internal.FrameError = lfd::io::NameTargets(errors->GetErrorMessage());
       return false;
     }
     cage = internal.Cage;
@@ -213,17 +252,16 @@ bool vtkLightFieldAnimationWriter::Internals::Render(vtkLightFieldAnimationWrite
   errors->StopObserving();
   if (internal.Renderer->GetErrorCode() != 0 || errors->HasError())
   {
-    vtkErrorWithObjectMacro(self,
-      << (errors->HasError() ? std::string(errors->GetErrorMessage())
-                             : "rendering frame " + std::to_string(frame) + " failed"));
+    internal.FrameError = errors->HasError()
+      ? std::string(errors->GetErrorMessage())
+      : "rendering frame " + std::to_string(frame) + " failed";
     return false;
   }
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightFieldAnimationWriter::Internals::WriteImage(vtkLightFieldAnimationWriter* self,
-  vtkImageData* image,
+std::string vtkLightFieldAnimationWriter::Internals::WriteImage(vtkImageData* image,
   const std::string& path)
 {
   vtkNew<vtkImageFileWriter> writer;
@@ -236,19 +274,19 @@ bool vtkLightFieldAnimationWriter::Internals::WriteImage(vtkLightFieldAnimationW
   if (writer->GetErrorCode() != 0 || errors->HasError())
   {
     // The file is named as the user knows it: the target, not the staged folder.
-    vtkErrorWithObjectMacro(self,
-      << lfd::io::NameTargets(errors->HasError() ? std::string(errors->GetErrorMessage())
-                                                 : "writing " + path + " failed"));
-    return false;
+    return lfd::io::NameTargets(
+      errors->HasError() ? std::string(errors->GetErrorMessage()) : "writing " + path + " failed");
   }
-  return true;
+  return std::string();
 }
 
 //------------------------------------------------------------------------------
 bool vtkLightFieldAnimationWriter::Internals::Save(vtkLightFieldAnimationWriter* self, int frame)
 {
-  vtkImageData* image = self->Internal->Renderer->GetOutput();
-  if (!WriteImage(self, image, FramePath(self->Internal->Folder.GetPath(), frame)) ||
+  Internals& internal = *self->Internal;
+  vtkImageData* image = internal.Renderer->GetOutput();
+  internal.FrameError = WriteImage(image, FramePath(internal.FolderPath, frame));
+  if (!internal.FrameError.empty() ||
     (self->WriteParaView && !SaveParaView(self, frame, self->SceneLogic->HasCage())))
   {
     return false;
@@ -258,9 +296,8 @@ bool vtkLightFieldAnimationWriter::Internals::Save(vtkLightFieldAnimationWriter*
   resize->SetInputData(image);
   resize->SetOutputDimensions(thumb, thumb, 1);
   resize->Update();
-  auto thumbnail = vtkSmartPointer<vtkImageData>::New();
-  thumbnail->DeepCopy(resize->GetOutput());
-  self->Internal->Thumbnails.push_back(thumbnail);
+  internal.Thumbnail = vtkSmartPointer<vtkImageData>::New();
+  internal.Thumbnail->DeepCopy(resize->GetOutput());
   return true;
 }
 
@@ -270,21 +307,43 @@ bool vtkLightFieldAnimationWriter::Internals::SaveParaView(vtkLightFieldAnimatio
   bool cage)
 {
   Internals& internal = *self->Internal;
-  const double time = self->SceneLogic->GetAnimationTime(frame, self->NumberOfFrames);
-  const std::string folder = internal.Folder.GetPath() + "/";
+  const std::string folder = internal.FolderPath + "/";
   std::string error;
-  const std::string frameName = StepName("frame", frame, "vti");
-  bool ok = lfd::scene::WriteXMLData(internal.Renderer->GetOutput(), folder + frameName, error);
-  internal.FrameSteps.emplace_back(time, frameName);
+  bool ok = lfd::scene::WriteXMLData(
+    internal.Renderer->GetOutput(), folder + StepName("frame", frame, "vti"), error);
   if (ok && cage)
   {
     // The cage this frame was rendered through, as a plain grid.
-    const std::string cageName = StepName("cage", frame, "vtu");
     vtkNew<vtkUnstructuredGrid> grid;
     grid->ShallowCopy(internal.Cage);
-    ok = lfd::scene::WriteXMLData(grid, folder + cageName, error);
-    internal.CageSteps.emplace_back(time, cageName);
+    ok = lfd::scene::WriteXMLData(grid, folder + StepName("cage", frame, "vtu"), error);
   }
+  if (!ok)
+  {
+    internal.FrameError = lfd::io::NameTargets(error);
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldAnimationWriter::Internals::WriteCollections(vtkLightFieldAnimationWriter* self)
+{
+  // The steps of every frame, whichever process wrote it.
+  std::vector<std::pair<double, std::string>> frameSteps, cageSteps;
+  for (int frame = 0; frame < self->NumberOfFrames; ++frame)
+  {
+    const double time = self->SceneLogic->GetAnimationTime(frame, self->NumberOfFrames);
+    frameSteps.emplace_back(time, StepName("frame", frame, "vti"));
+    if (self->SceneLogic->HasCage())
+    {
+      cageSteps.emplace_back(time, StepName("cage", frame, "vtu"));
+    }
+  }
+  const std::string folder = self->Internal->FolderPath + "/";
+  std::string error;
+  const bool ok = lfd::scene::WriteCollection(folder + FrameCollectionName, frameSteps, error) &&
+    (cageSteps.empty() ||
+      lfd::scene::WriteCollection(folder + CageCollectionName, cageSteps, error));
   if (!ok)
   {
     vtkErrorWithObjectMacro(self, << lfd::io::NameTargets(error));
@@ -293,20 +352,84 @@ bool vtkLightFieldAnimationWriter::Internals::SaveParaView(vtkLightFieldAnimatio
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightFieldAnimationWriter::Internals::WriteCollections(vtkLightFieldAnimationWriter* self)
+bool vtkLightFieldAnimationWriter::Internals::FinishRound(vtkLightFieldAnimationWriter* self,
+  int first)
 {
   Internals& internal = *self->Internal;
-  const std::string folder = internal.Folder.GetPath() + "/";
-  std::string error;
-  const bool ok =
-    lfd::scene::WriteCollection(folder + FrameCollectionName, internal.FrameSteps, error) &&
-    (internal.CageSteps.empty() ||
-      lfd::scene::WriteCollection(folder + CageCollectionName, internal.CageSteps, error));
-  if (!ok)
+  vtkMultiProcessController* controller = self->Controller;
+  const int frames = self->NumberOfFrames;
+  const int rank = Rank(self);
+  const int thumb = self->ContactSheetThumbnailSize;
+  const vtkIdType thumbBytes = 3 * static_cast<vtkIdType>(thumb) * thumb;
+  int goOn = 1;
+  if (rank != 0)
   {
-    vtkErrorWithObjectMacro(self, << lfd::io::NameTargets(error));
+    vtkMultiProcessStream stream;
+    stream << internal.FrameError << self->Abort;
+    controller->Send(stream, 0, OutcomeTag);
+    if (internal.Thumbnail)
+    {
+      controller->Send(static_cast<unsigned char*>(internal.Thumbnail->GetScalarPointer()),
+        thumbBytes,
+        0,
+        ThumbnailTag);
+    }
+    controller->Broadcast(&goOn, 1, 0);
+    return goOn != 0;
   }
-  return ok;
+  std::string error;
+  bool abort = false;
+  for (int process = 0; process < Processes(self); ++process)
+  {
+    std::string theirs = internal.FrameError;
+    bool theirAbort = self->Abort;
+    vtkSmartPointer<vtkImageData> thumbnail = internal.Thumbnail;
+    const bool rendered = first + process < frames;
+    if (process > 0)
+    {
+      vtkMultiProcessStream stream;
+      controller->Receive(stream, process, OutcomeTag);
+      stream >> theirs >> theirAbort;
+      thumbnail = nullptr;
+      if (rendered && theirs.empty())
+      {
+        thumbnail = vtkSmartPointer<vtkImageData>::New();
+        thumbnail->SetDimensions(thumb, thumb, 1);
+        thumbnail->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+        controller->Receive(static_cast<unsigned char*>(thumbnail->GetScalarPointer()),
+          thumbBytes,
+          process,
+          ThumbnailTag);
+      }
+    }
+    abort = abort || theirAbort;
+    if (!rendered || !error.empty())
+    {
+      continue;
+    }
+    if (!theirs.empty())
+    {
+      error = theirs;
+      continue;
+    }
+    internal.Thumbnails.push_back(thumbnail);
+    self->NumberOfFramesWritten = first + process + 1;
+    Report(self,
+      self->NumberOfFramesWritten / internal.Steps,
+      "frame " + std::to_string(self->NumberOfFramesWritten) + "/" + std::to_string(frames));
+  }
+  if (!error.empty())
+  {
+    vtkErrorWithObjectMacro(self, << error);
+  }
+  // An observer of the progress may have cancelled.
+  self->Aborted = error.empty() && (abort || self->Abort);
+  goOn = error.empty() && !self->Aborted;
+  if (controller && Processes(self) > 1)
+  {
+    controller->Broadcast(&goOn, 1, 0);
+  }
+  return goOn != 0;
 }
 
 //------------------------------------------------------------------------------
@@ -317,6 +440,10 @@ bool vtkLightFieldAnimationWriter::Internals::Encode(vtkLightFieldAnimationWrite
   const std::string movie = folder + "/" + MovieName;
   const std::string rate = std::to_string(self->FrameRate);
   const std::string frames = folder + "/frame_%04d.png";
+  // x264 writes its thread count into the movie and takes it from the cores
+  // this process may use: under mpirun process 0 is bound to one core. The
+  // machine's cores give the same movie either way.
+  const std::string threads = std::to_string(std::max(1U, std::thread::hardware_concurrency()));
   // H.264 in yuv420p, which every player decodes; yuv420p halves the chroma
   // resolution, so odd sizes are padded to even ones. No shell: any path works.
   const char* command[] = { ffmpeg.c_str(),
@@ -334,6 +461,8 @@ bool vtkLightFieldAnimationWriter::Internals::Encode(vtkLightFieldAnimationWrite
     "libx264",
     "-pix_fmt",
     "yuv420p",
+    "-threads",
+    threads.c_str(),
     movie.c_str(),
     nullptr };
   vtksysProcess* process = vtksysProcess_New();
@@ -390,6 +519,94 @@ bool vtkLightFieldAnimationWriter::Internals::Encode(vtkLightFieldAnimationWrite
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightFieldAnimationWriter::Internals::Finish(vtkLightFieldAnimationWriter* self)
+{
+  Internals& internal = *self->Internal;
+  AssembleContactSheet(internal.Thumbnails,
+    self->ContactSheetColumns,
+    self->ContactSheetThumbnailSize,
+    internal.ContactSheet);
+  const std::string error = self->WriteContactSheet
+    ? WriteImage(internal.ContactSheet, internal.FolderPath + "/" + ContactSheetName)
+    : std::string();
+  if (!error.empty())
+  {
+    vtkErrorWithObjectMacro(self, << error);
+    return false;
+  }
+  if (self->WriteParaView && !WriteCollections(self))
+  {
+    return false;
+  }
+  if (!self->Abort && !internal.Ffmpeg.empty())
+  {
+    Report(self, self->NumberOfFrames / internal.Steps, std::string("encoding ") + MovieName);
+    self->MovieWritten = Encode(self, internal.Ffmpeg);
+    if (!self->MovieWritten)
+    {
+      return false;
+    }
+  }
+  if (self->Abort)
+  {
+    self->Aborted = true;
+    return false;
+  }
+  std::string why;
+  if (!internal.Folder.Commit(why))
+  {
+    vtkErrorWithObjectMacro(self, << self->DirectoryName << ": " << why);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkLightFieldAnimationWriter::Internals::CheckSettings(
+  vtkLightFieldAnimationWriter* self,
+  vtkLightField*& lightField)
+{
+  const bool root = Rank(self) == 0;
+  if (!self->SceneLogic)
+  {
+    return "no SceneLogic to animate";
+  }
+  if (root && (!self->DirectoryName || !*self->DirectoryName))
+  {
+    return "no DirectoryName to write the animation into";
+  }
+  for (const int size : self->Size)
+  {
+    if (size < 0 || size > lfd::MaximumRenderSize)
+    {
+      return (self->DirectoryName ? self->DirectoryName : std::string()) + ": frame size " +
+        std::to_string(size) + " is not 0 (the scene's) or in [1, " +
+        std::to_string(lfd::MaximumRenderSize) + "]";
+    }
+  }
+  lightField = self->LightField;
+  if (!lightField)
+  {
+    vtkNew<vtkLightFieldErrorObserver> errors;
+    errors->Observe(self->SceneLogic);
+    lightField = self->SceneLogic->GetLightField();
+    errors->StopObserving();
+    if (!lightField)
+    {
+      return errors->GetErrorMessage();
+    }
+  }
+  std::string error;
+  if (root &&
+    !self->Internal->Folder.Open(
+      self->DirectoryName, "an animation export", lfd::scene::AnimationFilePatterns(), error))
+  {
+    return error;
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightFieldAnimationWriter::Write()
 {
   Internals& internal = *this->Internal;
@@ -398,95 +615,64 @@ bool vtkLightFieldAnimationWriter::Write()
   this->NumberOfFramesWritten = 0;
   this->MovieWritten = false;
   internal.Thumbnails.clear();
-  internal.FrameSteps.clear();
-  internal.CageSteps.clear();
   internal.ContactSheet->Initialize();
-  if (!this->SceneLogic || !this->DirectoryName || !*this->DirectoryName)
+  const int rank = Internals::Rank(this);
+  const int processes = Internals::Processes(this);
+  vtkLightField* lightField = nullptr;
+  // Every process goes on, or all stop with the first refusal, said once.
+  const std::string error =
+    lfd::scene::AgreeOnError(this->Controller, Internals::CheckSettings(this, lightField));
+  if (!error.empty())
   {
-    vtkErrorMacro(<< (this->SceneLogic ? "no DirectoryName to write the animation into"
-                                       : "no SceneLogic to animate"));
+    if (rank == 0)
+    {
+      vtkErrorMacro(<< error);
+    }
+    internal.Folder.Discard();
     return false;
   }
-  for (const int size : this->Size)
-  {
-    if (size < 0 || size > lfd::MaximumRenderSize)
-    {
-      vtkErrorMacro(<< this->DirectoryName << ": frame size " << size << " is not 0 (the scene's) "
-                    << "or in [1, " << lfd::MaximumRenderSize << "]");
-      return false;
-    }
-  }
-  vtkLightField* lightField = this->LightField;
-  if (!lightField)
-  {
-    vtkNew<vtkLightFieldErrorObserver> errors;
-    errors->Observe(this->SceneLogic);
-    lightField = this->SceneLogic->GetLightField();
-    errors->StopObserving();
-    if (!lightField)
-    {
-      vtkErrorMacro(<< errors->GetErrorMessage());
-      return false;
-    }
-  }
-  std::string error;
-  if (!internal.Folder.Open(
-        this->DirectoryName, "an animation export", lfd::scene::AnimationFilePatterns(), error))
-  {
-    vtkErrorMacro(<< error);
-    return false;
-  }
-
-  const std::string ffmpeg = this->WriteMovie ? vtksys::SystemTools::FindProgram("ffmpeg") : "";
+  internal.FolderPath = lfd::scene::ShareText(this->Controller, internal.Folder.GetPath());
+  internal.Ffmpeg =
+    rank == 0 && this->WriteMovie ? vtksys::SystemTools::FindProgram("ffmpeg") : std::string();
   const int frames = this->NumberOfFrames;
-  const double steps = frames + (ffmpeg.empty() ? 0 : 1);
+  internal.Steps = frames + (internal.Ffmpeg.empty() ? 0 : 1);
   this->Progress = 0.0;
   internal.ProgressText.clear();
   this->InvokeEvent(vtkCommand::StartEvent);
-  // `failed`: an error was reported; a cancel sets Aborted instead.
-  bool failed = false;
-  for (int f = 0; !failed && f < frames; ++f)
+  // A cancel from a StartEvent observer of process 0 stops before any frame.
+  int goOn = !this->Abort;
+  if (processes > 1)
   {
-    if (this->Abort)
+    this->Controller->Broadcast(&goOn, 1, 0);
+  }
+  this->Aborted = !goOn;
+  for (int first = 0; goOn && first < frames; first += processes)
+  {
+    internal.FrameError.clear();
+    internal.Thumbnail = nullptr;
+    if (first + rank < frames)
     {
-      this->Aborted = true;
-      break;
+      Internals::Render(this, lightField, first + rank) && Internals::Save(this, first + rank);
     }
-    failed = !Internals::Render(this, lightField, f) || !Internals::Save(this, f);
-    if (!failed)
-    {
-      this->NumberOfFramesWritten = f + 1;
-      Internals::Report(
-        this, (f + 1) / steps, "frame " + std::to_string(f + 1) + "/" + std::to_string(frames));
-    }
+    goOn = Internals::FinishRound(this, first);
   }
-  if (!failed && !this->Aborted)
+  bool complete = goOn;
+  if (rank == 0)
   {
-    AssembleContactSheet(internal.Thumbnails,
-      this->ContactSheetColumns,
-      this->ContactSheetThumbnailSize,
-      internal.ContactSheet);
-    failed =
-      (this->WriteContactSheet &&
-        !Internals::WriteImage(
-          this, internal.ContactSheet, internal.Folder.GetPath() + "/" + ContactSheetName)) ||
-      (this->WriteParaView && !Internals::WriteCollections(this));
+    complete = complete && Internals::Finish(this);
+    internal.Folder.Discard();
   }
-  if (!failed && !this->Aborted && !this->Abort && !ffmpeg.empty())
+  if (processes > 1)
   {
-    Internals::Report(this, frames / steps, std::string("encoding ") + MovieName);
-    this->MovieWritten = Internals::Encode(this, ffmpeg);
-    failed = !this->MovieWritten && !this->Aborted;
+    // Every process returns process 0's outcome.
+    int outcome[4] = { complete, this->Aborted, this->MovieWritten, this->NumberOfFramesWritten };
+    this->Controller->Broadcast(outcome, 4, 0);
+    complete = outcome[0] != 0;
+    this->Aborted = outcome[1] != 0;
+    this->MovieWritten = outcome[2] != 0;
+    this->NumberOfFramesWritten = outcome[3];
   }
-  this->Aborted = this->Aborted || (!failed && this->Abort);
-  bool complete = !failed && !this->Aborted;
-  if (complete && !internal.Folder.Commit(error))
-  {
-    vtkErrorMacro(<< this->DirectoryName << ": " << error);
-    complete = false;
-  }
-  internal.Folder.Discard();
-  if (complete)
+  if (complete && rank == 0)
   {
     Internals::Report(this, 1.0, "done");
   }

@@ -50,6 +50,22 @@
  * true, no error is reported, the staged folder is removed and an existing
  * DirectoryName is untouched. Write() clears the flag when it starts.
  *
+ * Across processes (`mpirun -np N lfd animate`, or any
+ * vtkMultiProcessController given to SetController()): every process calls
+ * Write() with the same scene, light field and settings; process p renders
+ * the frames f with f % N == p, N consecutive frames a round, into the
+ * folder process 0 stages, so that every process must reach DirectoryName
+ * (on a cluster: a shared file system). After each round every process
+ * sends process 0 the outcome of its frame and its thumbnail; process 0
+ * reports the progress, writes the contact sheet and the ParaView
+ * collections, encodes the movie and renames the folder. The files are
+ * those of a single process, bitwise: each frame is rendered by the same
+ * code from the same inputs. An error on any process (the first in frame
+ * order) is reported by process 0 alone; a cancel on any process stops
+ * them all after the round; Write() returns the same result on every
+ * process. DirectoryName is used on process 0 only; the contact sheet is
+ * assembled on process 0 only.
+ *
  * Errors: Write() returns false and reports one line with vtkErrorMacro (an
  * ErrorEvent a vtkLightFieldErrorObserver collects): the scene logic's own
  * refusal of a keyframe's cage as it said it (naming the scene file and the
@@ -70,6 +86,7 @@
 class vtkImageData;
 class vtkLightField;
 class vtkLightFieldSceneLogic;
+class vtkMultiProcessController;
 
 class LFDSCENE_EXPORT vtkLightFieldAnimationWriter : public vtkObject
 {
@@ -98,7 +115,18 @@ public:
 
   ///@{
   /**
-   * The output folder (replaced when the export is complete). Required.
+   * The processes the frames are split across (see the class description),
+   * e.g. a vtkMPIController; null (the default) or a single process: this
+   * process renders every frame.
+   */
+  void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+  ///@{
+  /**
+   * The output folder (replaced when the export is complete). Required on
+   * process 0.
    */
   vtkSetStringMacro(DirectoryName);
   vtkGetStringMacro(DirectoryName);
@@ -206,6 +234,7 @@ protected:
 
   vtkLightFieldSceneLogic* SceneLogic = nullptr;
   vtkLightField* LightField = nullptr;
+  vtkMultiProcessController* Controller = nullptr;
   char* DirectoryName = nullptr;
   int NumberOfFrames = 48;
   int Size[2] = { 0, 0 };
