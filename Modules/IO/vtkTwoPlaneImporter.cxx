@@ -158,7 +158,7 @@ bool vtkTwoPlaneImporter::ParseCalibration(std::vector<CalibratedView>& views,
       CalibratedView view;
       view.Name = cell->second;
       view.Image = lfd::io::ResolvePath(folder, cell->second);
-      view.Where = view.Image;
+      view.Where = folder;
       const double K[9] = { this->FocalLength,
         0.0,
         0.5 * (header.Width - 1),
