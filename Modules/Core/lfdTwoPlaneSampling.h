@@ -18,10 +18,11 @@
  * focal plane changes which point the cameras' rays agree on, and widening
  * the camera weights beyond the nearest 4 blurs whatever lies off the focal
  * plane. Each camera's weight is a separable tent over the camera plane,
- * (1 - |du| / a_u)(1 - |dv| / a_v), with half-widths a = max(Aperture, the
- * spacing of the grid lines around (u, v)): Aperture 0 is exactly the
- * bilinear weighting of the paper, a larger Aperture (world units on the
- * camera plane) brings in every camera closer than it along both axes. A
+ * (1 - |du| / a_u)(1 - |dv| / a_v): up to the spacing of the grid lines
+ * around (u, v), the two lines around it with a = that spacing, which is
+ * exactly the bilinear weighting of the paper (Aperture 0); a larger
+ * Aperture a (world units on the camera plane) brings in every camera closer
+ * than it along both axes. A
  * point at depth z then spreads, in a view on the camera plane with focal
  * length f (pixels), over copies displaced by f |du| |1/z - 1/FocalDepth|
  * pixels for the cameras du away, weighted by the tent.
@@ -224,9 +225,10 @@ inline double TentWeight(double delta, double half)
 }
 
 /**
- * The grid lines around `x` (clamped into the grid) and the half-width of
- * the tent along this axis: max(aperture, the gap between the two lines
- * around x). `first`/`last` bound the lines closer than the half-width.
+ * The half-width of the tent along one axis of the grid at `x` (clamped
+ * into the grid), and the lines [first, last) it weighs: the two lines
+ * around x and the gap between them when the aperture is no wider (the
+ * bilinear weights), else every line closer than the aperture.
  */
 inline double TentSpan(const std::vector<double>& lines,
   double& x,
@@ -238,10 +240,17 @@ inline double TentSpan(const std::vector<double>& lines,
   const std::size_t upper = std::upper_bound(lines.begin(), lines.end(), x) - lines.begin();
   const std::size_t hi = std::min(upper, lines.size() - 1);
   const std::size_t lo = upper == 0 ? 0 : upper - 1;
-  const double half = std::max(aperture, lines[hi] - lines[lo]);
-  first = std::lower_bound(lines.begin(), lines.end(), x - half) - lines.begin();
-  last = std::upper_bound(lines.begin(), lines.end(), x + half) - lines.begin();
-  return half;
+  const double gap = lines[hi] - lines[lo];
+  if (aperture <= gap)
+  {
+    // The two lines around x, bilinearly, however the grid is spaced.
+    first = lo;
+    last = hi + 1;
+    return gap;
+  }
+  first = std::lower_bound(lines.begin(), lines.end(), x - aperture) - lines.begin();
+  last = std::upper_bound(lines.begin(), lines.end(), x + aperture) - lines.begin();
+  return aperture;
 }
 
 /// Adds a ray of `label` to the per-label sums of `out` (colours summed

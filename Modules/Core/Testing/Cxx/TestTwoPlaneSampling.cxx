@@ -152,5 +152,14 @@ int TestTwoPlaneSampling(int, char*[])
   sampler.Gather({ 5, -1, -1 }, { 0, 0, 1 }, samples);
   weight = lfd::BlendLabel(samples, 1, color);
   Expect("beyond the grid: the corner view 2", color.r, 20.0);
+  // Aperture 0 is bilinear on an uneven grid too: columns at -1, 0 and 0.2,
+  // a ray at u = -0.5 weighs views 3 and 4 (row v = 0) by half, not view 5.
+  lfd::TwoPlaneLayout uneven = layout;
+  uneven.Columns = { -1.0, 0.0, 0.2 };
+  sampler.Layout = &uneven;
+  sampler.Gather({ -0.5, 0, -1 }, { 0, 0, 1 }, samples);
+  weight = lfd::BlendLabel(samples, 1, color);
+  Expect("uneven grid: the two columns around the ray only", weight, 1.0);
+  Expect("uneven grid: their red (30 + 40) / 2", color.r, 35.0);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
