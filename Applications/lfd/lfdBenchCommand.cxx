@@ -627,9 +627,10 @@ void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
   auto* benchCommand = app.add_subcommand("bench",
     "print rays/s and ms/frame of the renderer on fixed scenes (median of repeated renders; "
     "writes nothing), each also as a ratio to a reference loop (16 texel reads per pixel, no "
-    "geometry) timed in the same run, and the cost against cage size (the fish bent under 1 "
-    "to 100 boxes, with and without the renderer's cage acceleration); needs an X display "
-    "(xvfb-run -a)");
+    "geometry) timed in the same run, a two-plane light field (the fish from a 16x16 grid, "
+    "with the 4 nearest cameras and through a synthetic aperture), and the cost against cage "
+    "size (the fish bent under 1 to 100 boxes, with and without the renderer's cage "
+    "acceleration); needs an X display (xvfb-run -a)");
   numbers.Add(benchCommand, "--repeat", *repeat, 1, 1000, "renders per scene");
   numbers.Add(
     benchCommand, "--size", *size, 1, captureLimits->GetWidthMaxValue(), "image width and height");

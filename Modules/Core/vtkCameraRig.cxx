@@ -30,6 +30,19 @@ glm::dvec3 ToVec(const double v[3])
   return glm::dvec3(v[0], v[1], v[2]);
 }
 
+/// K of a square-pixel camera of `width` x `height` pixels and vertical view
+/// angle `viewAngle` (degrees), principal point at the image centre.
+glm::dmat3 IdealIntrinsics(int width, int height, double viewAngle)
+{
+  const double fy = 0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(viewAngle));
+  glm::dmat3 intrinsics(1.0);
+  intrinsics[0][0] = fy;
+  intrinsics[1][1] = fy;
+  intrinsics[2][0] = 0.5 * (width - 1);
+  intrinsics[2][1] = 0.5 * (height - 1);
+  return intrinsics;
+}
+
 void FromVec(const glm::dvec3& v, double out[3])
 {
   out[0] = v.x;
@@ -636,12 +649,7 @@ void vtkCameraRig::MakeCylinder(const double center[3],
   const glm::dvec3 a = glm::normalize(ToVec(axis));
   const glm::dvec3 refX = ReferenceDirection(a);
   const glm::dvec3 refY = glm::cross(a, refX);
-  const double fy = 0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(viewAngle));
-  glm::dmat3 intrinsics(1.0);
-  intrinsics[0][0] = fy;
-  intrinsics[1][1] = fy;
-  intrinsics[2][0] = 0.5 * (width - 1);
-  intrinsics[2][1] = 0.5 * (height - 1);
+  const glm::dmat3 intrinsics = IdealIntrinsics(width, height, viewAngle);
   this->SetImageSize(width, height);
   this->SetNumberOfViews(viewsPerRing * rows);
   for (int r = 0; r < rows; ++r)
@@ -684,12 +692,7 @@ void vtkCameraRig::MakePlaneGrid(const double center[3],
                   "size, a view angle in (0, 180) degrees and an up not parallel to forward.");
     return;
   }
-  const double fy = 0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(viewAngle));
-  glm::dmat3 intrinsics(1.0);
-  intrinsics[0][0] = fy;
-  intrinsics[1][1] = fy;
-  intrinsics[2][0] = 0.5 * (width - 1);
-  intrinsics[2][1] = 0.5 * (height - 1);
+  const glm::dmat3 intrinsics = IdealIntrinsics(width, height, viewAngle);
   const lfd::PinholeCamera frame = lfd::PinholeCamera::LookAt(intrinsics, ToVec(center), f, u);
   const glm::dvec3 right = glm::transpose(frame.R)[0];
   const glm::dvec3 down = glm::transpose(frame.R)[1];
