@@ -450,12 +450,15 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   const lfd::TwoPlaneLayout plane = rig->GetTwoPlaneLayout(this->ExcludedViews);
   const lfd::RingLayout layout =
     plane.Empty() ? rig->GetRingLayout(this->ExcludedViews) : lfd::RingLayout();
-  if (plane.Empty()
-      ? layout.Rows.empty()
-      : std::all_of(plane.View.begin(), plane.View.end(), [](int v) { return v < 0; }))
+  if (plane.Empty() && layout.Rows.empty())
   {
-    vtkErrorMacro("The rig is neither a two-plane grid nor fitted with a cylinder, or every view "
-                  "is excluded.");
+    vtkErrorMacro("No cylinder could be fitted to the rig, or every view is excluded.");
+    return 0;
+  }
+  if (!plane.Empty() &&
+    std::all_of(plane.View.begin(), plane.View.end(), [](int v) { return v < 0; }))
+  {
+    vtkErrorMacro("Every view of the two-plane grid is excluded.");
     return 0;
   }
   std::vector<lfd::RenderBox> boxes;

@@ -14,6 +14,7 @@
 #include "vtkImageData.h"
 #include "vtkLeaveOneOutEvaluator.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldRenderer.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -24,6 +25,7 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <string>
 #include <vector>
 
 namespace
@@ -221,5 +223,22 @@ int TestTwoPlaneRefocus(int, char*[])
     "out of focus, added blur px (predicted f |du| |1/z - 1/D|, within 2 %)",
     measured);
   std::cout << "     predicted blur: " << predicted << " px\n";
+
+  // Leave-one-out of every view leaves nothing to render: one error.
+  vtkNew<vtkLightFieldRenderer> empty;
+  vtkNew<vtkLightFieldErrorObserver> errors;
+  errors->Observe(empty);
+  empty->SetInputData(bar);
+  empty->SetWidth(Size);
+  empty->SetHeight(Size);
+  for (int v = 0; v < bar->GetNumberOfViews(); ++v)
+  {
+    empty->AddExcludedView(v);
+  }
+  empty->Update();
+  Expect(errors->GetNumberOfErrors() == 1 &&
+      std::string(errors->GetErrorMessage()) == "Every view of the two-plane grid is excluded.",
+    "every view excluded: one error",
+    errors->GetNumberOfErrors());
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
