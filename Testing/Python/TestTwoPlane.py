@@ -3,8 +3,8 @@ folder named like the Stanford archive (a textured plane at depth 4, drawn
 analytically) -> `lfd import twoplane` -> `lfd render --focal-depth
 --aperture` at a camera between the grid's, against the analytic image; the
 same render from Python (vtkLightFieldRenderer.SetFocalDepth / SetAperture)
-gives the same pixels, and focused at infinity (the default) it is worse; a
-misnamed image is one error line naming it."""
+gives the same pixels, and focused at infinity (the default) it is worse;
+--aperture on a ring and a misnamed image are each one error line."""
 
 import json
 import math
@@ -111,6 +111,25 @@ renderer.SetAperture(0.0)
 renderer.Update()
 far = t.psnr(t.image_array(renderer.GetOutput()), truth)
 t.check(far < sharp - 5.0, "focused at infinity (the default): at least 5 dB lower", far)
+
+# Refocusing options on a ring: refused in one line.
+ring = lfd.vtkLightField()
+ring.SetLayout(16, 16, 8)
+ring.GetRig().MakeCylinder((0, 0, 0), (0, 1, 0), 4.0, 8, 1, (0.0,), 16, 16, 30.0)
+ring.AllocatePass(lfd.vtkLightField.COAXIAL).Fill(0)
+writer = lfd.vtkLightFieldWriter()
+writer.SetInputData(ring)
+writer.SetDirectory(os.path.join(WORK, "ring.lf"))
+writer.Write()
+with open(os.path.join(WORK, "ring.json"), "w") as f:
+    json.dump({"format": "lfd-scene", "version": 1, "lightfield": "ring.lf",
+               "camera": {"position": [0, 0, 6], "focal_point": [0, 0, 0], "width": 16,
+                          "height": 16}}, f)
+code, _, err = t.run_lfd("render", os.path.join(WORK, "ring.json"), "--aperture", "1",
+                         "--out", os.path.join(WORK, "ring.png"))
+lines = [line for line in err.splitlines() if line.startswith("lfd: error:")]
+t.check(code == 1 and len(lines) == 1 and "refocus two-plane light fields" in lines[0],
+        "--aperture on a ring: one error", err.strip())
 
 # A misnamed image: one error line naming it, no dataset written.
 write_png(os.path.join(grid, "view_a.png"), truth)
