@@ -43,7 +43,8 @@ void AddTwoPlaneCommands(CLI::App& app, NumericOptions& numbers, std::vector<Com
       1e-9,
       limits->GetFocalLengthMaxValue(),
       "focal length of every view, pixels")
-    ->required();
+    ->required()
+    ->default_str("");
   commands.push_back({ command,
     [options]
     {
