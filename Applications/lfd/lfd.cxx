@@ -308,6 +308,7 @@ int Main(int argc, char* argv[], lfd::CommandErrors& errors)
   std::vector<Command> commands;
   AddCaptureCommands(app, numbers, commands);
   AddImportCommands(app, numbers, commands);
+  AddTwoPlaneCommands(app, numbers, commands);
   AddRenderCommands(app, numbers, commands);
   AddEvalCommands(app, numbers, commands);
   AddBenchCommand(app, numbers, commands);

@@ -618,6 +618,58 @@ void CageSizeRows(vtkLightField* fish,
   }
 }
 
+/**
+ * The two-plane rows (Levoy and Hanrahan 1996, lfdTwoPlaneSampling.h): the
+ * fish captured from a 16 x 16 grid of `image`^2 views 0.05 apart on the plane
+ * z = 3, rendered from a camera on that plane between four of them, focused
+ * on the fish (depth 3): with the 4 nearest cameras, and refocused through
+ * an aperture of 3 spacings (every camera within 0.15: 5 x 5 of them).
+ */
+void TwoPlaneRows(const BenchSettings& settings,
+  int image,
+  PeakMemory& peak,
+  std::vector<BenchRow>& rows)
+{
+  vtkNew<vtkProceduralObjectSource> source;
+  source->SetObjectToFish();
+  const double centre[3] = { 0.0, 0.0, 3.0 };
+  const double forward[3] = { 0.0, 0.0, -1.0 };
+  const double up[3] = { 0.0, 1.0, 0.0 };
+  vtkNew<vtkCameraRig> grid;
+  grid->MakePlaneGrid(centre, forward, up, 16, 16, 0.05, image, image, 30.0);
+  vtkNew<vtkLightFieldCapture> capture;
+  capture->SetInputConnection(source->GetOutputPort());
+  capture->SetRig(grid);
+  capture->CaptureDepthOff();
+  Run(capture.Get(), "capturing the two-plane fish");
+  vtkLightField* lightField = capture->GetOutput();
+  const int size = TableSize(settings);
+  vtkNew<vtkCameraRig> eye;
+  const double between[3] = { 0.025, 0.025, 3.0 };
+  eye->MakePlaneGrid(between, forward, up, 1, 1, 1.0, size, size, 30.0);
+  double K[9], R[9], t[3];
+  eye->GetIntrinsics(0, K);
+  eye->GetRotation(0, R);
+  eye->GetTranslation(0, t);
+  vtkNew<vtkLightFieldRenderer> renderer;
+  renderer->SetInputData(lightField);
+  renderer->SetPinhole(K, R, t);
+  renderer->SetWidth(size);
+  renderer->SetHeight(size);
+  renderer->SetFocalDepth(3.0);
+  for (const double aperture : { 0.0, 0.15 })
+  {
+    renderer->SetAperture(aperture);
+    const Measure figures = MeasureRender(renderer, settings.Repeat, peak);
+    rows.push_back(Row("two-plane",
+      aperture > 0.0 ? "fish 16x16 grid, aperture 3 spacings" : "fish 16x16 grid, 4 nearest",
+      size,
+      lightField,
+      0,
+      figures));
+  }
+}
+
 /// The reference loop's time at each size (s).
 using ReferenceTimes = std::map<int, double>;
 
@@ -786,6 +838,7 @@ void Bench(const BenchSettings& settings)
   }
   LightFieldSizeRows(settings, peak, rows);
   CageSizeRows(fish, settings, peak, rows);
+  TwoPlaneRows(settings, image, peak, rows);
   LoadAverage(load[1]);
 
   const std::string scene = "light field: " + std::to_string(views) + "x" +
@@ -794,6 +847,8 @@ void Bench(const BenchSettings& settings)
   PrintTable("scene (" + scene + ")", "render", rows, reference);
   PrintTable("undeformed fish, light-field size", "light-field size", rows, reference);
   PrintTable("deformed fish (bend 30), cage size", "cage size", rows, reference);
+  PrintTable(
+    "two-plane fish (16x16 grid of " + std::to_string(image) + "^2)", "two-plane", rows, reference);
   std::printf("(median of %d renders each; vs ref: against the reference loop at the same "
               "frame size, timed in the same run; peak MB: the process's peak resident memory "
               "during the configuration (its light fields included); vs_rest: against the "
@@ -894,7 +949,8 @@ void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
     "each also as a ratio to a reference loop (16 texel reads per pixel, no geometry) timed in "
     "the same run, the cost against light-field size (views x resolution) and against cage "
     "size (the fish bent under 1 to 100 boxes, with and without the renderer's cage "
-    "acceleration); needs an X display (xvfb-run -a)");
+    "acceleration), and a two-plane light field (the fish from a 16x16 grid, with the 4 "
+    "nearest cameras and through a synthetic aperture); needs an X display (xvfb-run -a)");
   auto* repeat =
     numbers.Add(benchCommand, "--repeat", settings->Repeat, 1, 1000, "renders per configuration");
   auto* sizes = numbers.Add(benchCommand,

@@ -30,6 +30,8 @@ void AddSplitCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comman
 /// `lfd import colmap|transforms`, `lfd export colmap|transforms`, `lfd scene init`
 /// (lfdImportCommands.cxx; after AddCaptureCommands, which creates `lfd import`).
 void AddImportCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
+/// `lfd import twoplane` (lfdTwoPlaneCommands.cxx; after AddCaptureCommands).
+void AddTwoPlaneCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd bench` (lfdBenchCommand.cxx).
 void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd demo` (lfdDemoCommand.cxx).

@@ -2,6 +2,7 @@
 
 #include "lfdCylinderSampling.h"
 #include "lfdPinholeCamera.h"
+#include "lfdTwoPlaneSampling.h"
 #include "lfdViewCoverage.h"
 
 #include "vtkCamera.h"
@@ -27,6 +28,19 @@ namespace
 glm::dvec3 ToVec(const double v[3])
 {
   return glm::dvec3(v[0], v[1], v[2]);
+}
+
+/// K of a square-pixel camera of `width` x `height` pixels and vertical view
+/// angle `viewAngle` (degrees), principal point at the image centre.
+glm::dmat3 IdealIntrinsics(int width, int height, double viewAngle)
+{
+  const double fy = 0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(viewAngle));
+  glm::dmat3 intrinsics(1.0);
+  intrinsics[0][0] = fy;
+  intrinsics[1][1] = fy;
+  intrinsics[2][0] = 0.5 * (width - 1);
+  intrinsics[2][1] = 0.5 * (height - 1);
+  return intrinsics;
 }
 
 void FromVec(const glm::dvec3& v, double out[3])
@@ -635,12 +649,7 @@ void vtkCameraRig::MakeCylinder(const double center[3],
   const glm::dvec3 a = glm::normalize(ToVec(axis));
   const glm::dvec3 refX = ReferenceDirection(a);
   const glm::dvec3 refY = glm::cross(a, refX);
-  const double fy = 0.5 * height / std::tan(0.5 * vtkMath::RadiansFromDegrees(viewAngle));
-  glm::dmat3 intrinsics(1.0);
-  intrinsics[0][0] = fy;
-  intrinsics[1][1] = fy;
-  intrinsics[2][0] = 0.5 * (width - 1);
-  intrinsics[2][1] = 0.5 * (height - 1);
+  const glm::dmat3 intrinsics = IdealIntrinsics(width, height, viewAngle);
   this->SetImageSize(width, height);
   this->SetNumberOfViews(viewsPerRing * rows);
   for (int r = 0; r < rows; ++r)
@@ -660,6 +669,65 @@ void vtkCameraRig::MakeCylinder(const double center[3],
   {
     this->FitCylinder(noCylinder);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkCameraRig::MakePlaneGrid(const double center[3],
+  const double forward[3],
+  const double up[3],
+  int columns,
+  int rows,
+  double spacing,
+  int width,
+  int height,
+  double viewAngle)
+{
+  const glm::dvec3 f = ToVec(forward);
+  const glm::dvec3 u = ToVec(up);
+  if (columns < 1 || rows < 1 || !(spacing > 0.0) || width < 1 || height < 1 ||
+    !(viewAngle > 0.0 && viewAngle < 180.0) || !(glm::length(f) > 0.0) ||
+    !(glm::length(glm::cross(f, u)) > 1e-9 * glm::length(f) * glm::length(u)))
+  {
+    vtkErrorMacro("MakePlaneGrid: need at least one column and row, a positive spacing and image "
+                  "size, a view angle in (0, 180) degrees and an up not parallel to forward.");
+    return;
+  }
+  const glm::dmat3 intrinsics = IdealIntrinsics(width, height, viewAngle);
+  const lfd::PinholeCamera frame = lfd::PinholeCamera::LookAt(intrinsics, ToVec(center), f, u);
+  const glm::dvec3 right = glm::transpose(frame.R)[0];
+  const glm::dvec3 down = glm::transpose(frame.R)[1];
+  this->SetImageSize(width, height);
+  this->SetNumberOfViews(columns * rows);
+  for (int r = 0; r < rows; ++r)
+  {
+    for (int c = 0; c < columns; ++c)
+    {
+      const glm::dvec3 position = ToVec(center) +
+        spacing * ((c - 0.5 * (columns - 1)) * right + (r - 0.5 * (rows - 1)) * down);
+      lfd::PinholeCamera camera = frame;
+      camera.t = -(camera.R * position);
+      this->SetView(r * columns + c, camera);
+      std::ostringstream name;
+      name << "r" << std::setw(2) << std::setfill('0') << r << "_c" << std::setw(2) << c;
+      this->SetViewName(r * columns + c, name.str().c_str());
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkCameraRig::IsTwoPlane() const
+{
+  return !this->GetTwoPlaneLayout().Empty();
+}
+
+//------------------------------------------------------------------------------
+lfd::TwoPlaneLayout vtkCameraRig::GetTwoPlaneLayout(const std::vector<int>& excluded) const
+{
+  lfd::TwoPlaneLayout layout;
+  std::string notPlanar;
+  lfd::BuildTwoPlaneLayout(
+    this->Internal->Cameras.data(), this->GetNumberOfViews(), excluded, layout, notPlanar);
+  return layout;
 }
 
 //------------------------------------------------------------------------------

@@ -56,6 +56,7 @@ namespace lfd
 {
 struct PinholeCamera;
 struct RingLayout;
+struct TwoPlaneLayout;
 }
 #endif
 
@@ -179,6 +180,34 @@ public:
     int width,
     int height,
     double viewAngle);
+
+  /**
+   * Builds a two-plane rig (Levoy and Hanrahan 1996): `columns` x `rows`
+   * cameras `spacing` apart on the plane through `center` orthogonal to
+   * `forward`, the grid centred on `center`, every camera looking along
+   * `forward` with its image "up" as close to `up` as the plane allows,
+   * vertical field of view `viewAngle` degrees and the given image size.
+   * View `r * columns + c` is row r (the top row first) and column c (the
+   * left column first), named "rRR_cCC".
+   */
+  void MakePlaneGrid(const double center[3],
+    const double forward[3],
+    const double up[3],
+    int columns,
+    int rows,
+    double spacing,
+    int width,
+    int height,
+    double viewAngle);
+
+  /**
+   * True when the rig is a two-plane one: every view looks along one axis
+   * and the camera centres lie on a plane orthogonal to it
+   * (lfd::BuildTwoPlaneLayout, lfdTwoPlaneSampling.h, gives the tolerances).
+   * vtkLightFieldRenderer then samples by two-plane interpolation instead of
+   * the cylinder. Computed from the views each time, nothing is cached.
+   */
+  bool IsTwoPlane() const;
 
   ///@{
   /**
@@ -313,6 +342,13 @@ public:
    * rows) when the rig has none (HasCylinder() is false).
    */
   lfd::RingLayout GetRingLayout(const std::vector<int>& excluded = {}) const;
+
+  /**
+   * The two-plane layout over the views (lfd::BuildTwoPlaneLayout), the
+   * cells of `excluded` views left empty (leave-one-out); empty (Empty())
+   * when the rig is not a two-plane one.
+   */
+  lfd::TwoPlaneLayout GetTwoPlaneLayout(const std::vector<int>& excluded = {}) const;
 
   /**
    * The rig's validation, shared by every reader, importer and writer: each

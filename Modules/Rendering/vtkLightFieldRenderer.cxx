@@ -7,6 +7,7 @@
 #include "lfdPinholeCamera.h"
 #include "lfdRenderView.h"
 #include "lfdTessellation.h"
+#include "lfdTwoPlaneSampling.h"
 
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
@@ -138,10 +139,12 @@ bool CollectBoxes(vtkObject* self,
   return true;
 }
 
-/// One ray per pixel through lfd::RenderView (paper Sec. 6), rows in parallel.
+/// One ray per pixel through lfd::RenderView (paper Sec. 6), rows in parallel,
+/// the light field looked up through `Lookup` (ring or two-plane).
+template<typename Lookup>
 struct RenderRows
 {
-  const lfd::SamplerLookup& Lookup;
+  const Lookup& Light;
   const lfd::FrameCage& Cage; // the eye, its pixels' rays and the boxes they may meet
   const lfd::RenderViewSettings& Settings;
   bool Accelerated; // through Cage, or every ray through every box
@@ -166,11 +169,11 @@ struct RenderRows
         std::uint8_t* rgb = this->Radiance + 3 * id;
         // A ray's camera z is 1, so the ray parameter of the seen point is its depth.
         const lfd::ViewSample seen = this->Accelerated
-          ? lfd::RenderView(this->Cage, x, y, this->Lookup, this->Settings, scratch)
+          ? lfd::RenderView(this->Cage, x, y, this->Light, this->Settings, scratch)
           : lfd::RenderView(this->Cage.Eye,
               this->Cage.Direction(x, y),
               *this->Cage.Boxes,
-              this->Lookup,
+              this->Light,
               this->Settings,
               scratch.Segments);
         this->Labels[id] = static_cast<std::uint8_t>(std::max(seen.Label, 0));
@@ -251,9 +254,19 @@ bool OwnsEveryPart(const lfd::RenderViewSettings& settings, vtkLightField* light
   return true;
 }
 
+/// What a frame is rendered with, besides the light field and the cage.
+struct FrameSettings
+{
+  bool Accelerated; // through the frame cage, or every ray through every box
+  int Width;
+  int Height;
+  std::uint8_t Background[3];
+};
+
 /// The Width x Height output image with its Radiance, Label and Depth
 /// arrays, and `functor` pointed at them.
-void AllocateImage(vtkImageData* output, int width, int height, RenderRows& functor)
+template<typename Lookup>
+void AllocateImage(vtkImageData* output, int width, int height, RenderRows<Lookup>& functor)
 {
   output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
   output->SetSpacing(1.0, 1.0, 1.0);
@@ -274,6 +287,30 @@ void AllocateImage(vtkImageData* output, int width, int height, RenderRows& func
   functor.Radiance = image->GetPointer(0);
   functor.Labels = labels->GetPointer(0);
   functor.Depths = depths->GetPointer(0);
+}
+
+/// Renders `output` through `cage`, one ray per pixel looked up through
+/// `lookup` (ring or two-plane), rows in parallel.
+template<typename Lookup>
+void RenderFrame(const Lookup& lookup,
+  const lfd::FrameCage& cage,
+  const lfd::RenderViewSettings& settings,
+  const FrameSettings& frame,
+  vtkImageData* output)
+{
+  RenderRows<Lookup> functor{ lookup,
+    cage,
+    settings,
+    frame.Accelerated,
+    frame.Width,
+    frame.Height,
+    { frame.Background[0], frame.Background[1], frame.Background[2] },
+    nullptr,
+    nullptr,
+    nullptr,
+    {} };
+  AllocateImage(output, frame.Width, frame.Height, functor);
+  vtkSMPTools::For(0, frame.Height, functor);
 }
 }
 
@@ -408,10 +445,20 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     return 0;
   }
   vtkCameraRig* rig = input->GetRig();
-  const lfd::RingLayout layout = rig->GetRingLayout(this->ExcludedViews);
-  if (layout.Rows.empty())
+  // The rig says how the light field is parameterised: a grid on a plane
+  // (two-plane) or else a ring (cylinder).
+  const lfd::TwoPlaneLayout plane = rig->GetTwoPlaneLayout(this->ExcludedViews);
+  const lfd::RingLayout layout =
+    plane.Empty() ? rig->GetRingLayout(this->ExcludedViews) : lfd::RingLayout();
+  if (plane.Empty() && layout.Rows.empty())
   {
     vtkErrorMacro("No cylinder could be fitted to the rig, or every view is excluded.");
+    return 0;
+  }
+  if (!plane.Empty() &&
+    std::all_of(plane.View.begin(), plane.View.end(), [](int v) { return v < 0; }))
+  {
+    vtkErrorMacro("Every view of the two-plane grid is excluded.");
     return 0;
   }
   std::vector<lfd::RenderBox> boxes;
@@ -463,25 +510,28 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     this->Width,
     this->Height,
     lfd::FrameCage::DefaultTileSize);
-  const lfd::SamplerLookup lookup{ sampler, this->WidenedSearch, eye.Forward() };
-  RenderRows functor{ lookup,
-    cage,
-    settings,
-    this->CageAcceleration,
-    this->Width,
-    this->Height,
-    {},
-    nullptr,
-    nullptr,
-    nullptr,
-    {} };
+  vtkImageData* output = vtkImageData::GetData(outputVector);
+  FrameSettings frame{ this->CageAcceleration, this->Width, this->Height, {} };
   for (int c = 0; c < 3; ++c)
   {
-    functor.Background[c] =
+    frame.Background[c] =
       static_cast<std::uint8_t>(std::clamp(std::lround(255.0 * this->Background[c]), 0L, 255L));
   }
-  AllocateImage(vtkImageData::GetData(outputVector), this->Width, this->Height, functor);
-  vtkSMPTools::For(0, this->Height, functor);
+  if (!plane.Empty())
+  {
+    const lfd::TwoPlaneSampler twoPlane{
+      &plane, cameras.data(), sampler.Radiance, sampler.Labels, this->FocalDepth, this->Aperture
+    };
+    RenderFrame(lfd::TwoPlaneLookup{ twoPlane, eye.Forward() }, cage, settings, frame, output);
+  }
+  else
+  {
+    RenderFrame(lfd::SamplerLookup{ sampler, this->WidenedSearch, eye.Forward() },
+      cage,
+      settings,
+      frame,
+      output);
+  }
   return 1;
 }
 
@@ -575,6 +625,8 @@ void vtkLightFieldRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Width: " << this->Width << "\n";
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
+  os << indent << "FocalDepth: " << this->FocalDepth << "\n";
+  os << indent << "Aperture: " << this->Aperture << "\n";
   os << indent << "Background: " << this->Background[0] << " " << this->Background[1] << " "
      << this->Background[2] << "\n";
   os << indent << "UseLabels: " << this->UseLabels << "\n";

@@ -1,6 +1,6 @@
 /**
  * @class   vtkLightFieldRenderer
- * @brief   renders a new view of a cylindrical light field on the CPU
+ * @brief   renders a new view of a cylindrical or two-plane light field on the CPU
  *
  * vtkLightFieldRenderer takes a vtkLightField on its input and produces the
  * image a pinhole camera would see: one ray per pixel, each ray looked up in
@@ -9,6 +9,15 @@
  * lfdCylinderSampling.h): the two views around the ray's azimuth in the one
  * or two rows around its height, the ray's focal point projected through each
  * view's real calibration, 16 rays interpolated quadrilinearly.
+ *
+ * When the rig is a two-plane one (vtkCameraRig::IsTwoPlane(): a grid of
+ * cameras on a plane, parallel optical axes), rays are looked up by
+ * two-plane sampling instead (Levoy and Hanrahan 1996, lfdTwoPlaneSampling.h):
+ * the cameras around the point where the ray crosses the camera plane, its
+ * point on a focal plane FocalDepth in front of that plane, weighted over an
+ * Aperture (refocusing and synthetic aperture). Everything else (labels,
+ * cages, tessellation) is the same RENDER_VIEW; the widened search is the
+ * ring's only.
  *
  * When the light field has a `Label` pass the colour of a ray is the mean of
  * the samples that carry the winning label only (labels are never averaged),
@@ -104,6 +113,32 @@ public:
    */
   vtkSetMacro(FocalDistance, double);
   vtkGetMacro(FocalDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Two-plane light fields only (see above): the depth of the focal plane
+   * in front of the camera plane, world units along the cameras' optical
+   * axis; 0 (default) puts it at infinity, where views that share one K
+   * have zero disparity (an imported Stanford-style grid is rectified so).
+   * Points at the focal depth are sharp; a point at depth z spreads over
+   * f |du| |1/z - 1/FocalDepth| pixels for the cameras du apart.
+   */
+  vtkSetClampMacro(FocalDepth, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(FocalDepth, double);
+  ///@}
+
+  ///@{
+  /**
+   * Two-plane light fields only: the synthetic aperture, a half-width in
+   * world units on the camera plane. Every camera closer than it along both
+   * axes of the grid contributes, weighted by a tent (1 - |du|/a)(1 - |dv|/a);
+   * below the grid spacing (default 0) the 4 nearest cameras are blended
+   * bilinearly (Levoy and Hanrahan's quadrilinear interpolation). A wider
+   * aperture blurs whatever lies off the focal plane (lfdTwoPlaneSampling.h).
+   */
+  vtkSetClampMacro(Aperture, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Aperture, double);
   ///@}
 
   ///@{
@@ -241,6 +276,8 @@ protected:
   int Width = 512;
   int Height = 512;
   double FocalDistance = 0.0;
+  double FocalDepth = 0.0;
+  double Aperture = 0.0;
   double Background[3] = { 0.0, 0.0, 0.0 };
   bool UseLabels = true;
   int Subdivision = 1;
