@@ -10,7 +10,11 @@
  * entry and exit points) and looked up in the light field; the first
  * interval whose looked-up label is its box's label gives the ray its colour
  * (DESIGN.md section 4.3). That is how occlusion between parts comes out
- * right without any geometry. A box that did not move warps a ray onto
+ * right without any geometry. Silhouettes of moved parts are anti-aliased
+ * (RenderViewSettings::AntiAliasing): each interval is as opaque as the
+ * share of its samples that carry its box's label, composited front to
+ * back, while the label and depth still come from the first match. A box
+ * that did not move warps a ray onto
  * itself: its intervals are looked up along the view ray itself, once per
  * ray, so a cage at rest renders exactly the undeformed light field.
  *

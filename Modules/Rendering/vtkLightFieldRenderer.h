@@ -34,6 +34,9 @@
  * `Label` (uint8, the winning label; 0 also where no view sees the ray) and
  * `Depth` (float, camera z of the seen point, approximate: the middle of the
  * accepted segment inside its box, or the focal point; 0 on background).
+ * With AntiAliasing (default) the silhouettes of moved parts are soft in
+ * `Radiance`: a pixel next to one may show part of the object over
+ * Background while its `Label` is 0.
  * Rendering runs in parallel over image rows with vtkSMPTools.
  *
  * @sa vtkLightField vtkCameraRig vtkLeaveOneOutEvaluator
