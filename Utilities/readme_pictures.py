@@ -61,21 +61,10 @@ def figure_twist():
     camera = t.side_camera(lf.GetRig(), azimuth=0.2, angle=26.0)
     twist = t.pose(parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 45.0).GetOutput()
     panels = []
-    for name, subdivision, anti_aliasing in (("k = 1, hard edges", 1, False),
-                                             ("auto, anti-aliased", 0, True)):
-        ev = lfd.vtkGroundTruthEvaluator()
-        ev.SetInputData(lf)
-        ev.SetMeshConnection(source.GetOutputPort())
-        ev.SetTextureConnection(source.GetOutputPort(1))
-        ev.SetCageData(twist)
-        ev.SetCamera(camera)
-        ev.SetSubdivision(subdivision)
-        ev.SetAntiAliasing(anti_aliasing)
-        ev.SetWidth(SIZE)
-        ev.SetHeight(SIZE)
-        ev.Update()
-        print(f"figure twist 45, {name}: PSNR {ev.GetPSNR():.2f} dB, SSIM {ev.GetSSIM():.3f}, "
-              f"IoU {ev.GetIoU():.3f}")
+    for name, subdivision, anti_aliasing in (("twist k=1 hard", 1, False),
+                                             ("twist auto aa", 0, True)):
+        ev = t.evaluate(name, source, lf, twist, camera, subdivision, SIZE,
+                        anti_aliasing=anti_aliasing)
         if not panels:
             panels.append(t.image_array(ev.GetOutput(1)))
         panels.append(t.image_array(ev.GetOutput(0)))

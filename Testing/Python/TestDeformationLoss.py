@@ -54,19 +54,9 @@ def regions(ev):
 
 
 def evaluate(source, lf, cage, camera, subdivision=1, anti_aliasing=False, ambient=0.1):
-    ev = lfd.vtkGroundTruthEvaluator()
-    ev.SetInputData(lf)
-    ev.SetMeshConnection(source.GetOutputPort())
-    ev.SetTextureConnection(source.GetOutputPort(1))
-    ev.SetCageData(cage)
-    ev.SetCamera(camera)
-    ev.SetSubdivision(subdivision)
-    ev.SetAntiAliasing(anti_aliasing)
-    ev.SetAmbient(ambient)
-    ev.SetWidth(SIZE)
-    ev.SetHeight(SIZE)
-    ev.Update()
-    return regions(ev)
+    return regions(t.evaluate(f"k={subdivision} aa={anti_aliasing:d} ambient={ambient}", source,
+                              lf, cage, camera, subdivision, SIZE, anti_aliasing=anti_aliasing,
+                              ambient=ambient))
 
 
 def automatic_k(lf, cage, camera):
