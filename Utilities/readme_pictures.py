@@ -15,6 +15,7 @@ Run from the build directory under xvfb-run, with the package and the lfd
 tool of the build:
   PYTHONPATH=lib/python3/dist-packages LFD_EXECUTABLE=bin/lfd \\
     xvfb-run -a /usr/bin/python3 ../Utilities/readme_pictures.py [TEMPLERING_DIR]
+(TEMPLERING_DIR: the folder of templeR_par.txt; default: $LFD_TEMPLERING_DIR)
 """
 
 import os
