@@ -10,7 +10,11 @@
  * entry and exit points) and looked up in the light field; the first
  * interval whose looked-up label is its box's label gives the ray its colour
  * (DESIGN.md section 4.3). That is how occlusion between parts comes out
- * right without any geometry. A box that did not move warps a ray onto
+ * right without any geometry. Silhouettes of moved parts are anti-aliased
+ * (RenderViewSettings::AntiAliasing): each interval is as opaque as the
+ * share of its samples that carry its box's label, composited front to
+ * back, while the label and depth still come from the first match. A box
+ * that did not move warps a ray onto
  * itself: its intervals are looked up along the view ray itself, once per
  * ray, so a cage at rest renders exactly the undeformed light field.
  *
@@ -28,7 +32,21 @@
  *   bool Widen(const glm::dvec3& a, const glm::dvec3& b, int label, glm::dvec3& color) const;
  *     the widened search along the rest-space segment [a, b] for `label`;
  *   double FocalDepth(const glm::dvec3& o, const glm::dvec3& d) const;
- *     the depth reported for a ray that no box claims.
+ *     the depth reported for a ray that no box claims;
+ *   double FocalParameter(const glm::dvec3& o, const glm::dvec3& d) const;
+ *     the s of the point o + s d of the rest-space ray that Gather samples
+ *     the cameras at (its focal surface).
+ *
+ * A lookup sees the first surface along the whole line of a warped ray, not
+ * only along its interval, and it samples the cameras at the line's focal
+ * point. In a tessellated box (lfdTessellation.h) the intervals in front of
+ * the part warp to lines that are tangent to the curved rest image of the
+ * view ray far before the focal point, and stray from it there; the
+ * interval that holds the focal point follows the curve where the cameras
+ * are sampled. So a matching interval of a moved box whose focal point lies
+ * beyond its exit is held back while the next intervals of the same part
+ * are tried: the first whose focal point is not beyond its exit gives the
+ * pixel, else the held one (DeferredMatch).
  *
  * Segments have no fixed cap: they go to a caller-owned vector that keeps
  * its capacity from ray to ray (one per thread), so a ray allocates nothing
@@ -477,11 +495,17 @@ private:
 struct ViewSample
 {
   int Label = -1; ///< the part (0: background or a part without a box; -1: no camera sees the ray)
-  glm::dvec3 Color{ 0.0 }; ///< meaningful when Label >= 0
+  /// Meaningful when Label >= 0 or Coverage > 0 (then background is blended in).
+  glm::dvec3 Color{ 0.0 };
   /// The ray parameter t of the seen point, approximate: the middle of the
   /// accepted interval, or the lookup's FocalDepth when no box claims the
   /// ray; 0 for a ray that shows background through a fully owned light field.
   double Depth = 0.0;
+  /// The part of the pixel that moved parts cover by anti-aliasing (see
+  /// RenderViewSettings::AntiAliasing) where Label does not say so: > 0 on a
+  /// ray whose Label is 0 or -1 that still shows a silhouette's soft edge in
+  /// Color. 0 everywhere without a moved box.
+  double Coverage = 0.0;
 };
 
 /// How RenderView treats the light field's parts.
@@ -497,6 +521,20 @@ struct RenderViewSettings
   bool AllOwned = false;
   /// The labels that have a box (see OwnedLabels).
   std::array<bool, 256> Owned{};
+  /**
+   * Anti-aliased silhouettes of moved parts: the interval of a moved box is
+   * as opaque as the share of its warped ray's samples (their interpolation
+   * weights, up to 16 rays around it) that carry the box's label, and the
+   * walk composites the intervals front to back by that coverage, so a
+   * silhouette pixel blends the part with what lies behind it (another
+   * part, the undeformed light field or Background) instead of a staircase
+   * of whole pixels. Label and Depth still follow the vote (the first
+   * interval whose vote is its box's label). Boxes at rest keep the vote's
+   * all-or-nothing: a cage at rest renders exactly the undeformed light field.
+   */
+  bool AntiAliasing = true;
+  /// The colour of background rays (0..255), blended behind soft edges.
+  glm::dvec3 Background{ 0.0 };
 };
 
 /// The labels of `boxes`, as RenderViewSettings::Owned.
@@ -534,6 +572,12 @@ struct SamplerLookup
   {
     return glm::dot(
       FocalPoint(this->Sampler.Layout->Cyl, o, d, this->Sampler.FocalDistance) - o, this->Forward);
+  }
+  double FocalParameter(const glm::dvec3& o, const glm::dvec3& d) const
+  {
+    return glm::dot(
+             FocalPoint(this->Sampler.Layout->Cyl, o, d, this->Sampler.FocalDistance) - o, d) /
+      glm::dot(d, d);
   }
 };
 
@@ -577,23 +621,133 @@ struct ViewRayLook
   }
 };
 
-/// The first interval, front to back (`next(view)` hands them out, nullptr
-/// after the last), whose warped ray shows its box's label (Sec. 6);
-/// records what each interval showed in BoxSegment::Seen.
+/**
+ * How much of the pixel of a ray whose samples are `samples` shows `label`:
+ * the share s of the samples' weight that carries it, steepened about the
+ * vote's threshold, clamp(0.5 + 2 (s - 0.5), 0, 1). One camera's bilinear
+ * weights ramp s over one source pixel across a silhouette, as a pixel's
+ * coverage does; where the ray's cameras disagree about the silhouette
+ * (parallax off the focal surface), the mix of their ramps is wider, and
+ * the steepening keeps the faint side of it (s <= 0.25: one camera of two,
+ * weighted least, sees the part) from ghosting.
+ */
+inline double LabelCoverage(const RaySamples& samples, int label)
+{
+  double total = 0.0, covered = 0.0;
+  for (int i = 0; i < samples.Count; ++i)
+  {
+    total += samples.Samples[i].Weight;
+    covered += samples.Samples[i].Label == label ? samples.Samples[i].Weight : 0.0;
+  }
+  if (!(total > 0.0))
+  {
+    return 0.0;
+  }
+  if (covered == total)
+  {
+    return 1.0;
+  }
+  return std::clamp(2.0 * (covered / total) - 0.5, 0.0, 1.0);
+}
+
+/**
+ * Front-to-back compositing of a ray's intervals by label coverage: Color
+ * holds what is in front, Transmittance what is left for what lies behind.
+ */
+struct CoverageComposite
+{
+  glm::dvec3 Color{ 0.0 };
+  double Transmittance = 1.0;
+
+  /// What lies behind under less than a quarter of a grey level of 255 is
+  /// not looked up.
+  static constexpr double Opaque = 1.0 / 1024.0;
+
+  void Add(double alpha, const glm::dvec3& color)
+  {
+    this->Color += (this->Transmittance * alpha) * color;
+    this->Transmittance *= 1.0 - alpha;
+  }
+  /// Color with `behind` filling the rest (exactly `behind` when nothing was added).
+  glm::dvec3 Over(const glm::dvec3& behind) const
+  {
+    return this->Color + this->Transmittance * behind;
+  }
+};
+
+/**
+ * A matching interval held back (see the file's description): its part,
+ * coverage, colour and depth.
+ */
+struct DeferredMatch
+{
+  int Label = -1; ///< -1: none held
+  double Alpha = 0.0;
+  glm::dvec3 Color{ 0.0 };
+  double Depth = 0.0;
+};
+
+/// Composites `match` (a matching interval) and makes it the ray's label and depth.
+inline void AcceptMatch(const DeferredMatch& match,
+  CoverageComposite& composite,
+  ViewSample& result,
+  bool& matched)
+{
+  composite.Add(match.Alpha, match.Color);
+  if (!matched)
+  {
+    matched = true;
+    result.Label = match.Label;
+    result.Depth = match.Depth;
+  }
+}
+
+/**
+ * The intervals, front to back (`next(view)` hands them out, nullptr after
+ * the last), composited by label coverage (RenderViewSettings::AntiAliasing)
+ * into `composite`; the first whose warped ray shows its box's label
+ * (Sec. 6; an interval of a moved box whose focal point lies beyond its
+ * exit is held back for the next ones of its part, see DeferredMatch) gives
+ * `result` its label and depth. Without anti-aliasing (and in boxes at
+ * rest) an interval covers all or nothing, so the first match gives the
+ * whole colour. Records what each interval showed in BoxSegment::Seen.
+ * True when an interval matched.
+ */
 template<typename Lookup, typename Next>
 bool ShadeSegments(const std::vector<RenderBox>& boxes,
   Next&& next,
   const Lookup& lookup,
+  const RenderViewSettings& settings,
   ViewRayLook<Lookup>& view,
-  ViewSample& result)
+  ViewSample& result,
+  CoverageComposite& composite)
 {
   RaySamples samples;
-  while (BoxSegment* handed = next(view))
+  bool matched = false;
+  DeferredMatch held;
+  // Past the match, only what still shows through is looked up.
+  while (held.Label >= 0 || !matched || composite.Transmittance > CoverageComposite::Opaque)
   {
+    BoxSegment* handed = next(view);
+    if (!handed)
+    {
+      break;
+    }
     BoxSegment& entry = *handed;
     const RenderBox& box = boxes[entry.Box];
+    if (held.Label >= 0 && box.Label != held.Label)
+    {
+      // Another part: the held interval of the part in front gives the pixel.
+      AcceptMatch(held, composite, result, matched);
+      held.Label = -1;
+      if (composite.Transmittance <= CoverageComposite::Opaque)
+      {
+        break;
+      }
+    }
     const WarpedSegment& segment = entry.Segment;
     const RaySamples* seenSamples = &samples;
+    const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
     if (!box.Moved)
     {
       entry.Seen = view.Look();
@@ -601,7 +755,6 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
     }
     else
     {
-      const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
       if (glm::dot(direction, direction) <= 0.0 ||
         !lookup.Gather(segment.RestEnter, direction, samples))
       {
@@ -609,15 +762,35 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
       }
       entry.Seen = VoteLabel(samples);
     }
-    if (entry.Seen == box.Label)
+    const bool match = entry.Seen == box.Label;
+    const double alpha = box.Moved && settings.AntiAliasing ? LabelCoverage(*seenSamples, box.Label)
+                                                            : (match ? 1.0 : 0.0);
+    if (alpha <= 0.0)
     {
-      BlendLabel(*seenSamples, box.Label, result.Color);
-      result.Label = box.Label;
-      result.Depth = 0.5 * (segment.TEnter + segment.TExit);
-      return true;
+      continue;
     }
+    DeferredMatch candidate{
+      box.Label, alpha, glm::dvec3(0.0), 0.5 * (segment.TEnter + segment.TExit)
+    };
+    BlendLabel(*seenSamples, box.Label, candidate.Color);
+    if (!match)
+    {
+      composite.Add(alpha, candidate.Color);
+      continue;
+    }
+    if (box.Moved && lookup.FocalParameter(segment.RestEnter, direction) > 1.0)
+    {
+      held = candidate;
+      continue;
+    }
+    held.Label = -1; // this interval of the held part holds its focal point
+    AcceptMatch(candidate, composite, result, matched);
   }
-  return false;
+  if (held.Label >= 0)
+  {
+    AcceptMatch(held, composite, result, matched);
+  }
+  return matched;
 }
 
 /// Sec. 8: where the nearby cameras saw another part in a moved box, that
@@ -680,6 +853,27 @@ ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& s
 
 namespace detail
 {
+/// The colour a ray shows behind soft edges: Background where `seen` is
+/// background (with labels) or nothing.
+inline glm::dvec3 ShownColor(const ViewSample& seen, const RenderViewSettings& settings)
+{
+  return seen.Label < 0 || (settings.UseLabels && seen.Label == 0) ? settings.Background
+                                                                   : seen.Color;
+}
+
+/// `seen` (what lies behind) under the intervals composited in front of it.
+inline ViewSample Composite(const CoverageComposite& front,
+  ViewSample seen,
+  const RenderViewSettings& settings)
+{
+  if (front.Transmittance < 1.0)
+  {
+    seen.Color = front.Over(ShownColor(seen, settings));
+    seen.Coverage = 1.0 - front.Transmittance;
+  }
+  return seen;
+}
+
 /**
  * RENDER_VIEW (Sec. 6) of the ray o + t d whose intervals `next(view)`
  * hands out front to back into `segments` (`any`: the ray may have some).
@@ -695,24 +889,40 @@ ViewSample ShadeView(const glm::dvec3& o,
   const std::vector<BoxSegment>& segments)
 {
   ViewRayLook<Lookup> view{ lookup, o, d };
+  CoverageComposite front;
   if (settings.UseLabels && !boxes.empty())
   {
     ViewSample result;
     // (Most rays of a frame miss every box: they skip the segment walk. The
     // widened search runs after the walk handed every interval out.)
-    if (any &&
-      (ShadeSegments(boxes, next, lookup, view, result) ||
-        (settings.WidenedSearch && WidenSegments(boxes, segments, lookup, result))))
+    if (any && ShadeSegments(boxes, next, lookup, settings, view, result, front))
     {
+      if (front.Transmittance <= CoverageComposite::Opaque)
+      {
+        result.Color = front.Color;
+        return result;
+      }
+      // A soft edge: what no box owns shows behind it.
+      ViewSample behind;
+      behind.Label = 0;
+      if (!settings.AllOwned)
+      {
+        behind = LookUndeformed(view, settings);
+      }
+      result.Color = front.Over(ShownColor(behind, settings));
       return result;
+    }
+    if (any && settings.WidenedSearch && WidenSegments(boxes, segments, lookup, result))
+    {
+      return Composite(front, result, settings);
     }
     if (settings.AllOwned)
     {
       result.Label = 0;
-      return result;
+      return Composite(front, result, settings);
     }
   }
-  return LookUndeformed(view, settings);
+  return Composite(front, LookUndeformed(view, settings), settings);
 }
 } // namespace detail
 

@@ -89,44 +89,90 @@ inline Hexahedron SubBox(const Hexahedron& box, int k, const glm::ivec3& cell)
 }
 
 /**
- * Distance of the box's map from the affine map through corners 0, 1, 3 and
- * 4, at the face centres and the centre: the second-order part of the
- * trilinear map, which bends the true inverse image of a straight ray.
+ * How far the straight warped rays of the box (rest, deformed) split `k`
+ * times per axis stray from the exact, curved rest-space images of view
+ * rays (lfdRayWarp.h warps a segment through the rest images of its entry
+ * and exit points only). Probed on the chords of every deformed sub-box
+ * between opposite corners (its 4 body and 12 face diagonals: view rays
+ * through the sub-box in every direction): the distance, in rest space,
+ * between the exact rest image of the chord's midpoint (the deformed
+ * sub-box's map inverted by Newton's method) and the midpoint of the rest
+ * chord, where the warped ray passes. Zero for a box at rest or moved by an
+ * affine map; it falls as 1 / k^2.
  */
-inline double Nonlinearity(const Hexahedron& box)
+inline double WarpDeviation(const Hexahedron& rest, const Hexahedron& deformed, int k)
 {
-  const glm::dvec3& c0 = box.Corners[0];
-  const glm::dmat3 affine(box.Corners[1] - c0, box.Corners[3] - c0, box.Corners[4] - c0);
-  const glm::dvec3 probes[7] = { { 0.5, 0.5, 0.5 },
-    { 0.0, 0.5, 0.5 },
-    { 1.0, 0.5, 0.5 },
-    { 0.5, 0.0, 0.5 },
-    { 0.5, 1.0, 0.5 },
-    { 0.5, 0.5, 0.0 },
-    { 0.5, 0.5, 1.0 } };
+  // The opposite corners (VTK order) of the 4 body and 12 face diagonals.
+  static constexpr int Chords[16][2] = { { 0, 6 },
+    { 1, 7 },
+    { 2, 4 },
+    { 3, 5 },
+    { 0, 2 },
+    { 1, 3 },
+    { 4, 6 },
+    { 5, 7 },
+    { 0, 5 },
+    { 1, 4 },
+    { 3, 6 },
+    { 2, 7 },
+    { 0, 7 },
+    { 3, 4 },
+    { 1, 6 },
+    { 2, 5 } };
   double deviation = 0.0;
-  for (const glm::dvec3& uvw : probes)
-  {
-    deviation = std::max(deviation, glm::distance(TrilinearMap(box, uvw), c0 + affine * uvw));
-  }
+  ForEachSubBox(k,
+    [&](const glm::ivec3& cell)
+    {
+      const Hexahedron subRest = SubBox(rest, k, cell);
+      const Hexahedron subDeformed = SubBox(deformed, k, cell);
+      for (const auto& chord : Chords)
+      {
+        const glm::dvec3 middle =
+          0.5 * (subDeformed.Corners[chord[0]] + subDeformed.Corners[chord[1]]);
+        // Start from the parametric midpoint of the chord's corners.
+        glm::dvec3 uvw = 0.5 *
+          (glm::dvec3(HexCorner[chord[0]][0], HexCorner[chord[0]][1], HexCorner[chord[0]][2]) +
+            glm::dvec3(HexCorner[chord[1]][0], HexCorner[chord[1]][1], HexCorner[chord[1]][2]));
+        if (!InvertTrilinear(subDeformed, middle, uvw))
+        {
+          // No inverse (a degenerate sub-box): as bad as it gets.
+          deviation = std::max(deviation, BoxSize(subRest));
+          continue;
+        }
+        const glm::dvec3 chordMiddle =
+          0.5 * (subRest.Corners[chord[0]] + subRest.Corners[chord[1]]);
+        deviation = std::max(deviation, glm::distance(TrilinearMap(subRest, uvw), chordMiddle));
+      }
+    });
   return deviation;
 }
 
 /// Largest k the automatic rule picks.
 constexpr int MaximumAutomaticSubdivision = 8;
 
-/// The automatic k of a box (render.subdivision "auto"): the smallest that
-/// brings the nonlinearity of its rest and deformed maps under `tolerance` x
-/// the deformed box's size (it falls as 1 / k^2), up to
-/// MaximumAutomaticSubdivision.
+/**
+ * The automatic k of a box (render.subdivision "auto"): the smallest whose
+ * measured WarpDeviation is at most `tolerance` (a length in rest space;
+ * the renderer passes a pixel tolerance times the size of a pixel at the
+ * box), up to MaximumAutomaticSubdivision. The deviation is measured at
+ * each k tried; the next k tried is the one the 1 / k^2 law predicts from
+ * the last measurement (at least one more), so a few measurements suffice.
+ */
 inline int AutomaticSubdivision(const Hexahedron& rest,
   const Hexahedron& deformed,
   double tolerance)
 {
-  const double error =
-    std::max(Nonlinearity(rest), Nonlinearity(deformed)) / std::max(BoxSize(deformed), 1e-300);
-  return std::clamp(
-    static_cast<int>(std::ceil(std::sqrt(error / tolerance))), 1, MaximumAutomaticSubdivision);
+  int k = 1;
+  for (;;)
+  {
+    const double deviation = WarpDeviation(rest, deformed, k);
+    if (deviation <= tolerance || k == MaximumAutomaticSubdivision)
+    {
+      return k;
+    }
+    const double predicted = std::ceil(k * std::sqrt(deviation / std::max(tolerance, 1e-300)));
+    k = static_cast<int>(std::clamp(predicted, k + 1.0, double(MaximumAutomaticSubdivision)));
+  }
 }
 
 /// Sub-boxes of a cage whose box b is split into ks[b]^3.

@@ -45,9 +45,11 @@
 
 #include <glm/glm.hpp>
 
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -411,6 +413,14 @@ struct TwoPlaneLookup
   {
     double s = 0.0;
     return this->Sampler.FocalParameter(o, d, s) ? s * glm::dot(d, this->Forward) : 0.0;
+  }
+
+  /// The s of the ray's point on the focal plane (RENDER_VIEW's contract);
+  /// focused at infinity, +infinity.
+  double FocalParameter(const glm::dvec3& o, const glm::dvec3& d) const
+  {
+    double s = 0.0;
+    return this->Sampler.FocalParameter(o, d, s) ? s : std::numeric_limits<double>::infinity();
   }
 };
 

@@ -187,6 +187,7 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
   renderer->SetSubdivision(this->Subdivision);
   renderer->SetWidenedSearch(this->WidenedSearch);
   renderer->SetObjectThreshold(this->ObjectThreshold);
+  renderer->SetAntiAliasing(this->AntiAliasing);
   // The inner algorithms' errors are said once, as this evaluator's.
   vtkNew<vtkLightFieldErrorObserver> errors;
   errors->Observe(renderer);
@@ -235,6 +236,7 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
   }
   capture->SetRig(rig);
   capture->CaptureDepthOff();
+  capture->SetAmbient(this->Ambient);
   errors->Observe(capture);
   capture->Update();
   vtkLightField* truth = capture->GetOutput();
@@ -291,6 +293,8 @@ void vtkGroundTruthEvaluator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Subdivision: " << this->Subdivision << "\n";
   os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";
   os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
+  os << indent << "AntiAliasing: " << (this->AntiAliasing ? "On" : "Off") << "\n";
+  os << indent << "Ambient: " << this->Ambient << "\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "PSNR: " << this->PSNR << "\n";
   os << indent << "SSIM: " << this->SSIM << "\n";

@@ -70,8 +70,8 @@ public:
 
   ///@{
   /**
-   * Focal distance, box subdivision, widened camera search and object
-   * threshold of the light-field render (see vtkLightFieldRenderer, which
+   * Focal distance, box subdivision, widened camera search, object
+   * threshold and anti-aliasing of the light-field render (see vtkLightFieldRenderer, which
    * refuses a subdivision over its budget; subdivision 0 = automatic,
    * widened search 0 = off).
    */
@@ -83,6 +83,20 @@ public:
   vtkGetMacro(WidenedSearch, int);
   vtkSetClampMacro(ObjectThreshold, double, 0.0, 255.0);
   vtkGetMacro(ObjectThreshold, double);
+  vtkSetMacro(AntiAliasing, bool);
+  vtkGetMacro(AntiAliasing, bool);
+  vtkBooleanMacro(AntiAliasing, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Ambient coefficient of the ground truth's coaxial light
+   * (vtkLightFieldCapture::SetAmbient): set it to the light field's own
+   * (default 0.1, the capture's default). 1 renders the mesh unlit, which
+   * with a light field captured unlit takes lighting out of the comparison.
+   */
+  vtkSetClampMacro(Ambient, double, 0.0, 1.0);
+  vtkGetMacro(Ambient, double);
   ///@}
 
   ///@{
@@ -136,6 +150,8 @@ protected:
   int Subdivision = 1;
   int WidenedSearch = 2;
   double ObjectThreshold = 10.0;
+  bool AntiAliasing = true;
+  double Ambient = 0.1;
   double MaximumEdgeLength = 0.0;
   double PSNR = 0.0;
   double SSIM = 0.0;

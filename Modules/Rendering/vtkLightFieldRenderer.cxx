@@ -71,14 +71,33 @@ bool ReadBoxes(vtkObject* self, vtkDeformationCage* cage, std::vector<lfd::Rende
 }
 
 /**
+ * The length that `pixels` pixels of `eye`'s image span at the deformed box
+ * `box`: at its nearest corner, or at the box's own size when the eye is
+ * nearer than that (an eye inside a box would ask for no error at all).
+ */
+double PixelLength(const lfd::PinholeCamera& eye, const lfd::Hexahedron& box, double pixels)
+{
+  double nearest = lfd::BoxSize(box);
+  double distance = std::numeric_limits<double>::infinity();
+  for (const glm::dvec3& corner : box.Corners)
+  {
+    distance = std::min(distance, glm::distance(corner, eye.Center()));
+  }
+  const double focal = std::max(eye.K[0][0], eye.K[1][1]);
+  return pixels * std::max(distance, nearest) / focal;
+}
+
+/**
  * The k of every box: `subdivision`, or with 0 (auto) lfd::AutomaticSubdivision
- * lowered to fit lfd::MaximumSubBoxes. False (with an error on `self`) when
- * the tessellation is over that budget.
+ * for a warp deviation of `tolerance` pixels of `eye` at the box, lowered to
+ * fit lfd::MaximumSubBoxes. False (with an error on `self`) when the
+ * tessellation is over that budget.
  */
 bool ChooseSubdivisions(vtkObject* self,
   const std::vector<lfd::RenderBox>& boxes,
   int subdivision,
   double tolerance,
+  const lfd::PinholeCamera& eye,
   std::vector<int>& ks)
 {
   ks.assign(boxes.size(), subdivision);
@@ -86,7 +105,8 @@ bool ChooseSubdivisions(vtkObject* self,
   {
     for (std::size_t b = 0; b < boxes.size(); ++b)
     {
-      ks[b] = lfd::AutomaticSubdivision(boxes[b].Rest, boxes[b].Deformed, tolerance);
+      ks[b] = lfd::AutomaticSubdivision(
+        boxes[b].Rest, boxes[b].Deformed, PixelLength(eye, boxes[b].Deformed, tolerance));
     }
     lfd::FitSubdivisionBudget(ks, lfd::MaximumSubBoxes);
   }
@@ -106,7 +126,8 @@ bool ChooseSubdivisions(vtkObject* self,
 
 /**
  * The boxes of a cage grid, each tessellated into subdivision^3 sub-boxes
- * (subdivision 0: chosen per box, see ChooseSubdivisions). False (with an
+ * (subdivision 0: chosen per box, see ChooseSubdivisions; the k of each box
+ * into `ks`). False (with an
  * error on `self`) when the subdivision is out of range, the grid is
  * malformed or the tessellation is over the budget of lfdLimits.h.
  */
@@ -114,6 +135,8 @@ bool CollectBoxes(vtkObject* self,
   vtkDeformationCage* cage,
   int subdivision,
   double tolerance,
+  const lfd::PinholeCamera& eye,
+  std::vector<int>& ks,
   std::vector<lfd::RenderBox>& boxes)
 {
   if (subdivision < 0 || subdivision > lfd::MaximumSubdivision)
@@ -126,8 +149,8 @@ bool CollectBoxes(vtkObject* self,
     return false;
   }
   std::vector<lfd::RenderBox> whole;
-  std::vector<int> ks;
-  if (!ReadBoxes(self, cage, whole) || !ChooseSubdivisions(self, whole, subdivision, tolerance, ks))
+  if (!ReadBoxes(self, cage, whole) ||
+    !ChooseSubdivisions(self, whole, subdivision, tolerance, eye, ks))
   {
     return false;
   }
@@ -177,13 +200,13 @@ struct RenderRows
               this->Settings,
               scratch.Segments);
         this->Labels[id] = static_cast<std::uint8_t>(std::max(seen.Label, 0));
-        if (seen.Label < 0 || (this->Settings.UseLabels && seen.Label == 0))
+        const bool background = seen.Label < 0 || (this->Settings.UseLabels && seen.Label == 0);
+        this->Depths[id] = background ? 0.0f : static_cast<float>(seen.Depth);
+        if (background && seen.Coverage == 0.0)
         {
           std::copy(this->Background, this->Background + 3, rgb);
-          this->Depths[id] = 0.0f;
           continue;
         }
-        this->Depths[id] = static_cast<float>(seen.Depth);
         for (int c = 0; c < 3; ++c)
         {
           rgb[c] = static_cast<std::uint8_t>(std::clamp(std::lround(seen.Color[c]), 0L, 255L));
@@ -461,12 +484,23 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     vtkErrorMacro("Every view of the two-plane grid is excluded.");
     return 0;
   }
+  double K[9], R[9], t[3];
+  this->GetEyePinhole(K, R, t);
+  const lfd::PinholeCamera eye = lfd::PinholeCamera::FromRowMajor(K, R, t);
   std::vector<lfd::RenderBox> boxes;
+  this->LastSubdivisions.clear();
   vtkLightField* lightField = input; // the input, or its one-part split
   if (vtkUnstructuredGrid* grid = vtkUnstructuredGrid::GetData(inputVector[1]))
   {
     vtkSmartPointer<vtkDeformationCage> cage = ReadCage(this, grid);
-    if (!cage || !CollectBoxes(this, cage, this->Subdivision, this->SubdivisionTolerance, boxes))
+    if (!cage ||
+      !CollectBoxes(this,
+        cage,
+        this->Subdivision,
+        this->SubdivisionTolerance,
+        eye,
+        this->LastSubdivisions,
+        boxes))
     {
       return 0;
     }
@@ -494,14 +528,12 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   }
   sampler.FocalDistance = this->FocalDistance;
   settings.WidenedSearch = this->WidenedSearch > 0;
+  settings.AntiAliasing = this->AntiAliasing;
   settings.Owned = lfd::OwnedLabels(boxes);
   // With a cage, a ray that no box claims shows the parts without a box;
   // when every part of the light field has one, it shows background.
   settings.AllOwned = settings.UseLabels && !boxes.empty() && OwnsEveryPart(settings, lightField);
 
-  double K[9], R[9], t[3];
-  this->GetEyePinhole(K, R, t);
-  const lfd::PinholeCamera eye = lfd::PinholeCamera::FromRowMajor(K, R, t);
   lfd::PlaceEye(boxes, eye.Center());
   lfd::FrameCage cage;
   cage.Build(boxes,
@@ -516,6 +548,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   {
     frame.Background[c] =
       static_cast<std::uint8_t>(std::clamp(std::lround(255.0 * this->Background[c]), 0L, 255L));
+    settings.Background[c] = frame.Background[c];
   }
   if (!plane.Empty())
   {
@@ -533,6 +566,22 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
       output);
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldRenderer::GetLastSubdivision(int box) const
+{
+  return box >= 0 && box < static_cast<int>(this->LastSubdivisions.size())
+    ? this->LastSubdivisions[box]
+    : 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldRenderer::GetLastMaximumSubdivision() const
+{
+  return this->LastSubdivisions.empty()
+    ? 0
+    : *std::max_element(this->LastSubdivisions.begin(), this->LastSubdivisions.end());
 }
 
 //------------------------------------------------------------------------------
@@ -635,6 +684,7 @@ void vtkLightFieldRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SubdivisionTolerance: " << this->SubdivisionTolerance << "\n";
   os << indent << "CageAcceleration: " << (this->CageAcceleration ? "On" : "Off") << "\n";
   os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";
+  os << indent << "AntiAliasing: " << (this->AntiAliasing ? "On" : "Off") << "\n";
   os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
   os << indent << "ExcludedViews:";
   for (int v : this->ExcludedViews)

@@ -43,6 +43,9 @@
  * `Label` (uint8, the winning label; 0 also where no view sees the ray) and
  * `Depth` (float, camera z of the seen point, approximate: the middle of the
  * accepted segment inside its box, or the focal point; 0 on background).
+ * With AntiAliasing (default) the silhouettes of moved parts are soft in
+ * `Radiance`: a pixel next to one may show part of the object over
+ * Background while its `Label` is 0.
  * Rendering runs in parallel over image rows with vtkSMPTools.
  *
  * @sa vtkLightField vtkCameraRig vtkLeaveOneOutEvaluator
@@ -166,8 +169,11 @@ public:
    * rays piecewise linear and closer to the true, curved inverse images of
    * the view rays. Subdivision k >= 1 (default 1: the paper's single straight
    * warped ray per box); 0 = automatic: per box, the smallest k (up to 8)
-   * that brings the map's nonlinearity under SubdivisionTolerance x the box
-   * size (default 0.001).
+   * whose measured warp deviation (lfd::WarpDeviation: how far the straight
+   * warped rays of the sub-boxes stray from the exact, curved rest-space
+   * images of view rays) is at most SubdivisionTolerance pixels of this
+   * camera's image at the box (default 0.5 pixel). A box at rest, or moved
+   * by an affine map, gets k = 1; a strong twist more.
    *
    * A ray tests the sub-boxes that CageAcceleration leaves it (all of them at
    * worst), so the cost is bounded (lfdLimits.h): k
@@ -178,8 +184,18 @@ public:
    */
   vtkSetMacro(Subdivision, int);
   vtkGetMacro(Subdivision, int);
-  vtkSetClampMacro(SubdivisionTolerance, double, 1e-9, 1.0);
+  vtkSetClampMacro(SubdivisionTolerance, double, 1e-6, 100.0);
   vtkGetMacro(SubdivisionTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * The k each box of the cage was split with in the last update (the
+   * automatic choice, or Subdivision), by box index (0 for an index out of
+   * range or without a cage), and the largest of them.
+   */
+  int GetLastSubdivision(int box) const;
+  int GetLastMaximumSubdivision() const;
   ///@}
 
   ///@{
@@ -216,6 +232,22 @@ public:
    */
   vtkSetClampMacro(WidenedSearch, int, 0, 64);
   vtkGetMacro(WidenedSearch, int);
+  ///@}
+
+  ///@{
+  /**
+   * Anti-aliased silhouettes of moved parts (lfd::RenderViewSettings::
+   * AntiAliasing): an interval of a moved box is as opaque as the share of
+   * its warped ray's samples that carry the box's label, and the intervals
+   * are composited front to back, so a silhouette blends the part with what
+   * lies behind it (another part, the undeformed light field, Background)
+   * over about a source pixel instead of a staircase. The Label and Depth
+   * arrays still follow the label vote. Boxes at rest are unchanged (a cage
+   * at rest renders exactly the undeformed light field). Default on.
+   */
+  vtkSetMacro(AntiAliasing, bool);
+  vtkGetMacro(AntiAliasing, bool);
+  vtkBooleanMacro(AntiAliasing, bool);
   ///@}
 
   ///@{
@@ -283,7 +315,8 @@ protected:
   int Subdivision = 1;
   bool CageAcceleration = true;
   int WidenedSearch = 2;
-  double SubdivisionTolerance = 1e-3;
+  bool AntiAliasing = true;
+  double SubdivisionTolerance = 0.5;
   double ObjectThreshold = 10.0;
   std::vector<int> ExcludedViews;
 
@@ -310,6 +343,7 @@ private:
    */
   vtkLightField* OnePart(vtkLightField* input, int label);
 
+  std::vector<int> LastSubdivisions;    // the k of each box in the last update
   vtkSmartPointer<vtkLightField> Parts; // the derived light field of OnePart()
   vtkLightField* PartsInput = nullptr;  // compared, never dereferenced
   vtkTimeStamp PartsTime;

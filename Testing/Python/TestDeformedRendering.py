@@ -16,12 +16,14 @@ import lfd
 
 SIZE = 256
 # (PSNR dB, SSIM, IoU) thresholds, just under the measured figures, with
-# the widened camera search (swim 25.55 / 0.951 / 0.986, twist 16.80 /
-# 0.747 / 0.944, bend 18.16 / 0.806 / 0.958 with the figure's 3 rows found
-# as 3; head turns: label agreement 0.944 and 0.959).
-SWIM = (25.2, 0.945, 0.983)
+# the widened camera search and anti-aliased silhouettes (swim 26.28 /
+# 0.947 / 0.986, twist 16.81 / 0.748 / 0.944, bend 18.37 / 0.809 / 0.958
+# with the figure's 3 rows found as 3; head turns: label agreement 0.944
+# and 0.959). Hard label edges gave swim 25.55 / 0.951, twist 16.80 / 0.747,
+# bend 18.16 / 0.806.
+SWIM = (26.0, 0.944, 0.983)
 TWIST = (16.5, 0.735, 0.94)
-BEND = (17.8, 0.79, 0.95)
+BEND = (18.0, 0.795, 0.95)
 OCCLUSION_AGREEMENT = 0.93
 
 
@@ -55,7 +57,9 @@ t.expect("fish swim", widened, *SWIM)
 # The widened camera search (paper Sec. 8, on by default) fills regions the
 # swim uncovers: better than the nearby cameras alone.
 nearby = t.evaluate("swim, nearby", fish, fish_lf, swim, camera, widen=0)
-t.check(widened.GetPSNR() > nearby.GetPSNR() + 0.1 and widened.GetIoU() > nearby.GetIoU(),
+# (Anti-aliased silhouettes soften the edges of the holes it fills too:
+# +0.09 dB, +0.16 with hard edges.)
+t.check(widened.GetPSNR() > nearby.GetPSNR() + 0.05 and widened.GetIoU() > nearby.GetIoU(),
         "widened camera search improves the swim (PSNR dB, IoU: widened vs nearby cameras only)",
         (round(widened.GetPSNR(), 2), round(nearby.GetPSNR(), 2), round(widened.GetIoU(), 4),
          round(nearby.GetIoU(), 4)))
@@ -101,8 +105,9 @@ twist = t.pose(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 45.0).
 t.expect("figure twist", t.evaluate("figure twist", figure, figure_lf, twist, camera), *TWIST)
 # Tessellation (beyond the paper): a 90-degree twist bends the inverse images
 # of view rays; splitting the boxes into 2^3 sub-boxes (or the automatic
-# choice) follows them better (measured: 15.38 -> 18.09 dB, SSIM 0.667 ->
-# 0.809 at k = 2; 17.28 dB automatic).
+# choice, from the measured warp deviation) follows them better (measured:
+# 15.41 -> 18.02 dB, SSIM 0.669 -> 0.805 at k = 2; 18.21 dB, SSIM 0.812
+# automatic).
 strong = t.pose(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 90.0).GetOutput()
 plain = t.evaluate("twist 90 k=1", figure, figure_lf, strong, camera, 1)
 split = t.evaluate("twist 90 k=2", figure, figure_lf, strong, camera, 2)
@@ -111,7 +116,7 @@ t.check(split.GetPSNR() > plain.GetPSNR() + 1.5, "subdivision 2 gains > 1.5 dB o
         split.GetPSNR() - plain.GetPSNR())
 t.check(split.GetSSIM() > plain.GetSSIM() + 0.05, "subdivision 2 gains > 0.05 SSIM",
         split.GetSSIM() - plain.GetSSIM())
-t.check(automatic.GetPSNR() > plain.GetPSNR() + 1.0, "automatic subdivision gains > 1 dB",
+t.check(automatic.GetPSNR() > plain.GetPSNR() + 2.5, "automatic subdivision gains > 2.5 dB",
         automatic.GetPSNR() - plain.GetPSNR())
 bend = t.pose(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.BEND, 30.0, (0, 0, 1)).GetOutput()
 t.expect("figure bend", t.evaluate("figure bend", figure, figure_lf, bend, camera), *BEND)

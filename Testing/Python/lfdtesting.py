@@ -163,9 +163,11 @@ def side_camera(rig, azimuth=0.35, angle=22.0):
     return camera
 
 
-def evaluate(name, source, lf, cage, camera, subdivision=1, size=256, widen=2):
+def evaluate(name, source, lf, cage, camera, subdivision=1, size=256, widen=2,
+             anti_aliasing=True, ambient=0.1):
     """vtkGroundTruthEvaluator of the light field deformed by `cage` against
-    the source mesh deformed by the same cage; prints the figures."""
+    the source mesh deformed by the same cage (its coaxial light's ambient
+    `ambient`: the light field's own); prints the figures."""
     ev = lfd.vtkGroundTruthEvaluator()
     ev.SetInputData(lf)
     ev.SetMeshConnection(source.GetOutputPort())
@@ -174,6 +176,8 @@ def evaluate(name, source, lf, cage, camera, subdivision=1, size=256, widen=2):
     ev.SetCamera(camera)
     ev.SetSubdivision(subdivision)
     ev.SetWidenedSearch(widen)
+    ev.SetAntiAliasing(anti_aliasing)
+    ev.SetAmbient(ambient)
     ev.SetWidth(size)
     ev.SetHeight(size)
     ev.Update()

@@ -70,6 +70,11 @@ struct SphereLookup
   {
     return -glm::dot(o, d) / glm::dot(d, d);
   }
+  /// Focused at the line's closest approach to the origin.
+  double FocalParameter(const glm::dvec3& o, const glm::dvec3& d) const
+  {
+    return -glm::dot(o, d) / glm::dot(d, d);
+  }
 };
 
 /// The axis-aligned box [low, low + size].
