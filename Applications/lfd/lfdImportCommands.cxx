@@ -58,15 +58,16 @@ void Import(const ImportOptions& options)
   ImportCalibratedImages(importer, options.Out, options.Out);
 }
 
-template<typename Exporter>
-void Export(const std::string& lightFieldPath, const std::string& out, const char* calibration)
+void Export(vtkCalibratedImageExporter* exporter,
+  const std::string& lightFieldPath,
+  const std::string& out,
+  const char* calibration)
 {
   auto lightField = ReadLightField(lightFieldPath);
-  vtkNew<Exporter> exporter;
   exporter->SetInputData(lightField);
   exporter->SetDirectoryName(out.c_str());
   lfd::ShowProgress(exporter, "exporting");
-  Run(exporter.Get(), "exporting to " + out);
+  Run(exporter, "exporting to " + out);
   std::cout << "exported " << lightField->GetNumberOfViews() << " views to " << out << " ("
             << calibration << ", images/)\n";
 }
@@ -199,7 +200,7 @@ void AddImportCommand(CLI::App* import,
   commands.push_back({ command, [options, run] { run(*options); }, false });
 }
 
-void AddExportCommand(CLI::App* exportCommand,
+CLI::App* AddExportCommand(CLI::App* exportCommand,
   const std::string& name,
   const std::string& help,
   std::function<void(const std::string&, const std::string&)> run,
@@ -211,6 +212,7 @@ void AddExportCommand(CLI::App* exportCommand,
   command->add_option("LF", *lightField, "light-field directory")->required();
   command->add_option("--out", *out, "output folder")->required();
   commands.push_back({ command, [lightField, out, run] { run(*lightField, *out); }, false });
+  return command;
 }
 }
 
@@ -219,10 +221,12 @@ void AddImportCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
   CLI::App* import = app.get_subcommand("import");
   AddImportCommand(import,
     "colmap",
-    "COLMAP sparse text model (cameras.txt, images.txt; camera models SIMPLE_PINHOLE, PINHOLE, "
-    "SIMPLE_RADIAL, RADIAL, OPENCV, FULL_OPENCV without rational terms) and its images into the "
-    "dataset folder OUT (replaced when complete); views sorted by image name",
-    "the sparse model folder (colmap model_converter --output_type TXT writes it)",
+    "COLMAP sparse model, binary (cameras.bin, images.bin, as colmap mapper writes it) or text "
+    "(cameras.txt, images.txt), camera models SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, "
+    "OPENCV, FULL_OPENCV without rational terms, and its images into the dataset folder OUT "
+    "(replaced when complete); views sorted by image name",
+    "the sparse model folder (e.g. sparse/0; the binary model when it holds cameras.bin, else the "
+    "text model)",
     "folder of the images named in images.txt (COLMAP's --image_path; default: the model folder)",
     Import<vtkColmapImporter>,
     commands);
@@ -240,21 +244,38 @@ void AddImportCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     "export a light field's views and cameras (colmap, transforms) or a scene (paraview) for other "
     "tools");
   exportCommand->require_subcommand(1);
+  auto binary = std::make_shared<bool>(false);
   AddExportCommand(
     exportCommand,
     "colmap",
-    "write OUT/images/*.png and the COLMAP text model OUT/sparse/{cameras,images,points3D}.txt "
-    "(replaces OUT when complete: OUT must be empty or an earlier export)",
-    [](const std::string& lightField, const std::string& out)
-    { Export<vtkColmapExporter>(lightField, out, "sparse/cameras.txt, sparse/images.txt"); },
-    commands);
+    "write OUT/images/*.png and the COLMAP sparse model OUT/sparse/{cameras,images,points3D}.txt, "
+    "or .bin with --binary (replaces OUT when complete: OUT must be empty or an earlier export "
+    "of the same kind)",
+    [binary](const std::string& lightField, const std::string& out)
+    {
+      vtkNew<vtkColmapExporter> exporter;
+      exporter->SetBinary(*binary);
+      Export(exporter,
+        lightField,
+        out,
+        *binary ? "sparse/cameras.bin, sparse/images.bin"
+                : "sparse/cameras.txt, sparse/images.txt");
+    },
+    commands)
+    ->add_flag("--binary",
+      *binary,
+      "write COLMAP's binary model (cameras.bin, images.bin, points3D.bin) instead of the text "
+      "one");
   AddExportCommand(
     exportCommand,
     "transforms",
     "write OUT/images/*.png and OUT/transforms.json (nerfstudio / instant-ngp, OPENCV camera "
     "model; replaces OUT when complete: OUT must be empty or an earlier export)",
     [](const std::string& lightField, const std::string& out)
-    { Export<vtkTransformsExporter>(lightField, out, "transforms.json"); },
+    {
+      vtkNew<vtkTransformsExporter> exporter;
+      Export(exporter, lightField, out, "transforms.json");
+    },
     commands);
   auto paraview = std::make_shared<ParaViewOptions>();
   auto* paraviewCommand = exportCommand->add_subcommand("paraview",

@@ -1,12 +1,13 @@
 /**
  * @class   vtkColmapExporter
- * @brief   writes a vtkLightField as a COLMAP text model and its images
+ * @brief   writes a vtkLightField as a COLMAP sparse model (text or binary) and its images
  *
  * Writes a light field as COLMAP sees a reconstruction (Schoenberger and
  * Frahm, CVPR 2016): `images/<name>.png` (the Coaxial views) and the text model
  * `sparse/cameras.txt`, `sparse/images.txt`, `sparse/points3D.txt` (no
- * points), so that `colmap` (e.g. `point_triangulator`, `image_undistorter`)
- * or vtkColmapImporter reads it (`FileName` = `sparse`, `ImageDirectory` =
+ * points), or with Binary on the binary model `sparse/cameras.bin`,
+ * `images.bin`, `points3D.bin` (lfdColmapModel.h), so that `colmap` (e.g. `point_triangulator`,
+ * `image_undistorter`) or vtkColmapImporter reads it (`FileName` = `sparse`, `ImageDirectory` =
  * `images`). Views with the same K and distortion share one camera; a
  * camera without distortion is PINHOLE, one with k3 = 0 OPENCV, else
  * FULL_OPENCV (k4 = k5 = k6 = 0). The principal point is moved by half a
@@ -14,8 +15,9 @@
  * quaternion (w >= 0). A view whose K has a skew is refused (COLMAP has
  * none).
  *
- * Numbers are written with 17 significant digits: exporting and importing
- * back gives the same rig to rounding (1e-12 relative).
+ * Text numbers are written with 17 significant digits, binary ones as
+ * their 8 bytes: exporting and importing back gives the same rig to
+ * rounding (1e-12 relative).
  *
  * @sa vtkColmapImporter vtkCalibratedImageExporter
  */
@@ -32,6 +34,16 @@ public:
   vtkTypeMacro(vtkColmapExporter, vtkCalibratedImageExporter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /**
+   * Write the binary model (`.bin`) instead of the text model (`.txt`).
+   * Default off. A folder is replaced only by an export of the same kind.
+   */
+  vtkSetMacro(Binary, bool);
+  vtkGetMacro(Binary, bool);
+  vtkBooleanMacro(Binary, bool);
+  ///@}
+
 protected:
   vtkColmapExporter();
   ~vtkColmapExporter() override;
@@ -41,11 +53,10 @@ protected:
     const std::vector<std::string>& imageNames,
     std::map<std::string, std::string>& files,
     std::string& error) override;
-  std::string GetMarkerFile() override
-  {
-    return "sparse/cameras.txt";
-  }
+  std::string GetMarkerFile() override;
 #endif
+
+  bool Binary = false;
 
 private:
   vtkColmapExporter(const vtkColmapExporter&) = delete;

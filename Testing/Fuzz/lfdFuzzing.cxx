@@ -5,8 +5,8 @@
 // -1, huge or a NaN spelled as a string, a value of another type, a key
 // removed or moved, nesting deepened, an array resized, a path swapped for a
 // device or a folder) and writes the JSON back, so the fuzzer reaches the
-// readers' validation. Inputs that are not JSON (par files) and one mutation
-// in eight go to libFuzzer's byte mutator.
+// readers' validation. Inputs that are not JSON (par files, COLMAP models)
+// and one mutation in eight go to libFuzzer's byte mutator.
 #include "lfdFuzzing.h"
 
 #include "vtkObject.h"
@@ -190,6 +190,34 @@ std::string lfdfuzz::WriteInput(const uint8_t* data, size_t size, const std::str
   const fs::path path = Scratch() / name;
   std::ofstream(path, std::ios::binary | std::ios::trunc)
     .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  return path.string();
+}
+
+const char* const lfdfuzz::FileSeparator = "\n--- next file ---\n";
+
+std::string lfdfuzz::WriteInputFiles(const uint8_t* data,
+  size_t size,
+  const std::string& folder,
+  const std::vector<std::string>& names)
+{
+  const fs::path path = Scratch() / folder;
+  fs::create_directories(path);
+  const std::string input(reinterpret_cast<const char*>(data), size);
+  const std::string separator(FileSeparator);
+  size_t start = 0;
+  for (const std::string& name : names)
+  {
+    std::error_code ec;
+    fs::remove(path / name, ec);
+    if (start == std::string::npos)
+    {
+      continue;
+    }
+    const size_t end = input.find(separator, start);
+    std::ofstream(path / name, std::ios::binary | std::ios::trunc)
+      << input.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    start = end == std::string::npos ? end : end + separator.size();
+  }
   return path.string();
 }
 

@@ -1,12 +1,14 @@
 // Shared by the libFuzzer targets of Testing/Fuzz: the per-process scratch
-// folder the inputs are written into, and the structure-aware mutator
-// (lfdFuzzing.cxx defines LLVMFuzzerCustomMutator for every target).
+// folder the inputs are written into (one file, or several files from one
+// input), and the structure-aware mutator (lfdFuzzing.cxx defines
+// LLVMFuzzerCustomMutator for every target).
 #ifndef lfdFuzzing_h
 #define lfdFuzzing_h
 
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace lfdfuzz
 {
@@ -19,6 +21,22 @@ namespace lfdfuzz
  * only a crash, a sanitizer report or a hang is a finding.
  */
 std::string WriteInput(const uint8_t* data, size_t size, const std::string& name);
+
+/// The line that separates the files of a multi-file input (WriteInputFiles()).
+extern const char* const FileSeparator;
+
+/**
+ * Writes an input that holds several files, separated by FileSeparator
+ * (a COLMAP model: cameras then images), as the files `names`, in order,
+ * in the subfolder `folder` of the scratch folder, and returns that
+ * subfolder's path. Parts beyond the names are dropped; a name without its
+ * part (the separator mutated away) is not there, whatever an earlier input
+ * left.
+ */
+std::string WriteInputFiles(const uint8_t* data,
+  size_t size,
+  const std::string& folder,
+  const std::vector<std::string>& names);
 }
 
 #endif

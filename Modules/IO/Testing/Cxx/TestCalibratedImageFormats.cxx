@@ -1,7 +1,8 @@
-// COLMAP text models and transforms.json: export -> import gives the same
-// rig (K, R, t, distortion to 1e-9) and the same pixels, with shared and
-// per-view intrinsics; malformed files fail with one exact line naming the
-// file and the line or field.
+// COLMAP text and binary models and transforms.json: export -> import
+// gives the same rig (K, R, t, distortion to 1e-9) and the same pixels, with
+// shared and per-view intrinsics; malformed files (text, and binary files
+// truncated or corrupted field by field) fail with one exact line naming
+// the file and the line, record or field.
 #include "lfdIOTestUtilities.h"
 
 #include "vtkCameraRig.h"
@@ -20,6 +21,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 
 namespace
 {
@@ -93,14 +96,14 @@ double RigDifference(vtkCameraRig* a, vtkCameraRig* b)
   return largest;
 }
 
-template<typename Exporter, typename Importer>
+template<typename Importer>
 void RoundTrip(const std::string& format,
+  vtkCalibratedImageExporter* exporter,
   vtkLightField* original,
   const std::string& folder,
   const std::string& calibration,
   const std::string& images)
 {
-  vtkNew<Exporter> exporter;
   vtkNew<vtkLightFieldErrorObserver> exportErrors;
   exportErrors->Observe(exporter);
   exporter->SetInputData(original);
@@ -246,8 +249,121 @@ void MalformedColmap(const std::string& root)
     "missing image", f, f + "/images.txt:2: image " + f + "/gone.png: file not found");
   f = model("1 SIMPLE_PINHOLE 8 6 10 4 3\n", "");
   ExpectFailure<vtkColmapImporter>("no image", f, f + "/images.txt: no registered image");
+  ExpectFailure<vtkColmapImporter>("no model folder",
+    root + "/none",
+    root + "/none: no COLMAP sparse model (no cameras.bin, no cameras.txt)");
+}
+
+// Writes `size` little-endian bytes of `value` at `offset` of `bytes`.
+void Put(std::string& bytes, size_t offset, uint64_t value, int size)
+{
+  for (int b = 0; b < size; ++b)
+  {
+    bytes[offset + b] = static_cast<char>((value >> (8 * b)) & 0xff);
+  }
+}
+
+// The binary export of MakeLightField(false) in `exported` (one OPENCV
+// camera: cameras.bin is 8 + 96 bytes, the count then CAMERA_ID at 8,
+// MODEL_ID 12, WIDTH 16, HEIGHT 24, PARAMS from 32; images.bin the count
+// then 6 records of 84 bytes from 8: IMAGE_ID +0, QW..QZ +4, TX..TZ +36,
+// CAMERA_ID +60, NAME "shot_1N.png" +64, POINTS2D +76), corrupted one way
+// per case.
+void MalformedBinaryColmap(const std::string& root, const std::string& exported)
+{
+  int number = 0;
+  auto corrupt = [&](const std::string& file, const std::function<void(std::string&)>& change)
+  {
+    const std::string folder = root + "/colmap-bin" + std::to_string(++number);
+    std::filesystem::create_directories(folder);
+    for (const std::string name : { "cameras.bin", "images.bin", "points3D.bin" })
+    {
+      std::string bytes = lfdtest::ReadText(exported + "/sparse/" + name);
+      if (name == file)
+      {
+        change(bytes);
+      }
+      if (!bytes.empty() || name == file)
+      {
+        lfdtest::WriteText(folder + "/" + name, bytes);
+      }
+    }
+    return folder;
+  };
+  std::string f = corrupt("", [](std::string&) {});
+  {
+    vtkNew<vtkColmapImporter> importer;
+    importer->SetFileName(f.c_str());
+    importer->SetImageDirectory((exported + "/images").c_str());
+    importer->Update();
+    lfdtest::Check(importer->GetErrorCode() == 0 && importer->GetBinaryModel() &&
+        importer->GetOutput()->GetNumberOfViews() == 6,
+      "an uncorrupted copy of the binary export imports as a binary model, 6 views");
+  }
+  const std::string cameras = "/cameras.bin: record 1 of 1: ";
+  const std::string images = "/images.bin: record ";
+  f = corrupt("cameras.bin", [](std::string& b) { b.clear(); });
+  ExpectFailure<vtkColmapImporter>("empty cameras.bin",
+    f,
+    f + "/cameras.bin: truncated in the number of cameras (the file ends at byte 0)");
+  f = corrupt("cameras.bin", [](std::string& b) { b.resize(60); });
   ExpectFailure<vtkColmapImporter>(
-    "no model folder", root + "/none", root + "/none/cameras.txt: file not found");
+    "cameras.bin cut inside cy", f, f + cameras + "truncated in cy (the file ends at byte 60)");
+  f = corrupt("cameras.bin", [](std::string& b) { Put(b, 12, 5, 4); });
+  ExpectFailure<vtkColmapImporter>("fisheye MODEL_ID",
+    f,
+    f + cameras +
+      "MODEL_ID 5 (OPENCV_FISHEYE) is not supported (supported: SIMPLE_PINHOLE, PINHOLE, "
+      "SIMPLE_RADIAL, RADIAL, OPENCV, FULL_OPENCV)");
+  f = corrupt("cameras.bin", [](std::string& b) { Put(b, 12, 0xffffffff, 4); });
+  ExpectFailure<vtkColmapImporter>("MODEL_ID -1",
+    f,
+    f + cameras +
+      "MODEL_ID -1 (not a COLMAP 3.8 camera model) is not supported (supported: "
+      "SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV, FULL_OPENCV)");
+  f = corrupt("cameras.bin", [](std::string& b) { Put(b, 16, 0, 8); });
+  ExpectFailure<vtkColmapImporter>(
+    "WIDTH 0", f, f + cameras + "WIDTH is 0, not an integer from 1 to 2147483647");
+  f = corrupt("cameras.bin", [](std::string& b) { Put(b, 32, 0x7ff8000000000000ULL, 8); });
+  ExpectFailure<vtkColmapImporter>("fx NaN", f, f + cameras + "fx is not finite (nan)");
+  f = corrupt("cameras.bin", [](std::string& b) { Put(b, 0, 2, 8); });
+  ExpectFailure<vtkColmapImporter>("2 cameras announced, 1 written",
+    f,
+    f + "/cameras.bin: record 2 of 2: truncated in CAMERA_ID (the file ends at byte 96)");
+  f = corrupt("cameras.bin", [](std::string& b) { Put(b, 0, 0, 8); });
+  ExpectFailure<vtkColmapImporter>("0 cameras announced, 1 written",
+    f,
+    f + "/cameras.bin: 88 bytes after the last of the 0 records");
+  f = corrupt("cameras.bin", [](std::string& b) { b.assign(8, '\0'); });
+  ExpectFailure<vtkColmapImporter>("no camera", f, f + "/cameras.bin: no camera");
+  f = corrupt("images.bin", [](std::string& b) { Put(b, 0, 7, 8); });
+  ExpectFailure<vtkColmapImporter>("7 images announced, 6 written",
+    f,
+    f + images + "7 of 7: truncated in IMAGE_ID (the file ends at byte 512)");
+  f = corrupt("images.bin", [](std::string& b) { b.resize(8 + 5 * 84 + 70); });
+  ExpectFailure<vtkColmapImporter>("images.bin cut inside the last NAME",
+    f,
+    f + images + "6 of 6: NAME has no terminating 0 byte (the file ends at byte 498)");
+  f = corrupt("images.bin", [](std::string& b) { Put(b, 8 + 5 * 84 + 76, 1000000, 8); });
+  ExpectFailure<vtkColmapImporter>("a million 2D points announced",
+    f,
+    f + images + "6 of 6: truncated in POINTS2D: 1000000 of 24 bytes, 0 bytes left");
+  f = corrupt("images.bin", [](std::string& b) { b += "abc"; });
+  ExpectFailure<vtkColmapImporter>(
+    "bytes after the last image", f, f + "/images.bin: 3 bytes after the last of the 6 records");
+  f = corrupt("images.bin", [](std::string& b) { b.replace(12, 32, 32, '\0'); });
+  ExpectFailure<vtkColmapImporter>(
+    "zero quaternion", f, f + images + "1 of 6: QW QX QY QZ: not a rotation (a zero quaternion)");
+  f = corrupt("images.bin", [](std::string& b) { Put(b, 68, 9, 4); });
+  ExpectFailure<vtkColmapImporter>(
+    "unknown camera", f, f + images + "1 of 6: CAMERA_ID 9 is not in cameras.bin");
+  f = corrupt("images.bin", [](std::string& b) { Put(b, 92, 1, 4); });
+  ExpectFailure<vtkColmapImporter>("repeated IMAGE_ID",
+    f,
+    f + images + "2 of 6: IMAGE_ID 1 is repeated (first on " + f + images + "1 of 6)");
+  f = corrupt("images.bin", [](std::string& b) { b.clear(); });
+  std::filesystem::remove(f + "/images.bin");
+  ExpectFailure<vtkColmapImporter>("no images.bin", f, f + "/images.bin: file not found");
 }
 
 void MalformedTransforms(const std::string& root)
@@ -329,10 +445,21 @@ int TestCalibratedImageFormats(int, char*[])
   {
     auto lightField = MakeLightField(perView);
     const std::string tag = perView ? "per-view" : "shared";
-    RoundTrip<vtkColmapExporter, vtkColmapImporter>(
-      "COLMAP (" + tag + " intrinsics)", lightField, folder + "/colmap-" + tag, "sparse", "images");
-    RoundTrip<vtkTransformsExporter, vtkTransformsImporter>(
-      "transforms.json (" + tag + " intrinsics)",
+    for (bool binary : { false, true })
+    {
+      vtkNew<vtkColmapExporter> exporter;
+      exporter->SetBinary(binary);
+      const std::string kind = binary ? "binary" : "text";
+      RoundTrip<vtkColmapImporter>("COLMAP " + kind + " (" + tag + " intrinsics)",
+        exporter,
+        lightField,
+        folder + "/colmap-" + kind + "-" + tag,
+        "sparse",
+        "images");
+    }
+    vtkNew<vtkTransformsExporter> exporter;
+    RoundTrip<vtkTransformsImporter>("transforms.json (" + tag + " intrinsics)",
+      exporter,
       lightField,
       folder + "/transforms-" + tag,
       "transforms.json",
@@ -348,7 +475,8 @@ int TestCalibratedImageFormats(int, char*[])
   lfdtest::CheckEqual(perView.find("\"fl_x\"") > perView.find("\"frames\""),
     true,
     "transforms.json: per-view fl_x in the frames");
-  const std::string cameras = lfdtest::ReadText(folder + "/colmap-per-view/sparse/cameras.txt");
+  const std::string cameras =
+    lfdtest::ReadText(folder + "/colmap-text-per-view/sparse/cameras.txt");
   lfdtest::CheckEqual(static_cast<int>(std::count(cameras.begin(), cameras.end(), '\n')),
     3 + 6,
     "COLMAP, per-view intrinsics: 3 comment lines + 6 cameras");
@@ -374,6 +502,7 @@ int TestCalibratedImageFormats(int, char*[])
       lfdtest::ReadText(folder + "/precious/notes.txt"), std::string("keep"), "folder untouched");
   }
   MalformedColmap(folder);
+  MalformedBinaryColmap(folder, folder + "/colmap-binary-shared");
   MalformedTransforms(folder);
   return lfdtest::Result();
 }
