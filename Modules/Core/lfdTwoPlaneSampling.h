@@ -45,7 +45,6 @@
 
 #include <glm/glm.hpp>
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
