@@ -40,6 +40,7 @@ struct ViewOptions
   std::string Size;
   std::vector<double> CameraPosition;
   std::vector<double> FocalPoint;
+  std::string Focal; // render.focal override ("": the scene's)
 };
 
 /// "WxH" -> width and height, or a refusal naming --size.
@@ -120,6 +121,12 @@ void Render(const std::string& scenePath,
   auto cage = SceneCage(scene, lightField, time);
   vtkNew<vtkLightFieldRenderer> renderer;
   scene->ConfigureRenderer(renderer, lightField, cage);
+  if (!view.Focal.empty())
+  {
+    renderer->SetFocalSurface(view.Focal == "plane" ? vtkLightFieldRenderer::FOCAL_PLANE
+        : view.Focal == "proxy"                     ? vtkLightFieldRenderer::FOCAL_PROXY
+                                                    : vtkLightFieldRenderer::FOCAL_AUTOMATIC);
+  }
   WarnIfExtrapolating(lightField, scene, cage);
   Run(renderer.Get(), "rendering");
   WriteImage(renderer->GetOutput(), out);
@@ -324,6 +331,13 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
       "point x,y,z the camera looks at (default: the scene's camera)")
     ->expected(3)
     ->delimiter(',');
+  renderCommand
+    ->add_option("--focal",
+      render->View.Focal,
+      "focal surface, overriding the scene's render.focal: auto (the proxy when the light field "
+      "has a depth pass), plane (the paper's focal plane at render.focal_distance) or proxy (the "
+      "depth pass, per pixel; see lfd proxy)")
+    ->check(CLI::IsMember({ "auto", "plane", "proxy" }));
   commands.push_back({ renderCommand,
     [render, timeOption]
     { Render(render->Scene, render->Out, *timeOption ? &render->Time : nullptr, render->View); },

@@ -28,7 +28,8 @@
  *   bool Widen(const glm::dvec3& a, const glm::dvec3& b, int label, glm::dvec3& color) const;
  *     the widened search along the rest-space segment [a, b] for `label`;
  *   double FocalDepth(const glm::dvec3& o, const glm::dvec3& d) const;
- *     the depth reported for a ray that no box claims.
+ *     the depth reported for a ray that no box claims and whose samples are
+ *     not focused on a proxy surface (RaySamples::Surface NaN).
  *
  * Segments have no fixed cap: they go to a caller-owned vector that keeps
  * its capacity from ray to ray (one per thread), so a ray allocates nothing
@@ -48,6 +49,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -478,9 +480,10 @@ struct ViewSample
 {
   int Label = -1; ///< the part (0: background or a part without a box; -1: no camera sees the ray)
   glm::dvec3 Color{ 0.0 }; ///< meaningful when Label >= 0
-  /// The ray parameter t of the seen point, approximate: the middle of the
-  /// accepted interval, or the lookup's FocalDepth when no box claims the
-  /// ray; 0 for a ray that shows background through a fully owned light field.
+  /// The ray parameter t of the seen point: with a proxy, its surface point
+  /// (SegmentDepth); without, approximate: the middle of the accepted
+  /// interval, or the lookup's FocalDepth when no box claims the ray; 0 for a
+  /// ray that shows background through a fully owned light field.
   double Depth = 0.0;
 };
 
@@ -577,6 +580,26 @@ struct ViewRayLook
   }
 };
 
+/**
+ * The ray parameter t of the point an interval shows: the proxy surface
+ * point the samples were focused on (RaySamples::Surface), clamped to the
+ * interval (a moved box: its rest depth along the warped ray, mapped to the
+ * same fraction of the view ray's interval; a box at rest: the view ray's
+ * own parameter), else the middle of the interval.
+ */
+inline double SegmentDepth(const WarpedSegment& segment, bool moved, double surface)
+{
+  if (std::isnan(surface))
+  {
+    return 0.5 * (segment.TEnter + segment.TExit);
+  }
+  if (moved)
+  {
+    return segment.TEnter + std::clamp(surface, 0.0, 1.0) * (segment.TExit - segment.TEnter);
+  }
+  return std::clamp(surface, segment.TEnter, segment.TExit);
+}
+
 /// The first interval, front to back (`next(view)` hands them out, nullptr
 /// after the last), whose warped ray shows its box's label (Sec. 6);
 /// records what each interval showed in BoxSegment::Seen.
@@ -613,7 +636,7 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
     {
       BlendLabel(*seenSamples, box.Label, result.Color);
       result.Label = box.Label;
-      result.Depth = 0.5 * (segment.TEnter + segment.TExit);
+      result.Depth = SegmentDepth(segment, box.Moved, seenSamples->Surface);
       return true;
     }
   }
@@ -654,8 +677,9 @@ ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& s
   {
     return result;
   }
-  result.Depth = view.Light.FocalDepth(view.O, view.D);
   RaySamples& samples = *view.Samples;
+  result.Depth =
+    std::isnan(samples.Surface) ? view.Light.FocalDepth(view.O, view.D) : samples.Surface;
   if (!settings.UseLabels)
   {
     BlendLabel(samples, 0, result.Color);

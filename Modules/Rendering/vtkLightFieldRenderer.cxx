@@ -446,6 +446,23 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.Labels = { labels->GetPointer(0), input->GetWidth(), input->GetHeight(), 1 };
   }
   sampler.FocalDistance = this->FocalDistance;
+  vtkDataArray* depth = input->GetPass(vtkLightField::DEPTH);
+  if (this->FocalSurface == FOCAL_PROXY && !vtkFloatArray::SafeDownCast(depth))
+  {
+    vtkErrorMacro("The focal surface is the proxy (render.focal: proxy) but the light field has "
+                  "no float Depth pass: compute one with `lfd proxy`.");
+    return 0;
+  }
+  if (this->FocalSurface != FOCAL_PLANE && vtkFloatArray::SafeDownCast(depth))
+  {
+    sampler.Depth = {
+      vtkFloatArray::SafeDownCast(depth)->GetPointer(0), input->GetWidth(), input->GetHeight(), 1
+    };
+    sampler.DepthRange =
+      this->GetDepthRanges(depth, input->GetWidth(), input->GetHeight(), input->GetNumberOfViews())
+        .data();
+    sampler.ProxyViews = this->ProxyViews;
+  }
   settings.WidenedSearch = this->WidenedSearch > 0;
   settings.Owned = lfd::OwnedLabels(boxes);
   // With a cage, a ray that no box claims shows the parts without a box;
@@ -496,6 +513,24 @@ void vtkLightFieldRenderer::GetEyePinhole(double K[9], double R[9], double t[3])
   std::copy(this->PinholeK, this->PinholeK + 9, K);
   std::copy(this->PinholeR, this->PinholeR + 9, R);
   std::copy(this->PinholeT, this->PinholeT + 3, t);
+}
+
+//------------------------------------------------------------------------------
+const std::vector<double>& vtkLightFieldRenderer::GetDepthRanges(vtkDataArray* depth,
+  int width,
+  int height,
+  int views)
+{
+  if (depth != this->DepthRangesArray || depth->GetMTime() > this->DepthRangesTime)
+  {
+    const lfd::ViewStack<float> stack{
+      vtkFloatArray::SafeDownCast(depth)->GetPointer(0), width, height, 1
+    };
+    this->DepthRanges = lfd::DepthRanges(stack, views);
+    this->DepthRangesArray = depth;
+    this->DepthRangesTime = depth->GetMTime();
+  }
+  return this->DepthRanges;
 }
 
 //------------------------------------------------------------------------------
@@ -575,6 +610,9 @@ void vtkLightFieldRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Width: " << this->Width << "\n";
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
+  static const char* const surfaces[] = { "automatic", "plane", "proxy" };
+  os << indent << "FocalSurface: " << surfaces[this->FocalSurface] << "\n";
+  os << indent << "ProxyViews: " << this->ProxyViews << "\n";
   os << indent << "Background: " << this->Background[0] << " " << this->Background[1] << " "
      << this->Background[2] << "\n";
   os << indent << "UseLabels: " << this->UseLabels << "\n";

@@ -32,8 +32,9 @@
  * The output is a Width x Height vtkImageData in VTK row order (bottom row
  * first) with the point arrays `Radiance` (RGB uint8, the active scalars)
  * `Label` (uint8, the winning label; 0 also where no view sees the ray) and
- * `Depth` (float, camera z of the seen point, approximate: the middle of the
- * accepted segment inside its box, or the focal point; 0 on background).
+ * `Depth` (float, camera z of the seen point: on the proxy surface with
+ * FocalSurface proxy; with the plane approximate, the middle of the accepted
+ * segment inside its box, or the focal point; 0 on background).
  * Rendering runs in parallel over image rows with vtkSMPTools.
  *
  * @sa vtkLightField vtkCameraRig vtkLeaveOneOutEvaluator
@@ -49,6 +50,7 @@
 #include <vector> // For std::vector
 
 class vtkCamera;
+class vtkDataArray;
 class vtkDeformationCage;
 class vtkLightField;
 class vtkUnstructuredGrid;
@@ -104,6 +106,45 @@ public:
    */
   vtkSetMacro(FocalDistance, double);
   vtkGetMacro(FocalDistance, double);
+  ///@}
+
+  /// Where a ray is focused (see SetFocalSurface).
+  enum FocalSurfaceType
+  {
+    FOCAL_AUTOMATIC = 0,
+    FOCAL_PLANE,
+    FOCAL_PROXY
+  };
+
+  ///@{
+  /**
+   * The focal surface. FOCAL_PLANE: the paper's plane at FocalDistance
+   * (Sec. 6.2), 4 ring neighbours blended quadrilinearly. FOCAL_PROXY (beyond
+   * the paper): the light field's `Depth` pass is a geometric proxy; a ray is
+   * focused where it meets that surface (per pixel, Gortler et al. 1996) and
+   * blended from the ProxyViews cameras nearest to it in angle that see the
+   * point (Buehler et al. 2001); rays that meet no surface use the plane.
+   * The rendered Depth is then the surface's (through the warp: the rest
+   * depth mapped into the deformed box), so VTK actors composite correctly
+   * with the object. FOCAL_AUTOMATIC (default): the proxy when the light
+   * field has a Depth pass (a synthetic capture, or `lfd proxy`), else the
+   * plane. FOCAL_PROXY on a light field without a Depth pass is an error.
+   * See lfd::LightFieldSampler::GatherOnSurface.
+   */
+  vtkSetClampMacro(FocalSurface, int, FOCAL_AUTOMATIC, FOCAL_PROXY);
+  vtkGetMacro(FocalSurface, int);
+  void SetFocalSurfaceToAutomatic() { this->SetFocalSurface(FOCAL_AUTOMATIC); }
+  void SetFocalSurfaceToPlane() { this->SetFocalSurface(FOCAL_PLANE); }
+  void SetFocalSurfaceToProxy() { this->SetFocalSurface(FOCAL_PROXY); }
+  ///@}
+
+  ///@{
+  /**
+   * Cameras blended per ray on the proxy surface (k nearest in angle that
+   * see the point), 1..4. Default 3.
+   */
+  vtkSetClampMacro(ProxyViews, int, 1, 4);
+  vtkGetMacro(ProxyViews, int);
   ///@}
 
   ///@{
@@ -241,6 +282,8 @@ protected:
   int Width = 512;
   int Height = 512;
   double FocalDistance = 0.0;
+  int FocalSurface = FOCAL_AUTOMATIC;
+  int ProxyViews = 3;
   double Background[3] = { 0.0, 0.0, 0.0 };
   bool UseLabels = true;
   int Subdivision = 1;
@@ -272,6 +315,16 @@ private:
    * or nullptr after an error.
    */
   vtkLightField* OnePart(vtkLightField* input, int label);
+
+  /**
+   * Per view, the smallest and largest depth of `depth` (2 values per view,
+   * lfd::DepthRanges), cached while the array is unchanged.
+   */
+  const std::vector<double>& GetDepthRanges(vtkDataArray* depth, int width, int height, int views);
+
+  std::vector<double> DepthRanges;
+  vtkDataArray* DepthRangesArray = nullptr; // compared, never dereferenced
+  vtkMTimeType DepthRangesTime = 0;
 
   vtkSmartPointer<vtkLightField> Parts; // the derived light field of OnePart()
   vtkLightField* PartsInput = nullptr;  // compared, never dereferenced
