@@ -458,9 +458,11 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.Depth = {
       vtkFloatArray::SafeDownCast(depth)->GetPointer(0), input->GetWidth(), input->GetHeight(), 1
     };
-    sampler.DepthRange =
-      this->GetDepthRanges(depth, input->GetWidth(), input->GetHeight(), input->GetNumberOfViews())
-        .data();
+    const std::vector<double>& extent =
+      this->GetProxyExtent(depth, input->GetWidth(), input->GetHeight(), rig, cameras);
+    sampler.DepthRange = extent.data() + 6;
+    sampler.SurfaceLow = glm::dvec3(extent[0], extent[1], extent[2]);
+    sampler.SurfaceHigh = glm::dvec3(extent[3], extent[4], extent[5]);
     sampler.ProxyViews = this->ProxyViews;
   }
   settings.WidenedSearch = this->WidenedSearch > 0;
@@ -516,21 +518,31 @@ void vtkLightFieldRenderer::GetEyePinhole(double K[9], double R[9], double t[3])
 }
 
 //------------------------------------------------------------------------------
-const std::vector<double>& vtkLightFieldRenderer::GetDepthRanges(vtkDataArray* depth,
+const std::vector<double>& vtkLightFieldRenderer::GetProxyExtent(vtkDataArray* depth,
   int width,
   int height,
-  int views)
+  vtkCameraRig* rig,
+  const std::vector<lfd::PinholeCamera>& cameras)
 {
-  if (depth != this->DepthRangesArray || depth->GetMTime() > this->DepthRangesTime)
+  if (depth != this->ProxyExtentArray || depth->GetMTime() > this->ProxyExtentTime ||
+    rig->GetMTime() > this->ProxyExtentTime)
   {
+    const int views = static_cast<int>(cameras.size());
     const lfd::ViewStack<float> stack{
       vtkFloatArray::SafeDownCast(depth)->GetPointer(0), width, height, 1
     };
-    this->DepthRanges = lfd::DepthRanges(stack, views);
-    this->DepthRangesArray = depth;
-    this->DepthRangesTime = depth->GetMTime();
+    glm::dvec3 low, high;
+    if (!lfd::DepthBounds(stack, cameras.data(), views, low, high))
+    {
+      low = high = glm::dvec3(0.0); // no surface: every ray misses it
+    }
+    this->ProxyExtent = { low.x, low.y, low.z, high.x, high.y, high.z };
+    const std::vector<double> ranges = lfd::DepthRanges(stack, views);
+    this->ProxyExtent.insert(this->ProxyExtent.end(), ranges.begin(), ranges.end());
+    this->ProxyExtentArray = depth;
+    this->ProxyExtentTime.Modified();
   }
-  return this->DepthRanges;
+  return this->ProxyExtent;
 }
 
 //------------------------------------------------------------------------------

@@ -49,7 +49,13 @@
 
 #include <vector> // For std::vector
 
+namespace lfd
+{
+struct PinholeCamera;
+}
+
 class vtkCamera;
+class vtkCameraRig;
 class vtkDataArray;
 class vtkDeformationCage;
 class vtkLightField;
@@ -316,15 +322,23 @@ private:
    */
   vtkLightField* OnePart(vtkLightField* input, int label);
 
+#ifndef __VTK_WRAP__
   /**
-   * Per view, the smallest and largest depth of `depth` (2 values per view,
-   * lfd::DepthRanges), cached while the array is unchanged.
+   * The proxy's extent: the bounds of its surface points (6 values, low
+   * then high, lfd::DepthBounds), then per view the smallest and largest
+   * depth (lfd::DepthRanges); cached while the Depth pass and the rig are
+   * unchanged.
    */
-  const std::vector<double>& GetDepthRanges(vtkDataArray* depth, int width, int height, int views);
+  const std::vector<double>& GetProxyExtent(vtkDataArray* depth,
+    int width,
+    int height,
+    vtkCameraRig* rig,
+    const std::vector<lfd::PinholeCamera>& cameras);
+#endif
 
-  std::vector<double> DepthRanges;
-  vtkDataArray* DepthRangesArray = nullptr; // compared, never dereferenced
-  vtkMTimeType DepthRangesTime = 0;
+  std::vector<double> ProxyExtent;
+  vtkDataArray* ProxyExtentArray = nullptr; // compared, never dereferenced
+  vtkTimeStamp ProxyExtentTime;
 
   vtkSmartPointer<vtkLightField> Parts; // the derived light field of OnePart()
   vtkLightField* PartsInput = nullptr;  // compared, never dereferenced

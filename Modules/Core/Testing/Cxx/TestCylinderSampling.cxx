@@ -83,12 +83,15 @@ void ProxySurface()
   const std::vector<double> ranges = lfd::DepthRanges(sampler.Depth, views);
   sampler.DepthRange = ranges.data();
   Expect("depth range of view 0 (nearest point 3)", ranges[0], 3.0, 0.005);
+  lfd::DepthBounds(sampler.Depth, cameras.data(), views, sampler.SurfaceLow, sampler.SurfaceHigh);
+  Expect("surface bounds: the sphere's (x max 1)", sampler.SurfaceHigh.x, 1.0, 0.01);
 
   const double step = lfd::TwoPi / views;
   glm::dvec3 o, d, color;
   RayAt(2.25 * step, 0.0, o, d);
   double hit = 0.0;
-  Expect("the ray meets view 2's depth map", sampler.IntersectDepthMap(2, o, d, hit), 1.0);
+  Expect(
+    "the ray meets view 2's depth map", sampler.IntersectDepthMap(2, o, d, 0.0, 100.0, hit), 1.0);
   Expect("... 1 before the axis (10 - 1)", hit, 9.0, 0.01);
   lfd::RaySamples samples;
   sampler.ProxyViews = 1;
