@@ -13,6 +13,13 @@
  * includes a view's lens distortion (PinholeCamera::Project applies it): a
  * distorted photograph is sampled at the distorted pixel that saw the point.
  *
+ * Beyond the paper, a per-view depth map stack (the light field's Depth
+ * pass) can stand for a geometric proxy: LightFieldSampler::GatherOnSurface
+ * focuses a ray on the surface it meets (Gortler et al. 1996's depth
+ * correction) and blends the views nearest to it in angle that see that
+ * point (Buehler et al. 2001, Unstructured Lumigraph Rendering). Without a
+ * depth stack the plane path above is used, unchanged.
+ *
  * Labels are categorical and never averaged: the label of a ray is the
  * weighted vote of its samples and the colour is the weighted mean of the
  * samples whose label matches (weights renormalised), which keeps parts from
