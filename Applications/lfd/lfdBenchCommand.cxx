@@ -497,12 +497,13 @@ struct BenchRow
 };
 
 /// The light field of the bench's fish (or figure): `views` x `rows` views
-/// of `image` x `image` pixels, without the Depth pass (the renderer reads
-/// Coaxial and Label).
+/// of `image` x `image` pixels, without the Depth pass (so that the renderer
+/// focuses on the paper's plane) unless `depth` (then on that proxy).
 vtkSmartPointer<vtkLightField> BenchLightField(const std::string& object,
   int views,
   int rows,
-  int image)
+  int image,
+  bool depth = false)
 {
   SynthOptions options;
   options.Object = object;
@@ -510,7 +511,7 @@ vtkSmartPointer<vtkLightField> BenchLightField(const std::string& object,
   options.Rows = rows;
   options.Width = image;
   options.Height = image;
-  options.NoDepth = true;
+  options.NoDepth = !depth;
   return Synthesize(options);
 }
 
@@ -616,6 +617,39 @@ void CageSizeRows(vtkLightField* fish,
     rows[r].Extra = { { "vs_3_boxes", rows[r].Figures.Seconds / three },
       { "no_accel_ms", 1000.0 * plain.Seconds } };
   }
+}
+
+/**
+ * The proxy rows: the fish again with its Depth pass, so that the renderer
+ * focuses every ray on that proxy (vtkLightFieldRenderer::FOCAL_AUTOMATIC),
+ * at rest and swimming, each against the same render through the plane (the
+ * "render" table's rows of the same size: `vs_plane`).
+ */
+void ProxyRows(const BenchSettings& settings,
+  int views,
+  int rowsOfViews,
+  int image,
+  PeakMemory& peak,
+  std::vector<BenchRow>& rows)
+{
+  auto fish = BenchLightField("fish", views, rowsOfViews, image, true);
+  const int size = TableSize(settings);
+  const auto plane = [&](const std::string& name)
+  {
+    for (const BenchRow& row : rows)
+    {
+      if (row.Table == "render" && row.Size == size && row.Name == name)
+      {
+        return row.Figures.Seconds;
+      }
+    }
+    return 0.0;
+  };
+  const auto [rest, deformed] = RenderTimes(fish, "fish", size, settings.Repeat, peak);
+  rows.push_back(Row("proxy", "undeformed fish, proxy", size, fish, 0, rest));
+  rows.back().Extra = { { "vs_plane", rest.Seconds / plane("undeformed fish") } };
+  rows.push_back(Row("proxy", "deformed fish (swim, 3 boxes), proxy", size, fish, 3, deformed));
+  rows.back().Extra = { { "vs_plane", deformed.Seconds / plane("deformed fish (swim, 3 boxes)") } };
 }
 
 /**
@@ -837,6 +871,7 @@ void Bench(const BenchSettings& settings)
     }
   }
   LightFieldSizeRows(settings, peak, rows);
+  ProxyRows(settings, views, rowsOfViews, image, peak, rows);
   CageSizeRows(fish, settings, peak, rows);
   TwoPlaneRows(settings, image, peak, rows);
   LoadAverage(load[1]);
@@ -845,6 +880,7 @@ void Bench(const BenchSettings& settings)
     std::to_string(rowsOfViews) + " views of " + std::to_string(image) + "^2";
   PrintTable("reference loop", "reference", rows, reference);
   PrintTable("scene (" + scene + ")", "render", rows, reference);
+  PrintTable("focal surface: proxy (Depth pass)", "proxy", rows, reference);
   PrintTable("undeformed fish, light-field size", "light-field size", rows, reference);
   PrintTable("deformed fish (bend 30), cage size", "cage size", rows, reference);
   PrintTable(
@@ -852,7 +888,8 @@ void Bench(const BenchSettings& settings)
   std::printf("(median of %d renders each; vs ref: against the reference loop at the same "
               "frame size, timed in the same run; peak MB: the process's peak resident memory "
               "during the configuration (its light fields included); vs_rest: against the "
-              "undeformed render; vs_3_boxes: against the 3 boxes of the same table; "
+              "undeformed render; vs_plane: against the same render through the focal plane; "
+              "vs_3_boxes: against the 3 boxes of the same table; "
               "no_accel_ms: the same cage with vtkLightFieldRenderer::CageAcceleration off; "
               "load average at the end: %.2f %.2f %.2f)\n",
     settings.Repeat,

@@ -145,6 +145,7 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path, Passes pa
     reader->ReadNoPasses();
     reader->SetReadPass(vtkLightField::COAXIAL, true);
     reader->SetReadPass(vtkLightField::LABEL, true);
+    reader->SetReadPass(vtkLightField::DEPTH, true);
   }
   lfd::ShowProgress(reader, "reading");
   Run(reader.Get(), "reading " + path);

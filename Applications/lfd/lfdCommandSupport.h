@@ -321,10 +321,9 @@ vtkSmartPointer<vtkImageData> ReadImage(const std::string& path);
 
 /**
  * Which passes of a light-field dataset a command reads: all of them, or
- * only those vtkLightFieldRenderer looks up (Coaxial and Label), so that a
- * dataset's Depth, Coded, Flood and Confidence passes take no memory in
- * `lfd render` and `lfd animate` (the Depth pass of a synthetic capture is
- * 4 bytes a pixel, more than the 3 of its images).
+ * only those vtkLightFieldRenderer looks up (Coaxial, Label, and Depth: the
+ * proxy of its per-pixel focal surface), so that a dataset's Coded, Flood
+ * and Confidence passes take no memory in `lfd render` and `lfd animate`.
  */
 enum class Passes
 {

@@ -43,6 +43,7 @@ struct ViewOptions
   std::string Size;
   std::vector<double> CameraPosition;
   std::vector<double> FocalPoint;
+  std::string Focal; // render.focal override ("": the scene's)
 };
 
 /// The refocusing of a two-plane light field (vtkLightFieldRenderer's
@@ -147,6 +148,12 @@ void Render(const std::string& scenePath,
     {
       renderer->SetAperture(refocus.Aperture);
     }
+  }
+  if (!view.Focal.empty())
+  {
+    renderer->SetFocalSurface(view.Focal == "plane" ? vtkLightFieldRenderer::FOCAL_PLANE
+        : view.Focal == "proxy"                     ? vtkLightFieldRenderer::FOCAL_PROXY
+                                                    : vtkLightFieldRenderer::FOCAL_AUTOMATIC);
   }
   WarnIfExtrapolating(lightField, scene, cage);
   Run(renderer.Get(), "rendering");
@@ -412,6 +419,13 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
       "bilinearly); with a Label pass each pixel keeps its winning part's colour, so the blur "
       "stops at part borders")
     ->default_str("");
+  renderCommand
+    ->add_option("--focal",
+      render->View.Focal,
+      "focal surface, overriding the scene's render.focal: auto (the proxy when the light field "
+      "has a depth pass), plane (the paper's focal plane at render.focal_distance) or proxy (the "
+      "depth pass, per pixel; see lfd proxy)")
+    ->check(CLI::IsMember({ "auto", "plane", "proxy" }));
   commands.push_back({ renderCommand,
     [render, timeOption]
     {

@@ -1,4 +1,5 @@
-// `lfd split projector|scanline|propagate|check`: light fields into parts.
+// `lfd split projector|scanline|propagate|check`: light fields into parts;
+// `lfd proxy`: their geometric proxy (a Depth pass).
 #include "lfdCommands.h"
 
 #include "vtkBoxCoverageCheck.h"
@@ -7,6 +8,7 @@
 #include "vtkLabelAccuracy.h"
 #include "vtkLabelPropagation.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldProxy.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkProjectorSegmentation.h"
@@ -259,8 +261,91 @@ void SplitCheck(const SplitOptions& options)
 
 }
 
+struct ProxyOptions
+{
+  std::string In;
+  std::string Out;
+  bool Replace = false;
+  int Resolution = 128;
+  double Threshold = 20.0;
+  double Tolerance = 1.5;
+  int Steps = 24;
+  double Depth = 0.1;
+};
+
+/// `lfd proxy`: the Depth pass the renderer's proxy focal surface uses.
+void Proxy(const ProxyOptions& options)
+{
+  auto lightField = ReadLightField(options.In);
+  const bool recorded = lightField->GetPass(vtkLightField::DEPTH) != nullptr;
+  vtkNew<vtkLightFieldProxy> proxy;
+  proxy->SetInputData(lightField);
+  proxy->SetReplaceDepth(options.Replace);
+  proxy->SetResolution(options.Resolution);
+  proxy->SetThreshold(options.Threshold);
+  proxy->SetSilhouetteTolerance(options.Tolerance);
+  proxy->SetSweepSteps(options.Steps);
+  proxy->SetSweepDepth(options.Depth);
+  lfd::ShowProgress(proxy, "proxy");
+  StepErrors errors;
+  errors->Observe(proxy);
+  proxy->Update();
+  errors.FailOnError(options.In + ": ");
+  WriteLightField(proxy->GetOutput(), options.Out);
+  std::printf("wrote %s (depth: %s)\n",
+    options.Out.c_str(),
+    recorded && !options.Replace ? "the recorded Depth pass" : "estimated");
+}
+
+void AddProxyCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands)
+{
+  auto proxy = std::make_shared<ProxyOptions>();
+  vtkNew<vtkLightFieldProxy> limits;
+  auto* command = app.add_subcommand("proxy",
+    "compute a light field's geometric proxy once: a Depth pass per view (the visual hull of "
+    "the silhouettes refined by a plane sweep), which `lfd render` focuses rays on "
+    "(render.focal); writes the dataset folder OUT (IN + depth, replaced when complete); a "
+    "recorded Depth pass (synthetic captures) is kept unless --replace");
+  command->add_option("IN", proxy->In, "light-field directory")->required();
+  command->add_option("--out", proxy->Out, "output light-field directory (IN + depth)")
+    ->required();
+  command->add_flag("--replace", proxy->Replace, "estimate even when IN has a Depth pass");
+  numbers.Add(command,
+    "--resolution",
+    proxy->Resolution,
+    limits->GetResolutionMinValue(),
+    limits->GetResolutionMaxValue(),
+    "visual hull voxels along its longest side");
+  numbers.Add(command,
+    "--threshold",
+    proxy->Threshold,
+    limits->GetThresholdMinValue(),
+    limits->GetThresholdMaxValue(),
+    "silhouette brightness threshold (mean of RGB)");
+  numbers.Add(command,
+    "--tolerance",
+    proxy->Tolerance,
+    limits->GetSilhouetteToleranceMinValue(),
+    limits->GetSilhouetteToleranceMaxValue(),
+    "pixels of silhouette or calibration error the visual hull tolerates");
+  numbers.Add(command,
+    "--sweep-steps",
+    proxy->Steps,
+    limits->GetSweepStepsMinValue(),
+    limits->GetSweepStepsMaxValue(),
+    "depths tried per pixel behind the hull (1 = the hull alone)");
+  numbers.Add(command,
+    "--sweep-depth",
+    proxy->Depth,
+    limits->GetSweepDepthMinValue(),
+    limits->GetSweepDepthMaxValue(),
+    "how far behind the hull the sweep reaches, as a fraction of the hull's diagonal");
+  commands.push_back({ command, [proxy] { Proxy(*proxy); }, false });
+}
+
 void AddSplitCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands)
 {
+  AddProxyCommand(app, numbers, commands);
   auto split = std::make_shared<SplitOptions>();
   vtkNew<vtkProjectorSegmentation> projectorLimits;
   vtkNew<vtkScanlineSplit> scanlineLimits;

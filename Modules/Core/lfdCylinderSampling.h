@@ -13,6 +13,13 @@
  * includes a view's lens distortion (PinholeCamera::Project applies it): a
  * distorted photograph is sampled at the distorted pixel that saw the point.
  *
+ * Beyond the paper, a per-view depth map stack (the light field's Depth
+ * pass) can stand for a geometric proxy: LightFieldSampler::GatherOnSurface
+ * focuses a ray on the surface it meets (Gortler et al. 1996's depth
+ * correction) and blends the views nearest to it in angle that see that
+ * point (Buehler et al. 2001, Unstructured Lumigraph Rendering). Without a
+ * depth stack the plane path above is used, unchanged.
+ *
  * Labels are categorical and never averaged: the label of a ray is the
  * weighted vote of its samples and the colour is the weighted mean of the
  * samples whose label matches (weights renormalised), which keeps parts from
@@ -257,7 +264,79 @@ struct RaySamples
   RaySamples() noexcept {}
   RaySample Samples[16];
   int Count = 0;
+  /// Parameter s of the proxy surface point the samples are focused on,
+  /// along the looked-up line o + s d; NaN when they are focused on the
+  /// focal plane (no proxy, or the ray meets no surface).
+  double Surface = std::numeric_limits<double>::quiet_NaN();
 };
+
+/**
+ * Per view v of a depth stack, the smallest and largest positive depth at
+ * 2 v and 2 v + 1 (0 and 0 for a view that sees no surface): the stretch of
+ * a ray that LightFieldSampler::IntersectDepthMap walks.
+ */
+inline std::vector<double> DepthRanges(const ViewStack<float>& depth, int views)
+{
+  std::vector<double> ranges(2 * static_cast<std::size_t>(views), 0.0);
+  const std::size_t pixels = static_cast<std::size_t>(depth.Width) * depth.Height;
+  for (int v = 0; v < views; ++v)
+  {
+    double low = std::numeric_limits<double>::infinity();
+    double high = 0.0;
+    for (std::size_t p = 0; p < pixels; ++p)
+    {
+      const double z = depth.Data[v * pixels + p];
+      if (z > 0.0)
+      {
+        low = std::min(low, z);
+        high = std::max(high, z);
+      }
+    }
+    if (high > 0.0)
+    {
+      ranges[2 * v] = low;
+      ranges[2 * v + 1] = high;
+    }
+  }
+  return ranges;
+}
+
+/**
+ * The axis-aligned bounds, `low` and `high`, of the surface points of a
+ * depth stack (every pixel with a depth, back-projected through its view's
+ * camera): no ray that misses them meets the proxy. False when no view sees
+ * a surface.
+ */
+inline bool DepthBounds(const ViewStack<float>& depth,
+  const PinholeCamera* cameras,
+  int views,
+  glm::dvec3& low,
+  glm::dvec3& high)
+{
+  low = glm::dvec3(std::numeric_limits<double>::infinity());
+  high = -low;
+  for (int v = 0; v < views; ++v)
+  {
+    const PinholeCamera::Unprojection rays = cameras[v].GetUnprojection();
+    for (int y = 0; y < depth.Height; ++y)
+    {
+      for (int x = 0; x < depth.Width; ++x)
+      {
+        const double z = *depth.Pixel(v, x, y);
+        if (z > 0.0)
+        {
+          const glm::dvec3 point = rays(glm::dvec2(x, y), z);
+          low = glm::min(low, point);
+          high = glm::max(high, point);
+        }
+      }
+    }
+  }
+  return low.x <= high.x;
+}
+
+/// Weighted vote of the samples' labels; -1 when there is no sample.
+inline int VoteLabel(const RaySamples& samples);
 
 /**
  * The light field as the sampler sees it: the rig layout, one camera per
@@ -270,15 +349,39 @@ struct LightFieldSampler
   ViewStack<std::uint8_t> Radiance;       // 3 components
   ViewStack<std::uint8_t> Labels;         // 1 component, Data may be null
   double FocalDistance = 0.0;
+  /// The proxy: per-view depth maps (camera z, 0 = no surface), 1 component;
+  /// Data null = the paper's focal plane at FocalDistance.
+  ViewStack<float> Depth;
+  /// Per view v, the smallest and largest depth of its map at 2 v and
+  /// 2 v + 1 (DepthRanges()).
+  const double* DepthRange = nullptr;
+  /// Bounds of the proxy's surface points (DepthBounds()): rays that miss
+  /// them meet no surface. Unbounded by default.
+  glm::dvec3 SurfaceLow{ -std::numeric_limits<double>::infinity() };
+  glm::dvec3 SurfaceHigh{ std::numeric_limits<double>::infinity() };
+  /// Views blended on the proxy surface (k of GatherOnSurface, 1..4).
+  int ProxyViews = 3;
+  /// Relative depth by which a camera's own depth map may be nearer than a
+  /// surface point before the camera counts as not seeing it.
+  double OcclusionTolerance = 0.02;
+
+  /// Steps of the walk along a ray's projection into a depth map.
+  static constexpr int MaximumDepthSteps = 256;
 
   /**
    * Sec. 6.2: gathers the weighted samples of the ray `o + s d` (d need not
    * be unit). Pixels projecting outside a view contribute nothing.
    * Returns false when the ray misses the rig cylinder.
+   *
+   * With a proxy (Depth.Data set) the ray is focused on the surface it meets
+   * first (s >= 0) and blended from the nearest views by angle
+   * (GatherOnSurface); a ray that meets no surface, or whose focused samples
+   * see background, falls back to the focal plane, as without a proxy.
    */
   bool Gather(const glm::dvec3& o, const glm::dvec3& d, RaySamples& out) const
   {
     out.Count = 0;
+    out.Surface = std::numeric_limits<double>::quiet_NaN();
     double s;
     if (!IntersectCylinderEntry(this->Layout->Cyl, o, d, s))
     {
@@ -288,47 +391,323 @@ struct LightFieldSampler
     this->Layout->Locate(o + s * d, azimuth, height);
     WeightedView views[4];
     const int nviews = ChooseViews(*this->Layout, azimuth, height, views);
+    if (this->Depth.Data && this->GatherOnSurface(o, d, azimuth, height, views, nviews, out))
+    {
+      return true;
+    }
     const glm::dvec3 x = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
-    const int w = this->Radiance.Width;
-    const int h = this->Radiance.Height;
     for (int i = 0; i < nviews; ++i)
     {
-      if (views[i].Weight <= 0.0)
+      if (views[i].Weight > 0.0)
       {
-        continue;
-      }
-      glm::dvec2 uv;
-      if (!this->Cameras[views[i].View].Project(x, uv))
-      {
-        continue;
-      }
-      const double fx = std::floor(uv.x);
-      const double fy = std::floor(uv.y);
-      const double ax = uv.x - fx;
-      const double ay = uv.y - fy;
-      const int x0 = static_cast<int>(fx);
-      const int y0 = static_cast<int>(fy);
-      if (x0 < -1 || y0 < -1 || x0 >= w || y0 >= h)
-      {
-        continue;
-      }
-      for (int corner = 0; corner < 4; ++corner)
-      {
-        const int px = x0 + (corner & 1);
-        const int py = y0 + (corner >> 1);
-        const double bw = ((corner & 1) ? ax : 1.0 - ax) * ((corner >> 1) ? ay : 1.0 - ay);
-        if (px < 0 || py < 0 || px >= w || py >= h || bw <= 0.0)
-        {
-          continue;
-        }
-        RaySample& sample = out.Samples[out.Count++];
-        const std::uint8_t* rgb = this->Radiance.Pixel(views[i].View, px, py);
-        sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
-        sample.Weight = views[i].Weight * bw;
-        sample.Label = this->Labels.Data ? *this->Labels.Pixel(views[i].View, px, py) : 0;
+        this->AddBilinear(views[i].View, views[i].Weight, x, out);
       }
     }
     return out.Count > 0;
+  }
+
+  /**
+   * Appends the (up to) 4 bilinear samples of `view` around the projection
+   * of `x`, weighted `weight` x the bilinear weight; nothing when `x` projects
+   * outside the view.
+   */
+  void AddBilinear(int view, double weight, const glm::dvec3& x, RaySamples& out) const
+  {
+    glm::dvec2 uv;
+    if (!this->Cameras[view].Project(x, uv))
+    {
+      return;
+    }
+    const int w = this->Radiance.Width;
+    const int h = this->Radiance.Height;
+    const double fx = std::floor(uv.x);
+    const double fy = std::floor(uv.y);
+    const double ax = uv.x - fx;
+    const double ay = uv.y - fy;
+    const int x0 = static_cast<int>(fx);
+    const int y0 = static_cast<int>(fy);
+    if (x0 < -1 || y0 < -1 || x0 >= w || y0 >= h)
+    {
+      return;
+    }
+    for (int corner = 0; corner < 4; ++corner)
+    {
+      const int px = x0 + (corner & 1);
+      const int py = y0 + (corner >> 1);
+      const double bw = ((corner & 1) ? ax : 1.0 - ax) * ((corner >> 1) ? ay : 1.0 - ay);
+      if (px < 0 || py < 0 || px >= w || py >= h || bw <= 0.0)
+      {
+        continue;
+      }
+      RaySample& sample = out.Samples[out.Count++];
+      const std::uint8_t* rgb = this->Radiance.Pixel(view, px, py);
+      sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+      sample.Weight = weight * bw;
+      sample.Label = this->Labels.Data ? *this->Labels.Pixel(view, px, py) : 0;
+    }
+  }
+
+  /**
+   * The proxy's depth (camera z, 0: no surface) of `view` at the pixel
+   * nearest to `uv`; 0 outside the view.
+   */
+  double DepthAt(int view, const glm::dvec2& uv) const
+  {
+    const long x = std::lround(uv.x);
+    const long y = std::lround(uv.y);
+    if (!(x >= 0 && y >= 0 && x < this->Depth.Width && y < this->Depth.Height))
+    {
+      return 0.0;
+    }
+    return *this->Depth.Pixel(view, static_cast<int>(x), static_cast<int>(y));
+  }
+
+  /**
+   * Where the ray o + s d (start <= s <= end) first goes behind the depth map of `view`
+   * (Gortler et al. 1996's depth correction, Lumigraph Sec. 3.6): the ray is
+   * walked over the stretch whose camera z lies in the view's depth range,
+   * one step per pixel of its projection (at most MaximumDepthSteps), and
+   * the crossing is interpolated between the last step in front of the
+   * surface and the first behind it. Where the view does not see the ray's
+   * surface (another part hides it), the crossing comes earlier than the
+   * surface, never later: the latest crossing of several views is the best
+   * estimate. False when the ray stays in front of the map.
+   */
+  bool IntersectDepthMap(int view,
+    const glm::dvec3& o,
+    const glm::dvec3& d,
+    double start,
+    double end,
+    double& hit) const
+  {
+    const PinholeCamera& camera = this->Cameras[view];
+    // 1% of margin around the range keeps the first and last surface pixels.
+    const double zLow = 0.99 * this->DepthRange[2 * view];
+    const double zHigh = 1.01 * this->DepthRange[2 * view + 1];
+    if (!(zHigh > 0.0))
+    {
+      return false;
+    }
+    const glm::dvec3 forward = camera.Forward();
+    const double co = glm::dot(forward, o) + camera.t.z; // camera z along the ray
+    const double cd = glm::dot(forward, d);
+    if (!(std::abs(cd) > 1e-12 * glm::length(d)))
+    {
+      return false; // parallel to the image plane: no bounded stretch
+    }
+    double s0 = (zLow - co) / cd;
+    double s1 = (zHigh - co) / cd;
+    if (s0 > s1)
+    {
+      std::swap(s0, s1);
+    }
+    s0 = std::max(s0, start);
+    s1 = std::min(s1, end);
+    glm::dvec2 uv0, uv1;
+    if (!(s0 < s1) || !camera.Project(o + s0 * d, uv0) || !camera.Project(o + s1 * d, uv1))
+    {
+      return false;
+    }
+    const int steps = static_cast<int>(
+      std::clamp(std::ceil(glm::distance(uv0, uv1)), 1.0, double(MaximumDepthSteps)));
+    double previousS = s0;
+    double previousGap = std::numeric_limits<double>::quiet_NaN(); // NaN: no surface there
+    for (int i = 0; i <= steps; ++i)
+    {
+      const double s = s0 + (s1 - s0) * i / steps;
+      glm::dvec2 uv;
+      const double surface = camera.Project(o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
+      const double gap =
+        surface > 0.0 ? co + s * cd - surface : std::numeric_limits<double>::quiet_NaN();
+      if (gap >= 0.0)
+      {
+        hit =
+          previousGap < 0.0 ? previousS + (s - previousS) * previousGap / (previousGap - gap) : s;
+        return true;
+      }
+      previousS = s;
+      previousGap = gap;
+    }
+    return false;
+  }
+
+  /**
+   * Beyond the paper: the samples of the ray o + s d focused on the proxy
+   * surface (Buehler et al. 2001, Unstructured Lumigraph Rendering). The
+   * surface point X is the latest crossing of the ray with the depth maps of
+   * its two heaviest ring neighbours (IntersectDepthMap). The candidate
+   * cameras are the 4 views around the ray's azimuth in the rows around its
+   * height (one row more above and below); of those that see X (their depth
+   * at X's projection is not nearer than X's by more than
+   * OcclusionTolerance), the ProxyViews nearest in angle to the ray at X
+   * are blended with ULR's weights (1 - p / p_k+1) / p, p the angular
+   * penalty (chord between the unit directions to the eye and to the
+   * camera), p_k+1 that of the next candidate. False (out.Count 0) when the
+   * ray meets no surface, and where the focused samples vote for background
+   * (near a silhouette, where one depth per pixel is least certain): such
+   * rays are looked up through the plane, as without a proxy (fish at rest:
+   * IoU 0.985 -> 0.992, 28.86 -> 30.29 dB).
+   */
+  bool GatherOnSurface(const glm::dvec3& o,
+    const glm::dvec3& d,
+    double azimuth,
+    double height,
+    const WeightedView* neighbours,
+    int count,
+    RaySamples& out) const
+  {
+    // The two heaviest ring neighbours.
+    int first = -1, second = -1;
+    for (int i = 0; i < count; ++i)
+    {
+      if (first < 0 || neighbours[i].Weight > neighbours[first].Weight)
+      {
+        second = first;
+        first = i;
+      }
+      else if (second < 0 || neighbours[i].Weight > neighbours[second].Weight)
+      {
+        second = i;
+      }
+    }
+    // The stretch of the ray (s >= 0) inside the surface's bounds.
+    double enter = 0.0;
+    double leave = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a)
+    {
+      if (d[a] == 0.0)
+      {
+        if (o[a] < this->SurfaceLow[a] || o[a] > this->SurfaceHigh[a])
+        {
+          return false;
+        }
+        continue;
+      }
+      const double s0 = (this->SurfaceLow[a] - o[a]) / d[a];
+      const double s1 = (this->SurfaceHigh[a] - o[a]) / d[a];
+      enter = std::max(enter, std::min(s0, s1));
+      leave = std::min(leave, std::max(s0, s1));
+    }
+    if (!(enter <= leave))
+    {
+      return false;
+    }
+    // The latest crossing is the estimate, so the second walk starts where
+    // the first one crossed: nothing before it can matter.
+    double surface = -1.0;
+    for (int i : { first, second })
+    {
+      double hit;
+      if (i >= 0 &&
+        this->IntersectDepthMap(neighbours[i].View, o, d, std::max(surface, enter), leave, hit))
+      {
+        surface = hit;
+      }
+    }
+    if (!(surface >= 0.0))
+    {
+      return false;
+    }
+    const glm::dvec3 x = o + surface * d;
+    struct Candidate
+    {
+      double Penalty;
+      int View;
+    };
+    Candidate candidates[16];
+    const int n = this->ProxyCandidates(azimuth, height, x, -glm::normalize(d), candidates);
+    std::sort(candidates,
+      candidates + n,
+      [](const Candidate& a, const Candidate& b) { return a.Penalty < b.Penalty; });
+    // The visible candidates, nearest first, up to one more than blended.
+    const int k = std::clamp(this->ProxyViews, 1, 4);
+    Candidate chosen[5];
+    int visible = 0;
+    for (int i = 0; i < n && visible <= k; ++i)
+    {
+      const PinholeCamera& camera = this->Cameras[candidates[i].View];
+      glm::dvec2 uv;
+      if (!camera.Project(x, uv))
+      {
+        continue;
+      }
+      const double seen = this->DepthAt(candidates[i].View, uv);
+      const double z = glm::dot(camera.Forward(), x) + camera.t.z;
+      if (seen > 0.0 && z > seen * (1.0 + this->OcclusionTolerance))
+      {
+        continue;
+      }
+      chosen[visible++] = candidates[i];
+    }
+    if (visible == 0)
+    {
+      return false;
+    }
+    const int blended = std::min(visible, k);
+    const double threshold =
+      visible > k ? chosen[k].Penalty : 2.0 * chosen[blended - 1].Penalty + 1e-9;
+    double weights[4];
+    double total = 0.0;
+    for (int i = 0; i < blended; ++i)
+    {
+      const double p = std::max(chosen[i].Penalty, 1e-9);
+      weights[i] = std::max(1.0 - p / threshold, 0.0) / p;
+      total += weights[i];
+    }
+    if (!(total > 0.0))
+    {
+      return false;
+    }
+    for (int i = 0; i < blended; ++i)
+    {
+      this->AddBilinear(chosen[i].View, weights[i] / total, x, out);
+    }
+    // Near a silhouette the depth maps are least certain (one depth per
+    // pixel, nearest pixel): where the focused samples vote for background,
+    // the ray is looked up as without a proxy, through the plane.
+    if (out.Count == 0 || (this->Labels.Data && VoteLabel(out) == 0))
+    {
+      out.Count = 0;
+      return false;
+    }
+    out.Surface = surface;
+    return true;
+  }
+
+  /**
+   * The candidate cameras of GatherOnSurface: in each row from the one below
+   * `height` minus one to the one above plus one, the 4 views around
+   * `azimuth` (all of a row of fewer), each with its angular penalty at `x`
+   * for the unit direction `toEye`. Returns their number (at most 16).
+   */
+  template<typename Candidate>
+  int ProxyCandidates(double azimuth,
+    double height,
+    const glm::dvec3& x,
+    const glm::dvec3& toEye,
+    Candidate* out) const
+  {
+    const int rows = static_cast<int>(this->Layout->Rows.size());
+    int below = 0;
+    while (below + 1 < rows && this->Layout->Rows[below + 1].Height <= height)
+    {
+      ++below;
+    }
+    int n = 0;
+    for (int r = std::max(below - 1, 0); r <= std::min(below + 2, rows - 1); ++r)
+    {
+      const RingRow& row = this->Layout->Rows[r];
+      const int views = static_cast<int>(row.Azimuth.size());
+      const int upper = static_cast<int>(
+        std::upper_bound(row.Azimuth.begin(), row.Azimuth.end(), azimuth) - row.Azimuth.begin());
+      for (int i = 0; i < std::min(views, 4); ++i)
+      {
+        const int view = row.View[((upper - 2 + i) % views + views) % views];
+        const glm::dvec3 toCamera = glm::normalize(this->Cameras[view].Center() - x);
+        out[n++] = { glm::distance(toCamera, toEye), view };
+      }
+    }
+    return n;
   }
 
   /**
@@ -436,7 +815,6 @@ struct LightFieldSampler
   }
 };
 
-/// Weighted vote of the samples' labels; -1 when there is no sample.
 inline int VoteLabel(const RaySamples& samples)
 {
   // The distinct labels in order of first appearance and their weights

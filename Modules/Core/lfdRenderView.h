@@ -32,10 +32,12 @@
  *   bool Widen(const glm::dvec3& a, const glm::dvec3& b, int label, glm::dvec3& color) const;
  *     the widened search along the rest-space segment [a, b] for `label`;
  *   double FocalDepth(const glm::dvec3& o, const glm::dvec3& d) const;
- *     the depth reported for a ray that no box claims;
+ *     the depth reported for a ray that no box claims and whose samples are
+ *     not focused on a proxy surface (RaySamples::Surface NaN);
  *   double FocalParameter(const glm::dvec3& o, const glm::dvec3& d) const;
  *     the s of the point o + s d of the rest-space ray that Gather samples
- *     the cameras at (its focal surface).
+ *     the cameras at on its focal plane or cylinder (with a proxy, the
+ *     samples' own RaySamples::Surface is used instead when it is set).
  *
  * A lookup sees the first surface along the whole line of a warped ray, not
  * only along its interval, and it samples the cameras at the line's focal
@@ -66,6 +68,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -497,9 +500,10 @@ struct ViewSample
   int Label = -1; ///< the part (0: background or a part without a box; -1: no camera sees the ray)
   /// Meaningful when Label >= 0 or Coverage > 0 (then background is blended in).
   glm::dvec3 Color{ 0.0 };
-  /// The ray parameter t of the seen point, approximate: the middle of the
-  /// accepted interval, or the lookup's FocalDepth when no box claims the
-  /// ray; 0 for a ray that shows background through a fully owned light field.
+  /// The ray parameter t of the seen point: with a proxy, its surface point
+  /// (SegmentDepth); without, approximate: the middle of the accepted
+  /// interval, or the lookup's FocalDepth when no box claims the ray; 0 for a
+  /// ray that shows background through a fully owned light field.
   double Depth = 0.0;
   /// The part of the pixel that moved parts cover by anti-aliasing (see
   /// RenderViewSettings::AntiAliasing) where Label does not say so: > 0 on a
@@ -620,6 +624,26 @@ struct ViewRayLook
     return this->Seen;
   }
 };
+
+/**
+ * The ray parameter t of the point an interval shows: the proxy surface
+ * point the samples were focused on (RaySamples::Surface), clamped to the
+ * interval (a moved box: its rest depth along the warped ray, mapped to the
+ * same fraction of the view ray's interval; a box at rest: the view ray's
+ * own parameter), else the middle of the interval.
+ */
+inline double SegmentDepth(const WarpedSegment& segment, bool moved, double surface)
+{
+  if (std::isnan(surface))
+  {
+    return 0.5 * (segment.TEnter + segment.TExit);
+  }
+  if (moved)
+  {
+    return segment.TEnter + std::clamp(surface, 0.0, 1.0) * (segment.TExit - segment.TEnter);
+  }
+  return std::clamp(surface, segment.TEnter, segment.TExit);
+}
 
 /**
  * How much of the pixel of a ray whose samples are `samples` shows `label`:
@@ -770,7 +794,7 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
       continue;
     }
     DeferredMatch candidate{
-      box.Label, alpha, glm::dvec3(0.0), 0.5 * (segment.TEnter + segment.TExit)
+      box.Label, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
     };
     BlendLabel(*seenSamples, box.Label, candidate.Color);
     if (!match)
@@ -778,7 +802,10 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
       composite.Add(alpha, candidate.Color);
       continue;
     }
-    if (box.Moved && lookup.FocalParameter(segment.RestEnter, direction) > 1.0)
+    const double focal = std::isnan(seenSamples->Surface)
+      ? lookup.FocalParameter(segment.RestEnter, direction)
+      : seenSamples->Surface;
+    if (box.Moved && focal > 1.0)
     {
       held = candidate;
       continue;
@@ -827,8 +854,9 @@ ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& s
   {
     return result;
   }
-  result.Depth = view.Light.FocalDepth(view.O, view.D);
   RaySamples& samples = *view.Samples;
+  result.Depth =
+    std::isnan(samples.Surface) ? view.Light.FocalDepth(view.O, view.D) : samples.Surface;
   if (!settings.UseLabels)
   {
     BlendLabel(samples, 0, result.Color);

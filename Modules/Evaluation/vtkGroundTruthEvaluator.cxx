@@ -184,6 +184,7 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
   renderer->SetWidth(this->Width);
   renderer->SetHeight(this->Height);
   renderer->SetFocalDistance(this->FocalDistance);
+  renderer->SetFocalSurface(this->FocalSurface);
   renderer->SetSubdivision(this->Subdivision);
   renderer->SetWidenedSearch(this->WidenedSearch);
   renderer->SetObjectThreshold(this->ObjectThreshold);
@@ -290,6 +291,7 @@ void vtkGroundTruthEvaluator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Width: " << this->Width << "\n";
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
+  os << indent << "FocalSurface: " << this->FocalSurface << "\n";
   os << indent << "Subdivision: " << this->Subdivision << "\n";
   os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";
   os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";

@@ -77,6 +77,15 @@ public:
    */
   vtkSetMacro(FocalDistance, double);
   vtkGetMacro(FocalDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Focal surface passed to the renderer (vtkLightFieldRenderer::FocalSurfaceType;
+   * default automatic: the proxy when the light field has a Depth pass).
+   */
+  vtkSetClampMacro(FocalSurface, int, 0, 2);
+  vtkGetMacro(FocalSurface, int);
   vtkSetMacro(Subdivision, int);
   vtkGetMacro(Subdivision, int);
   vtkSetClampMacro(WidenedSearch, int, 0, 64);
@@ -147,6 +156,7 @@ protected:
   int Width = 256;
   int Height = 256;
   double FocalDistance = 0.0;
+  int FocalSurface = 0;
   int Subdivision = 1;
   int WidenedSearch = 2;
   double ObjectThreshold = 10.0;

@@ -129,6 +129,7 @@ int vtkLeaveOneOutEvaluator::RequestData(vtkInformation*,
   renderer->SetWidth(input->GetWidth());
   renderer->SetHeight(input->GetHeight());
   renderer->SetFocalDistance(this->FocalDistance);
+  renderer->SetFocalSurface(this->FocalSurface);
   // The renderer's error is said once, as this evaluator's.
   vtkNew<vtkLightFieldErrorObserver> errors;
   errors->Observe(renderer);
@@ -209,6 +210,7 @@ void vtkLeaveOneOutEvaluator::PrintSelf(ostream& os, vtkIndent indent)
   os << "\n";
   os << indent << "Stride: " << this->Stride << "\n";
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
+  os << indent << "FocalSurface: " << this->FocalSurface << "\n";
   os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
   os << indent << "MeanPSNR: " << this->MeanPSNR << "\n";
   os << indent << "MeanObjectPSNR: " << this->MeanObjectPSNR << "\n";

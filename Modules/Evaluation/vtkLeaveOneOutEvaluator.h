@@ -61,6 +61,15 @@ public:
 
   ///@{
   /**
+   * Focal surface passed to the renderer (vtkLightFieldRenderer::FocalSurfaceType;
+   * default automatic: the proxy when the light field has a Depth pass).
+   */
+  vtkSetClampMacro(FocalSurface, int, 0, 2);
+  vtkGetMacro(FocalSurface, int);
+  ///@}
+
+  ///@{
+  /**
    * Brightest-channel value (0-255) above which a pixel counts as object
    * when the light field has no Label pass. Default 20.
    */
@@ -98,6 +107,7 @@ protected:
   std::vector<int> Views;
   int Stride = 1;
   double FocalDistance = 0.0;
+  int FocalSurface = 0;
   int ObjectThreshold = 20;
   double MeanPSNR = 0.0;
   double MeanObjectPSNR = 0.0;

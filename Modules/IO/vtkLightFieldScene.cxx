@@ -20,9 +20,11 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <utility>
@@ -308,10 +310,14 @@ void ParseCamera(const Json& cam, vtkCamera* camera, int& width, int& height)
   }
 }
 
+// render.focal, in the order of vtkLightFieldRenderer::FocalSurfaceType.
+const char* const FocalSurfaceNames[] = { "auto", "plane", "proxy" };
+
 // The "render" settings, with their defaults.
 struct RenderSettings
 {
   double FocalDistance = 0.0;
+  int FocalSurface = 0;
   int Subdivision = 1;
   int WidenedSearch = 2;
   double ObjectThreshold = 10.0;
@@ -323,6 +329,18 @@ void ParseRender(const Json& render, RenderSettings& settings)
   if (const Json* v = lfd::io::FindMember(render, "render", "focal_distance"))
   {
     settings.FocalDistance = lfd::io::GetNumber(*v, "render.focal_distance");
+  }
+  if (const Json* v = lfd::io::FindMember(render, "render", "focal"))
+  {
+    const auto name = std::find(std::begin(FocalSurfaceNames),
+      std::end(FocalSurfaceNames),
+      v->is_string() ? v->get<std::string>() : std::string());
+    if (name == std::end(FocalSurfaceNames))
+    {
+      throw FieldError("render.focal",
+        "expected \"auto\", \"plane\" or \"proxy\", found " + lfd::io::Describe(*v));
+    }
+    settings.FocalSurface = static_cast<int>(name - std::begin(FocalSurfaceNames));
   }
   if (const Json* v = lfd::io::FindMember(render, "render", "subdivision"))
   {
@@ -404,6 +422,7 @@ void vtkLightFieldScene::Initialize()
   this->Width = 512;
   this->Height = 512;
   this->FocalDistance = 0.0;
+  this->FocalSurface = 0;
   this->Subdivision = 1;
   this->WidenedSearch = 2;
   this->ObjectThreshold = 10.0;
@@ -591,6 +610,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
   this->Width = width;
   this->Height = height;
   this->FocalDistance = settings.FocalDistance;
+  this->FocalSurface = settings.FocalSurface;
   this->Subdivision = settings.Subdivision;
   this->WidenedSearch = settings.WidenedSearch;
   this->ObjectThreshold = settings.ObjectThreshold;
@@ -745,6 +765,10 @@ bool vtkLightFieldScene::WriteFile(const char* fileName)
   document["camera"] = cameraJson;
   Json render;
   render["focal_distance"] = this->FocalDistance;
+  if (this->FocalSurface != 0)
+  {
+    render["focal"] = FocalSurfaceNames[this->FocalSurface];
+  }
   if (this->Subdivision == 0)
   {
     render["subdivision"] = "auto";
@@ -793,6 +817,7 @@ void vtkLightFieldScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Width: " << this->Width << "\n";
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
+  os << indent << "FocalSurface: " << FocalSurfaceNames[this->FocalSurface] << "\n";
   os << indent << "Subdivision: " << this->Subdivision << (this->Subdivision == 0 ? " (auto)" : "")
      << "\n";
   os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";

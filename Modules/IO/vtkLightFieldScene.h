@@ -19,7 +19,9 @@
  *   are interpolated (Interpolation: linear or Catmull-Rom, the default).
  * - Camera: a vtkCamera (position, focal point, view up, view angle in
  *   degrees) and the image Width x Height (default 512 x 512, 30 degrees).
- * - Render settings: FocalDistance (default 0), Subdivision (k x k x k
+ * - Render settings: FocalDistance (default 0), FocalSurface (`render.focal`:
+ *   "auto", the default, "plane" or "proxy"; see
+ *   vtkLightFieldRenderer::SetFocalSurface), Subdivision (k x k x k
  *   sub-boxes per box, >= 1, default 1; the string "auto" is stored as 0,
  *   see GetSubdivisionAuto()), WidenedSearch (views searched on each side
  *   for regions a deformation uncovers, >= 0, default 2, 0 = off),
@@ -196,6 +198,16 @@ public:
 
   ///@{
   /**
+   * The focal surface, `render.focal`: 0 "auto" (default: the proxy when
+   * the light field has a Depth pass), 1 "plane", 2 "proxy" (the values of
+   * vtkLightFieldRenderer::FocalSurfaceType). Written only when not "auto".
+   */
+  vtkSetClampMacro(FocalSurface, int, 0, 2);
+  vtkGetMacro(FocalSurface, int);
+  ///@}
+
+  ///@{
+  /**
    * Tessellation of every box into k x k x k sub-boxes (DESIGN.md 4.4);
    * k >= 1, default 1. 0 means "auto" (the renderer chooses).
    */
@@ -242,6 +254,7 @@ protected:
   int Width = 512;
   int Height = 512;
   double FocalDistance = 0.0;
+  int FocalSurface = 0;
   int Subdivision = 1;
   int WidenedSearch = 2;
   double ObjectThreshold = 10.0;

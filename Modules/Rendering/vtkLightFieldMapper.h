@@ -7,9 +7,12 @@
  * active camera at the viewport's size (input port 0: the vtkLightField;
  * port 1, optional: the deformation cage) and draws it as a full-viewport
  * quad that also writes depth, so ordinary VTK actors (the cage outline,
- * widgets) composite with it. Depth is approximate (see
- * vtkLightFieldRenderer's `Depth` array): the middle of the part's box along
- * the ray. Background pixels are not drawn.
+ * widgets) composite with it. With a proxy (a light field with a Depth
+ * pass: vtkLightFieldRenderer's focal surface, automatic by default) the
+ * depth is the object's surface, through the warp when deformed, so an actor
+ * inside the object is hidden; through the focal plane it is approximate:
+ * the middle of the part's box along the ray (see vtkLightFieldRenderer's
+ * `Depth` array). Background pixels are not drawn.
  *
  * The image is recomputed only when the camera, the cage, the light field or
  * the viewport size change (pipeline modification times). While the render

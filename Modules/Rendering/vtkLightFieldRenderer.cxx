@@ -527,6 +527,25 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.Labels = { labels->GetPointer(0), input->GetWidth(), input->GetHeight(), 1 };
   }
   sampler.FocalDistance = this->FocalDistance;
+  vtkDataArray* depth = input->GetPass(vtkLightField::DEPTH);
+  if (this->FocalSurface == FOCAL_PROXY && !vtkFloatArray::SafeDownCast(depth))
+  {
+    vtkErrorMacro("The focal surface is the proxy (render.focal: proxy) but the light field has "
+                  "no float Depth pass: compute one with `lfd proxy`.");
+    return 0;
+  }
+  if (this->FocalSurface != FOCAL_PLANE && vtkFloatArray::SafeDownCast(depth))
+  {
+    sampler.Depth = {
+      vtkFloatArray::SafeDownCast(depth)->GetPointer(0), input->GetWidth(), input->GetHeight(), 1
+    };
+    const std::vector<double>& extent =
+      this->GetProxyExtent(depth, input->GetWidth(), input->GetHeight(), rig, cameras);
+    sampler.DepthRange = extent.data() + 6;
+    sampler.SurfaceLow = glm::dvec3(extent[0], extent[1], extent[2]);
+    sampler.SurfaceHigh = glm::dvec3(extent[3], extent[4], extent[5]);
+    sampler.ProxyViews = this->ProxyViews;
+  }
   settings.WidenedSearch = this->WidenedSearch > 0;
   settings.AntiAliasing = this->AntiAliasing;
   settings.Owned = lfd::OwnedLabels(boxes);
@@ -595,6 +614,34 @@ void vtkLightFieldRenderer::GetEyePinhole(double K[9], double R[9], double t[3])
   std::copy(this->PinholeK, this->PinholeK + 9, K);
   std::copy(this->PinholeR, this->PinholeR + 9, R);
   std::copy(this->PinholeT, this->PinholeT + 3, t);
+}
+
+//------------------------------------------------------------------------------
+const std::vector<double>& vtkLightFieldRenderer::GetProxyExtent(vtkDataArray* depth,
+  int width,
+  int height,
+  vtkCameraRig* rig,
+  const std::vector<lfd::PinholeCamera>& cameras)
+{
+  if (depth != this->ProxyExtentArray || depth->GetMTime() > this->ProxyExtentTime ||
+    rig->GetMTime() > this->ProxyExtentTime)
+  {
+    const int views = static_cast<int>(cameras.size());
+    const lfd::ViewStack<float> stack{
+      vtkFloatArray::SafeDownCast(depth)->GetPointer(0), width, height, 1
+    };
+    glm::dvec3 low, high;
+    if (!lfd::DepthBounds(stack, cameras.data(), views, low, high))
+    {
+      low = high = glm::dvec3(0.0); // no surface: every ray misses it
+    }
+    this->ProxyExtent = { low.x, low.y, low.z, high.x, high.y, high.z };
+    const std::vector<double> ranges = lfd::DepthRanges(stack, views);
+    this->ProxyExtent.insert(this->ProxyExtent.end(), ranges.begin(), ranges.end());
+    this->ProxyExtentArray = depth;
+    this->ProxyExtentTime.Modified();
+  }
+  return this->ProxyExtent;
 }
 
 //------------------------------------------------------------------------------
@@ -676,6 +723,9 @@ void vtkLightFieldRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
   os << indent << "FocalDepth: " << this->FocalDepth << "\n";
   os << indent << "Aperture: " << this->Aperture << "\n";
+  static const char* const surfaces[] = { "automatic", "plane", "proxy" };
+  os << indent << "FocalSurface: " << surfaces[this->FocalSurface] << "\n";
+  os << indent << "ProxyViews: " << this->ProxyViews << "\n";
   os << indent << "Background: " << this->Background[0] << " " << this->Background[1] << " "
      << this->Background[2] << "\n";
   os << indent << "UseLabels: " << this->UseLabels << "\n";

@@ -41,8 +41,9 @@
  * The output is a Width x Height vtkImageData in VTK row order (bottom row
  * first) with the point arrays `Radiance` (RGB uint8, the active scalars)
  * `Label` (uint8, the winning label; 0 also where no view sees the ray) and
- * `Depth` (float, camera z of the seen point, approximate: the middle of the
- * accepted segment inside its box, or the focal point; 0 on background).
+ * `Depth` (float, camera z of the seen point: on the proxy surface with
+ * FocalSurface proxy; with the plane approximate, the middle of the accepted
+ * segment inside its box, or the focal point; 0 on background).
  * With AntiAliasing (default) the silhouettes of moved parts are soft in
  * `Radiance`: a pixel next to one may show part of the object over
  * Background while its `Label` is 0.
@@ -60,7 +61,14 @@
 
 #include <vector> // For std::vector
 
+namespace lfd
+{
+struct PinholeCamera;
+}
+
 class vtkCamera;
+class vtkCameraRig;
+class vtkDataArray;
 class vtkDeformationCage;
 class vtkLightField;
 class vtkUnstructuredGrid;
@@ -116,6 +124,45 @@ public:
    */
   vtkSetMacro(FocalDistance, double);
   vtkGetMacro(FocalDistance, double);
+  ///@}
+
+  /// Where a ray is focused (see SetFocalSurface).
+  enum FocalSurfaceType
+  {
+    FOCAL_AUTOMATIC = 0,
+    FOCAL_PLANE,
+    FOCAL_PROXY
+  };
+
+  ///@{
+  /**
+   * The focal surface. FOCAL_PLANE: the paper's plane at FocalDistance
+   * (Sec. 6.2), 4 ring neighbours blended quadrilinearly. FOCAL_PROXY (beyond
+   * the paper): the light field's `Depth` pass is a geometric proxy; a ray is
+   * focused where it meets that surface (per pixel, Gortler et al. 1996) and
+   * blended from the ProxyViews cameras nearest to it in angle that see the
+   * point (Buehler et al. 2001); rays that meet no surface use the plane.
+   * The rendered Depth is then the surface's (through the warp: the rest
+   * depth mapped into the deformed box), so VTK actors composite correctly
+   * with the object. FOCAL_AUTOMATIC (default): the proxy when the light
+   * field has a Depth pass (a synthetic capture, or `lfd proxy`), else the
+   * plane. FOCAL_PROXY on a light field without a Depth pass is an error.
+   * See lfd::LightFieldSampler::GatherOnSurface.
+   */
+  vtkSetClampMacro(FocalSurface, int, FOCAL_AUTOMATIC, FOCAL_PROXY);
+  vtkGetMacro(FocalSurface, int);
+  void SetFocalSurfaceToAutomatic() { this->SetFocalSurface(FOCAL_AUTOMATIC); }
+  void SetFocalSurfaceToPlane() { this->SetFocalSurface(FOCAL_PLANE); }
+  void SetFocalSurfaceToProxy() { this->SetFocalSurface(FOCAL_PROXY); }
+  ///@}
+
+  ///@{
+  /**
+   * Cameras blended per ray on the proxy surface (k nearest in angle that
+   * see the point), 1..4. Default 3.
+   */
+  vtkSetClampMacro(ProxyViews, int, 1, 4);
+  vtkGetMacro(ProxyViews, int);
   ///@}
 
   ///@{
@@ -310,6 +357,8 @@ protected:
   double FocalDistance = 0.0;
   double FocalDepth = 0.0;
   double Aperture = 0.0;
+  int FocalSurface = FOCAL_AUTOMATIC;
+  int ProxyViews = 3;
   double Background[3] = { 0.0, 0.0, 0.0 };
   bool UseLabels = true;
   int Subdivision = 1;
@@ -343,7 +392,25 @@ private:
    */
   vtkLightField* OnePart(vtkLightField* input, int label);
 
-  std::vector<int> LastSubdivisions;    // the k of each box in the last update
+  std::vector<int> LastSubdivisions; // the k of each box in the last update
+#ifndef __VTK_WRAP__
+  /**
+   * The proxy's extent: the bounds of its surface points (6 values, low
+   * then high, lfd::DepthBounds), then per view the smallest and largest
+   * depth (lfd::DepthRanges); cached while the Depth pass and the rig are
+   * unchanged.
+   */
+  const std::vector<double>& GetProxyExtent(vtkDataArray* depth,
+    int width,
+    int height,
+    vtkCameraRig* rig,
+    const std::vector<lfd::PinholeCamera>& cameras);
+#endif
+
+  std::vector<double> ProxyExtent;
+  vtkDataArray* ProxyExtentArray = nullptr; // compared, never dereferenced
+  vtkTimeStamp ProxyExtentTime;
+
   vtkSmartPointer<vtkLightField> Parts; // the derived light field of OnePart()
   vtkLightField* PartsInput = nullptr;  // compared, never dereferenced
   vtkTimeStamp PartsTime;

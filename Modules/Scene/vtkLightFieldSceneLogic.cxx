@@ -840,6 +840,7 @@ void ApplySceneView(Target* target, vtkLightFieldScene* scene)
   target->SetWidth(scene->GetWidth());
   target->SetHeight(scene->GetHeight());
   target->SetFocalDistance(scene->GetFocalDistance());
+  target->SetFocalSurface(scene->GetFocalSurface());
   target->SetSubdivision(scene->GetSubdivision()); // 0 = "auto" in all three
   target->SetWidenedSearch(scene->GetWidenedSearch());
   target->SetObjectThreshold(scene->GetObjectThreshold());

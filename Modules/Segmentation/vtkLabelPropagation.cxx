@@ -2,6 +2,7 @@
 
 #include "lfdLabelMorphology.h"
 #include "lfdPinholeCamera.h"
+#include "lfdVisualHull.h"
 #include "vtkCameraRig.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -30,170 +31,12 @@ vtkStandardNewMacro(vtkLabelPropagation);
 
 namespace
 {
-// An axis-aligned voxel grid: voxel (i, j, k) spans Origin + Size * [i, i+1).
-struct VoxelGrid
-{
-  glm::dvec3 Origin{ 0.0 };
-  double Size = 1.0;
-  std::array<int, 3> Count{ 0, 0, 0 };
+using lfd::segmentation::Carve;
+using lfd::segmentation::HullBounds;
+using lfd::segmentation::March;
+using lfd::segmentation::Silhouettes;
+using lfd::segmentation::VoxelGrid;
 
-  VoxelGrid(const glm::dvec3& low, const glm::dvec3& high, int resolution)
-  {
-    const glm::dvec3 extent = high - low;
-    this->Size = std::max({ extent.x, extent.y, extent.z }) / resolution;
-    for (int c = 0; c < 3; ++c)
-    {
-      this->Count[c] = std::max(1, static_cast<int>(std::ceil(extent[c] / this->Size)));
-    }
-    this->Origin = low;
-  }
-  vtkIdType Voxels() const { return static_cast<vtkIdType>(Count[0]) * Count[1] * Count[2]; }
-  glm::dvec3 Centre(vtkIdType v) const
-  {
-    const vtkIdType i = v % Count[0];
-    const vtkIdType j = (v / Count[0]) % Count[1];
-    const vtkIdType k = v / (static_cast<vtkIdType>(Count[0]) * Count[1]);
-    return this->Origin + this->Size * glm::dvec3(i + 0.5, j + 0.5, k + 0.5);
-  }
-  // Voxel holding X, or -1 outside the grid.
-  vtkIdType Find(const glm::dvec3& X) const
-  {
-    const glm::dvec3 g = (X - this->Origin) / this->Size;
-    std::array<vtkIdType, 3> ijk;
-    for (int c = 0; c < 3; ++c)
-    {
-      if (!(g[c] >= 0.0) || g[c] >= Count[c])
-      {
-        return -1;
-      }
-      ijk[c] = static_cast<vtkIdType>(g[c]);
-    }
-    return ijk[0] + Count[0] * (ijk[1] + Count[1] * ijk[2]);
-  }
-};
-
-// Per view: is pixel (x, y) (OpenCV coordinates) object? `silhouettes`
-// holds W x H bytes per view, VTK row order.
-struct Silhouettes
-{
-  std::vector<unsigned char> Mask;
-  std::vector<float> Distance; // to the silhouette, pixels (visual hull only)
-  int Width = 0;
-  int Height = 0;
-  // Is the silhouette within `radius` pixels of `pixel`?
-  bool Near(int view, const glm::dvec2& pixel, double radius) const
-  {
-    const long x = std::lround(pixel.x);
-    const long y = std::lround(pixel.y);
-    if (x < 0 || y < 0 || x >= Width || y >= Height)
-    {
-      return false;
-    }
-    return Distance[(static_cast<vtkIdType>(view) * Height + (Height - 1 - y)) * Width + x] <=
-      radius;
-  }
-};
-
-// Keeps the voxels of `grid` that overlap every silhouette: the projected
-// centre lies within the voxel's projected half-diagonal (plus `slack`
-// pixels) of it, so that parts thinner than a voxel (fins, thin columns)
-// and small calibration errors survive the carve.
-std::vector<unsigned char> Carve(const VoxelGrid& grid,
-  vtkCameraRig* rig,
-  const Silhouettes& s,
-  double slack)
-{
-  std::vector<unsigned char> occupied(grid.Voxels(), 0);
-  const int views = rig->GetNumberOfViews();
-  vtkSMPTools::For(0,
-    grid.Voxels(),
-    [&](vtkIdType first, vtkIdType last)
-    {
-      for (vtkIdType v = first; v < last; ++v)
-      {
-        const glm::dvec3 X = grid.Centre(v);
-        bool inside = true;
-        for (int view = 0; view < views && inside; ++view)
-        {
-          const lfd::PinholeCamera& camera = rig->GetCamera(view);
-          glm::dvec2 pixel;
-          inside = camera.Project(X, pixel) &&
-            s.Near(view,
-              pixel,
-              0.866 * grid.Size * camera.K[0][0] / (camera.R * X + camera.t).z + slack);
-        }
-        occupied[v] = inside ? 1 : 0;
-      }
-    });
-  return occupied;
-}
-
-// Bounds of the occupied voxels, grown by `margin` voxels; false if none.
-bool OccupiedBounds(const VoxelGrid& grid,
-  const std::vector<unsigned char>& occupied,
-  double margin,
-  glm::dvec3& low,
-  glm::dvec3& high)
-{
-  low = glm::dvec3(std::numeric_limits<double>::infinity());
-  high = -low;
-  bool any = false;
-  for (vtkIdType v = 0; v < grid.Voxels(); ++v)
-  {
-    if (occupied[v])
-    {
-      const glm::dvec3 c = grid.Centre(v);
-      low = glm::min(low, c);
-      high = glm::max(high, c);
-      any = true;
-    }
-  }
-  low -= (0.5 + margin) * grid.Size;
-  high += (0.5 + margin) * grid.Size;
-  return any;
-}
-
-// First occupied voxel along the ray from `origin` in direction `d`, or -1.
-vtkIdType March(const VoxelGrid& grid,
-  const std::vector<unsigned char>& occupied,
-  const glm::dvec3& origin,
-  const glm::dvec3& d)
-{
-  // Slab intersection with the grid's box.
-  double t0 = 0.0;
-  double t1 = std::numeric_limits<double>::infinity();
-  for (int c = 0; c < 3; ++c)
-  {
-    const double low = grid.Origin[c];
-    const double high = grid.Origin[c] + grid.Size * grid.Count[c];
-    if (std::abs(d[c]) < 1e-300)
-    {
-      if (origin[c] < low || origin[c] > high)
-      {
-        return -1;
-      }
-      continue;
-    }
-    double a = (low - origin[c]) / d[c];
-    double b = (high - origin[c]) / d[c];
-    if (a > b)
-    {
-      std::swap(a, b);
-    }
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
-  }
-  const double step = 0.5 * grid.Size / glm::length(d);
-  for (double t = t0 + 0.5 * step; t < t1; t += step)
-  {
-    const vtkIdType v = grid.Find(origin + t * d);
-    if (v >= 0 && occupied[v])
-    {
-      return v;
-    }
-  }
-  return -1;
-}
 using PaintedViews = std::map<int, vtkSmartPointer<vtkImageData>>;
 
 // The painted label images must be of existing views, of the views' size,
@@ -292,52 +135,6 @@ bool DepthBounds(const PixelRays& rays, Silhouettes& silhouettes, glm::dvec3& lo
   low -= pad;
   high += pad;
   return true;
-}
-
-// Without depth: the object pixels are the Coaxial pass's silhouettes, the
-// proxy's bounds those of the visual hull, carved coarsely in the box the
-// cameras surround (a cube about their centres). False when the hull is
-// empty.
-bool HullBounds(const PixelRays& rays,
-  vtkCameraRig* rig,
-  vtkUnsignedCharArray* coaxial,
-  double threshold,
-  double tolerance,
-  Silhouettes& silhouettes,
-  glm::dvec3& low,
-  glm::dvec3& high)
-{
-  const int views = rays.Views;
-  const vtkIdType pixels = rays.Pixels;
-  for (int view = 0; view < views; ++view)
-  {
-    lfd::segmentation::ObjectMask(coaxial->GetPointer(3 * view * pixels),
-      rays.Width,
-      rays.Height,
-      threshold,
-      1,
-      silhouettes.Mask.data() + view * pixels);
-  }
-  silhouettes.Distance.resize(silhouettes.Mask.size());
-  std::vector<float> distance;
-  for (int view = 0; view < views; ++view)
-  {
-    lfd::segmentation::DistanceToMask(
-      silhouettes.Mask.data() + view * pixels, rays.Width, rays.Height, distance);
-    std::copy(distance.begin(), distance.end(), silhouettes.Distance.begin() + view * pixels);
-  }
-  glm::dvec3 centre(0.0);
-  for (int view = 0; view < views; ++view)
-  {
-    centre += rays.Cameras[view].Center / static_cast<double>(views);
-  }
-  double reach = 0.0;
-  for (int view = 0; view < views; ++view)
-  {
-    reach = std::max(reach, glm::length(rays.Cameras[view].Center - centre));
-  }
-  const VoxelGrid coarse(centre - reach, centre + reach, 64);
-  return OccupiedBounds(coarse, Carve(coarse, rig, silhouettes, tolerance), 1.0, low, high);
 }
 
 // The voxel each object pixel sees: with `march`, the first occupied one
@@ -584,8 +381,7 @@ bool vtkLabelPropagation::Split(vtkLightField* input, vtkLightField* output, std
     return false;
   }
   if (!useDepth &&
-    !HullBounds(
-      rays, rig, coaxial, this->Threshold, this->SilhouetteTolerance, silhouettes, low, high))
+    !HullBounds(rig, coaxial, this->Threshold, this->SilhouetteTolerance, silhouettes, low, high))
   {
     error = "vtkLabelPropagation: the visual hull is empty (no point projects inside the "
             "silhouette in every view; check Threshold and the calibration)";

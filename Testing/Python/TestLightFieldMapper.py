@@ -1,7 +1,9 @@
 """vtkLightFieldActor / vtkLightFieldMapper in a vtkRenderer: the swimming
 fish drawn with its cage outline (regression image, as VTK's tests do), depth
 compositing with ordinary actors (a plane in front of the fish hides it, one
-behind does not), and progressive refinement (a quarter of the resolution
+behind does not), the true depth of the proxy focal surface (a small sphere
+inside the fish's body is hidden by it; through the focal plane it shows;
+regression image), and progressive refinement (a quarter of the resolution
 while the window renders at an interactive rate, full resolution when
 still)."""
 
@@ -10,7 +12,7 @@ import lfdtesting as t
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkFloatArray
 from vtkmodules.vtkFiltersExtraction import vtkExtractEdges
-from vtkmodules.vtkFiltersSources import vtkPlaneSource
+from vtkmodules.vtkFiltersSources import vtkPlaneSource, vtkSphereSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderWindow,
                                          vtkRenderer, vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factory)
@@ -25,7 +27,8 @@ capture.SetNumberOfRows(1)
 capture.SetViewsPerRing(60)
 capture.SetWidth(128)
 capture.SetHeight(128)
-capture.CaptureDepthOff()
+# The Depth pass is the proxy of the sphere test below; the rest of the
+# test renders through the focal plane.
 # The mapper's bounds come from its inputs as they are (GetBounds runs no
 # pipeline): update the capture before the clipping range is reset.
 capture.Update()
@@ -36,6 +39,7 @@ pose = t.pose(parts.GetOutputPort(), lfd.vtkCagePoseFilter.SWIM, 20.0, (0, 0, 1)
 mapper = lfd.vtkLightFieldMapper()
 mapper.SetInputConnection(capture.GetOutputPort())
 mapper.SetCageConnection(pose.GetOutputPort())
+mapper.GetLightFieldRenderer().SetFocalSurfaceToPlane()
 actor = lfd.vtkLightFieldActor()
 actor.SetMapper(mapper)
 edges = vtkExtractEdges()
@@ -117,6 +121,50 @@ for name, z in (("in front", 0.6), ("behind", -0.6)):
 print("fish pixels in the left half:", visible)
 t.check(visible["in front"] < 50, "a plane in front of the fish hides it", visible["in front"])
 t.check(visible["behind"] > 2000, "a plane behind the fish does not", visible["behind"])
+renderer.RemoveActor(plane_actor)
+
+# A small red sphere inside the fish's body (an ellipsoid of semi-axes 0.36,
+# 0.20, 0.12 about the origin), the cage at rest: through the focal plane
+# (depth: the plane through the rig axis) its front half shows through the
+# fish; with the proxy (the Depth pass) the fish's surface hides it.
+sphere = vtkSphereSource()
+sphere.SetRadius(0.08)
+sphere.SetThetaResolution(24)
+sphere.SetPhiResolution(24)
+sphere_mapper = vtkPolyDataMapper()
+sphere_mapper.SetInputConnection(sphere.GetOutputPort())
+sphere_actor = vtkActor()
+sphere_actor.SetMapper(sphere_mapper)
+sphere_actor.GetProperty().SetColor(1.0, 0.0, 0.0)
+sphere_actor.GetProperty().LightingOff()
+renderer.AddActor(sphere_actor)
+mapper.SetCageConnection(parts.GetOutputPort())
+
+
+def red_pixels():
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    rgb = t.image_array(grab.GetOutput())[..., :3].astype(int)
+    return int(((rgb[..., 0] > 200) & (rgb[..., 1] < 40) & (rgb[..., 2] < 40)).sum())
+
+
+red = {}
+for name in ("plane", "proxy"):
+    getattr(mapper.GetLightFieldRenderer(), "SetFocalSurfaceTo" + name.capitalize())()
+    renderer.ResetCameraClippingRange()
+    window.Render()
+    red[name] = red_pixels()
+print("red sphere pixels through the fish:", red)
+t.check(red["plane"] > 300, "focal plane depth: the sphere inside the body shows through", red["plane"])
+t.check(red["proxy"] == 0, "proxy depth: the fish hides the sphere inside its body", red["proxy"])
+passed = t.matches_baseline("TestLightFieldMapperProxyDepth", window=window)
+t.check(passed, "fish hiding the sphere matches the baseline",
+        "passed" if passed else "differs (see {})".format(t.TEMP_DIR))
+renderer.RemoveActor(sphere_actor)
+mapper.SetCageConnection(pose.GetOutputPort())
+mapper.GetLightFieldRenderer().SetFocalSurfaceToPlane()
 
 window.SetDesiredUpdateRate(15.0)
 window.Render()

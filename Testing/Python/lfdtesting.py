@@ -164,15 +164,19 @@ def side_camera(rig, azimuth=0.35, angle=22.0):
 
 
 def evaluate(name, source, lf, cage, camera, subdivision=1, size=256, widen=2,
-             anti_aliasing=True, ambient=0.1):
-    """vtkGroundTruthEvaluator of the light field deformed by `cage` against
-    the source mesh deformed by the same cage (its coaxial light's ambient
-    `ambient`: the light field's own); prints the figures."""
+             anti_aliasing=True, ambient=0.1, focal=0):
+    """vtkGroundTruthEvaluator of the light field deformed by `cage` (None:
+    undeformed) against the source mesh deformed by the same cage (its
+    coaxial light's ambient `ambient`: the light field's own); prints the
+    figures. `focal`: vtkLightFieldRenderer's focal surface (0 automatic: the
+    proxy when `lf` has a Depth pass, 1 plane, 2 proxy)."""
     ev = lfd.vtkGroundTruthEvaluator()
+    ev.SetFocalSurface(focal)
     ev.SetInputData(lf)
     ev.SetMeshConnection(source.GetOutputPort())
     ev.SetTextureConnection(source.GetOutputPort(1))
-    ev.SetCageData(cage)
+    if cage is not None:
+        ev.SetCageData(cage)
     ev.SetCamera(camera)
     ev.SetSubdivision(subdivision)
     ev.SetWidenedSearch(widen)

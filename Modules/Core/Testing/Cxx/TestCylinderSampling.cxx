@@ -9,9 +9,11 @@
 #include "vtkNew.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <vector>
 
 namespace
 {
@@ -31,6 +33,94 @@ void RayAt(double phi, double h, glm::dvec3& o, glm::dvec3& d)
 {
   o = glm::dvec3(10.0 * std::sin(phi), h, 10.0 * std::cos(phi));
   d = glm::normalize(glm::dvec3(0.0, h, 0.0) - o);
+}
+
+// The proxy path (GatherOnSurface): a ring of 8 flat-coloured views of 64 x
+// 64 (view v is (10 v, 0, 0)) around a sphere of radius 1 at the ring's
+// centre, their depth maps computed exactly per pixel. A ray aimed at the
+// axis meets it 1 before the axis; the views are chosen by angle at that
+// point, and those whose own depth map hides it are left out.
+void ProxySurface()
+{
+  const int size = 64, views = 8;
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double axis[3] = { 0.0, 1.0, 0.0 };
+  const double height = 0.0;
+  vtkNew<vtkLightField> lf;
+  lf->SetLayout(size, size, views);
+  lf->GetRig()->MakeCylinder(origin, axis, 4.0, views, 1, &height, size, size, 40.0);
+  auto* rgb = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::COAXIAL));
+  std::vector<lfd::PinholeCamera> cameras(views);
+  std::vector<float> depth(static_cast<std::size_t>(size) * size * views, 0.0f);
+  for (int v = 0; v < views; ++v)
+  {
+    cameras[v] = lf->GetRig()->GetCamera(v);
+    const lfd::PinholeCamera::Unprojection rays = cameras[v].GetUnprojection();
+    for (int y = 0; y < size; ++y)
+    {
+      for (int x = 0; x < size; ++x)
+      {
+        const std::size_t pixel = (static_cast<std::size_t>(v) * size + (size - 1 - y)) * size + x;
+        rgb->SetComponent(static_cast<vtkIdType>(pixel), 0, 10.0 * v);
+        // |C + z D|^2 = 1, D with camera z 1: the nearer root.
+        const glm::dvec3 c = rays.Center;
+        const glm::dvec3 d = rays.Direction(glm::dvec2(x, y));
+        const double a = glm::dot(d, d), b = glm::dot(c, d), q = glm::dot(c, c) - 1.0;
+        const double disc = b * b - a * q;
+        if (disc >= 0.0)
+        {
+          depth[pixel] = static_cast<float>((-b - std::sqrt(disc)) / a);
+        }
+      }
+    }
+  }
+  lfd::RingLayout layout = lf->GetRig()->GetRingLayout();
+  lfd::LightFieldSampler sampler;
+  sampler.Layout = &layout;
+  sampler.Cameras = cameras.data();
+  sampler.Radiance = { rgb->GetPointer(0), size, size, 3 };
+  sampler.Depth = { depth.data(), size, size, 1 };
+  const std::vector<double> ranges = lfd::DepthRanges(sampler.Depth, views);
+  sampler.DepthRange = ranges.data();
+  Expect("depth range of view 0 (nearest point 3)", ranges[0], 3.0, 0.005);
+  lfd::DepthBounds(sampler.Depth, cameras.data(), views, sampler.SurfaceLow, sampler.SurfaceHigh);
+  Expect("surface bounds: the sphere's (x max 1)", sampler.SurfaceHigh.x, 1.0, 0.01);
+
+  const double step = lfd::TwoPi / views;
+  glm::dvec3 o, d, color;
+  RayAt(2.25 * step, 0.0, o, d);
+  double hit = 0.0;
+  Expect(
+    "the ray meets view 2's depth map", sampler.IntersectDepthMap(2, o, d, 0.0, 100.0, hit), 1.0);
+  Expect("... 1 before the axis (10 - 1)", hit, 9.0, 0.01);
+  lfd::RaySamples samples;
+  sampler.ProxyViews = 1;
+  Expect("proxy gather", sampler.Gather(o, d, samples), 1.0);
+  Expect("focused on the sphere", samples.Surface, 9.0, 0.01);
+  lfd::BlendLabel(samples, 0, color);
+  Expect("one view: the nearest in angle (view 2)", color.r, 20.0);
+  sampler.ProxyViews = 2;
+  sampler.Gather(o, d, samples);
+  double weight2 = 0.0, weight3 = 0.0;
+  for (int i = 0; i < samples.Count; ++i)
+  {
+    const double r = samples.Samples[i].Color.r;
+    weight2 += r == 20.0 ? samples.Samples[i].Weight : 0.0;
+    weight3 += r == 30.0 ? samples.Samples[i].Weight : 0.0;
+  }
+  Expect("two views: 2 and 3 only, weights sum to 1", weight2 + weight3, 1.0);
+  Expect("view 2 (nearer in angle) weighs more", weight2 > weight3, 1.0);
+  // A ray that misses the sphere falls back to the focal plane.
+  const glm::dvec3 above(10.0 * std::sin(2.25 * step), 2.0, 10.0 * std::cos(2.25 * step));
+  sampler.Gather(above, glm::dvec3(0.0, 2.0, 0.0) - above, samples);
+  Expect("a ray above the sphere: focal plane (Surface NaN)", std::isnan(samples.Surface), 1.0);
+  // View 2's map now sees a surface in front of the point: it is left out.
+  std::fill(depth.begin() + 2 * size * size, depth.begin() + 3 * size * size, 1.0f);
+  sampler.ProxyViews = 1;
+  sampler.Gather(o, d, samples);
+  lfd::BlendLabel(samples, 0, color);
+  Expect("an occluded view is skipped (view 3 instead)", color.r, 30.0);
+  Expect("... still focused on the sphere (view 3's crossing)", samples.Surface, 9.0, 0.01);
 }
 }
 
@@ -122,5 +212,7 @@ int TestCylinderSampling(int, char*[])
   sampler.Gather(o, d, samples);
   lfd::BlendLabel(samples, 0, color);
   Expect("leave-one-out colour (views 1 and 3, weights 1/4, 3/4)", color.r, 25.0);
+
+  ProxySurface();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -204,7 +204,7 @@ int TestLightFieldScene(int, char*[])
     "{\"format\": \"lfd-scene\", \"version\": 1, \"lightfield\": \"../x.lf\",\n"
     " \"cage\": {\"rest_points\": [[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0,0,1],[1,0,1],[1,1,1],"
     "[0,1,1]],\n \"boxes\": [{\"corners\": [0,1,2,3,4,5,6,7], \"label\": 4}]},\n"
-    " \"render\": {\"subdivision\": \"auto\"}}");
+    " \"render\": {\"subdivision\": \"auto\", \"focal\": \"proxy\"}}");
   vtkNew<vtkLightFieldScene> undeformed;
   errors->Observe(undeformed);
   Check(undeformed->Read(restOnly.c_str()),
@@ -214,6 +214,7 @@ int TestLightFieldScene(int, char*[])
     0,
     "points equal rest when omitted");
   Check(undeformed->GetSubdivisionAuto(), "subdivision \"auto\"");
+  CheckEqual(undeformed->GetFocalSurface(), 2, "render.focal \"proxy\"");
   CheckEqual(std::string(undeformed->GetResolvedLightFieldPath()),
     std::filesystem::path(LFD_TEST_TEMP_DIR).lexically_normal().string() + "/x.lf",
     "relative path resolved against the scene folder");
@@ -221,5 +222,11 @@ int TestLightFieldScene(int, char*[])
   Check(undeformed->Write(autoFile.c_str()), "write auto subdivision");
   Check(lfdtest::ReadText(autoFile).find("\"subdivision\": \"auto\"") != std::string::npos,
     "\"auto\" written back");
+  Check(lfdtest::ReadText(autoFile).find("\"focal\": \"proxy\"") != std::string::npos,
+    "render.focal written back");
+  undeformed->SetFocalSurface(0);
+  Check(undeformed->Write(autoFile.c_str()) &&
+      lfdtest::ReadText(autoFile).find("\"focal\"") == std::string::npos,
+    "render.focal \"auto\" (the default) not written");
   return lfdtest::Result();
 }

@@ -103,6 +103,9 @@ int TestLightFieldSceneErrors(int, char*[])
   expectFailure("subdivision string",
     Scene(Cage("", Box), ", \"render\": {\"subdivision\": \"x\"}"),
     { "\"render.subdivision\"", "auto" });
+  expectFailure("unknown focal surface",
+    Scene(Cage("", Box), ", \"render\": {\"focal\": \"sphere\"}"),
+    { "\"render.focal\"", "expected \"auto\", \"plane\" or \"proxy\", found" });
   expectFailure("background out of [0, 1]",
     Scene(Cage("", Box), ", \"render\": {\"background\": [0, 255, 0]}"),
     { "\"render.background[1]\"", "[0, 1]" });
