@@ -8,6 +8,7 @@
 
 #include <arv.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 
@@ -163,6 +164,8 @@ struct vtkAravisCamera::Device
   /// The camera stopped answering: closing does not ask it to stop (each
   /// request would wait for its GVCP timeouts and retries, seconds).
   bool Lost = false;
+  /// Triggers sent whose frame has not arrived (see DiscardLateFrames).
+  int Unanswered = 0;
 
   // Opens the stream, queues its buffers and starts the acquisition; the
   // problem in words, "" when it runs.
@@ -277,6 +280,7 @@ bool vtkAravisCamera::Open()
     return false;
   }
   this->NumberOfRetries = 0;
+  this->NumberOfLateFrames = 0;
   this->Connection = std::move(device);
   return true;
 }
@@ -298,14 +302,9 @@ bool vtkAravisCamera::Acquire(vtkImageData* frame)
   ArvCamera* camera = this->Connection->Camera;
   ArvStream* stream = this->Connection->Stream;
   std::string problem;
+  this->DiscardLateFrames();
   for (int attempt = 0; attempt < this->MaximumAttempts; ++attempt)
   {
-    // A frame that came after its attempt gave up would be taken for this
-    // one: give it back to the stream first.
-    while (ArvBuffer* late = arv_stream_try_pop_buffer(stream))
-    {
-      arv_stream_push_buffer(stream, late);
-    }
     if (attempt > 0)
     {
       ++this->NumberOfRetries;
@@ -318,6 +317,7 @@ bool vtkAravisCamera::Acquire(vtkImageData* frame)
       vtkErrorMacro("Camera " << address << ": refuses TriggerSoftware: " << Consume(error));
       return false;
     }
+    ++this->Connection->Unanswered;
     ArvBuffer* buffer =
       arv_stream_timeout_pop_buffer(stream, static_cast<guint64>(this->FrameTimeout) * 1000);
     if (!buffer)
@@ -325,6 +325,7 @@ bool vtkAravisCamera::Acquire(vtkImageData* frame)
       problem = "no frame within " + std::to_string(this->FrameTimeout) + " ms";
       continue;
     }
+    --this->Connection->Unanswered;
     const ArvBufferStatus status = arv_buffer_get_status(buffer);
     if (status != ARV_BUFFER_STATUS_SUCCESS)
     {
@@ -361,6 +362,34 @@ bool vtkAravisCamera::Acquire(vtkImageData* frame)
 }
 
 //------------------------------------------------------------------------------
+void vtkAravisCamera::DiscardLateFrames()
+{
+  ArvStream* stream = this->Connection->Stream;
+  // Frames already queued first, then the answers still owed to triggers
+  // given up on: a slow camera sends them after its attempt timed out. A
+  // frame that does not come within FrameTimeout was lost: owed no more.
+  while (ArvBuffer* late = arv_stream_try_pop_buffer(stream))
+  {
+    arv_stream_push_buffer(stream, late);
+    this->Connection->Unanswered = std::max(0, this->Connection->Unanswered - 1);
+    ++this->NumberOfLateFrames;
+  }
+  while (this->Connection->Unanswered > 0)
+  {
+    ArvBuffer* late =
+      arv_stream_timeout_pop_buffer(stream, static_cast<guint64>(this->FrameTimeout) * 1000);
+    if (!late)
+    {
+      this->Connection->Unanswered = 0;
+      break;
+    }
+    arv_stream_push_buffer(stream, late);
+    --this->Connection->Unanswered;
+    ++this->NumberOfLateFrames;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkAravisCamera::Close()
 {
   this->Connection.reset();
@@ -374,6 +403,7 @@ void vtkAravisCamera::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FrameTimeout: " << this->FrameTimeout << " ms\n";
   os << indent << "MaximumAttempts: " << this->MaximumAttempts << "\n";
   os << indent << "NumberOfRetries: " << this->NumberOfRetries << "\n";
+  os << indent << "NumberOfLateFrames: " << this->NumberOfLateFrames << "\n";
   os << indent << "FrameSize: " << this->FrameSize[0] << " x " << this->FrameSize[1] << "\n";
   os << indent << "Open: " << (this->Connection ? "yes" : "no") << "\n";
 }

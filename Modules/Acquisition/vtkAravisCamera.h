@@ -12,10 +12,14 @@
  * (it receives nothing on `lo`), a fixed 4 MiB socket buffer, 1400-byte
  * packets.
  *
- * Acquire() discards any late frame still queued, triggers, waits up to
- * FrameTimeout for the frame and checks its status: a frame that did not
- * arrive or arrived incomplete (missing packets, timeout...) is triggered
- * again, up to MaximumAttempts in all. The frame is converted to RGB uint8
+ * Acquire() triggers, waits up to FrameTimeout for the frame and checks its
+ * status: a frame that did not arrive or arrived incomplete (missing
+ * packets, timeout...) is triggered again, up to MaximumAttempts in all.
+ * A trigger given up on may still be answered later (a camera that was
+ * only slow): the camera counts the triggers it has not yet received a
+ * frame for, and the next Acquire() first waits (up to FrameTimeout) for
+ * those frames and discards them, so that a frame exposed under the
+ * previous pass's lights is never taken for the next one's. The frame is converted to RGB uint8
  * (Mono8 as grey, Bayer by bilinear demosaicing, see lfdPixelFormat.h) with
  * row 0 the top of the photograph (vtkCaptureCamera's convention).
  *
@@ -86,6 +90,11 @@ public:
    */
   vtkGetMacro(NumberOfRetries, int);
 
+  /**
+   * Late frames (answers to triggers given up on) discarded since Open().
+   */
+  vtkGetMacro(NumberOfLateFrames, int);
+
   ///@{
   /**
    * The frame size the camera reported at Open() (0 before).
@@ -105,11 +114,15 @@ protected:
   int FrameTimeout = 2000;
   int MaximumAttempts = 3;
   int NumberOfRetries = 0;
+  int NumberOfLateFrames = 0;
   int FrameSize[2] = { 0, 0 };
 
 private:
   vtkAravisCamera(const vtkAravisCamera&) = delete;
   void operator=(const vtkAravisCamera&) = delete;
+
+  // Waits for and discards the frames still owed to triggers given up on.
+  void DiscardLateFrames();
 
   struct Device;
   std::unique_ptr<Device> Connection;

@@ -117,6 +117,8 @@ struct vtkSimulatedRigCamera::Internals
   // Faults still to come.
   int Drop = 0;
   int Damage = 0;
+  int Delay = 0;
+  int DelayMilliseconds = 0;
 
   static void Fill(ArvBuffer* buffer, void* data, guint32, guint32, ArvPixelFormat format);
   void RenderLoop(vtkSimulatedRigCamera* owner);
@@ -144,6 +146,18 @@ void vtkSimulatedRigCamera::Internals::Fill(ArvBuffer* buffer,
   if (self->Stopping)
   {
     return;
+  }
+  if (self->Delay > 0)
+  {
+    // A slow camera: the frame comes, late. Triggers that arrive meanwhile
+    // wait in the fake camera's queue, each answered in turn.
+    --self->Delay;
+    const auto delay = std::chrono::milliseconds(self->DelayMilliseconds);
+    self->Wake.wait_for(lock, delay, [self] { return self->Stopping; });
+    if (self->Stopping)
+    {
+      return;
+    }
   }
   // The fault decides how many of this frame's packets the camera sends.
   double loss = 0.0;
@@ -462,6 +476,14 @@ void vtkSimulatedRigCamera::DamageFrames(int count)
 {
   std::lock_guard<std::mutex> lock(this->Internal->Mutex);
   this->Internal->Damage = std::max(0, count);
+}
+
+//------------------------------------------------------------------------------
+void vtkSimulatedRigCamera::DelayFrames(int count, int milliseconds)
+{
+  std::lock_guard<std::mutex> lock(this->Internal->Mutex);
+  this->Internal->Delay = std::max(0, count);
+  this->Internal->DelayMilliseconds = std::max(0, milliseconds);
 }
 
 //------------------------------------------------------------------------------

@@ -40,7 +40,9 @@
  * Faults on demand, for the client's retry logic: DropFrames(n) sends
  * nothing for the next n frames (the client times out), DamageFrames(n)
  * loses half the packets of the next n frames (the client gets a frame
- * whose status is not SUCCESS). When the AngleSource fails the frame is
+ * whose status is not SUCCESS), DelayFrames(n, ms) sends the next n frames
+ * ms late (a slow camera: a client that gave up on the trigger and sent
+ * another gets both frames). When the AngleSource fails the frame is
  * dropped too.
  *
  * @sa vtkAravisCamera vtkSimulatedProjector vtkSimulatedCoaxialLight
@@ -167,11 +169,13 @@ public:
 
   ///@{
   /**
-   * Faults: the next `count` frames are not sent at all, or lose half of
-   * their packets. Safe to call while the camera runs.
+   * Faults: the next `count` frames are not sent at all, lose half of
+   * their packets, or are sent `milliseconds` late. Safe to call while the
+   * camera runs.
    */
   void DropFrames(int count);
   void DamageFrames(int count);
+  void DelayFrames(int count, int milliseconds);
   ///@}
 
   /**

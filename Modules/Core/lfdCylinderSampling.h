@@ -112,6 +112,38 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
   return o + (s - focalDistance / std::sqrt(dd)) * d;
 }
 
+/**
+ * Calls add(px, py, weight) for the (up to) 4 pixels of a width x height
+ * image around the continuous position `uv` (pixel centres at integers),
+ * with their bilinear weights; pixels outside the image and zero weights are
+ * skipped. One bilinear lookup for every sampler (ring and two-plane).
+ */
+template<typename Add>
+inline void ForEachBilinearPixel(const glm::dvec2& uv, int width, int height, Add&& add)
+{
+  const double fx = std::floor(uv.x);
+  const double fy = std::floor(uv.y);
+  if (!(fx >= -1.0 && fy >= -1.0 && fx < width && fy < height))
+  {
+    return;
+  }
+  const int x0 = static_cast<int>(fx);
+  const int y0 = static_cast<int>(fy);
+  const double ax = uv.x - fx;
+  const double ay = uv.y - fy;
+  for (int corner = 0; corner < 4; ++corner)
+  {
+    const int px = x0 + (corner & 1);
+    const int py = y0 + (corner >> 1);
+    const double bw = ((corner & 1) ? ax : 1.0 - ax) * ((corner >> 1) ? ay : 1.0 - ay);
+    if (px < 0 || py < 0 || px >= width || py >= height || bw <= 0.0)
+    {
+      continue;
+    }
+    add(px, py, bw);
+  }
+}
+
 /// One row (ring) of views, sorted by azimuth in [0, 2 pi).
 struct RingRow
 {
@@ -418,33 +450,17 @@ struct LightFieldSampler
     {
       return;
     }
-    const int w = this->Radiance.Width;
-    const int h = this->Radiance.Height;
-    const double fx = std::floor(uv.x);
-    const double fy = std::floor(uv.y);
-    const double ax = uv.x - fx;
-    const double ay = uv.y - fy;
-    const int x0 = static_cast<int>(fx);
-    const int y0 = static_cast<int>(fy);
-    if (x0 < -1 || y0 < -1 || x0 >= w || y0 >= h)
-    {
-      return;
-    }
-    for (int corner = 0; corner < 4; ++corner)
-    {
-      const int px = x0 + (corner & 1);
-      const int py = y0 + (corner >> 1);
-      const double bw = ((corner & 1) ? ax : 1.0 - ax) * ((corner >> 1) ? ay : 1.0 - ay);
-      if (px < 0 || py < 0 || px >= w || py >= h || bw <= 0.0)
+    ForEachBilinearPixel(uv,
+      this->Radiance.Width,
+      this->Radiance.Height,
+      [&](int px, int py, double bw)
       {
-        continue;
-      }
-      RaySample& sample = out.Samples[out.Count++];
-      const std::uint8_t* rgb = this->Radiance.Pixel(view, px, py);
-      sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
-      sample.Weight = weight * bw;
-      sample.Label = this->Labels.Data ? *this->Labels.Pixel(view, px, py) : 0;
-    }
+        RaySample& sample = out.Samples[out.Count++];
+        const std::uint8_t* rgb = this->Radiance.Pixel(view, px, py);
+        sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+        sample.Weight = weight * bw;
+        sample.Label = this->Labels.Data ? *this->Labels.Pixel(view, px, py) : 0;
+      });
   }
 
   /**

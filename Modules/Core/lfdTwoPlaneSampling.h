@@ -360,33 +360,17 @@ struct TwoPlaneSampler
     {
       return;
     }
-    const int w = this->Radiance.Width;
-    const int h = this->Radiance.Height;
-    const double fx = std::floor(pixel.x);
-    const double fy = std::floor(pixel.y);
-    if (fx < -1.0 || fy < -1.0 || fx >= w || fy >= h)
-    {
-      return;
-    }
-    const int x0 = static_cast<int>(fx);
-    const int y0 = static_cast<int>(fy);
-    const double ax = pixel.x - fx;
-    const double ay = pixel.y - fy;
-    for (int corner = 0; corner < 4; ++corner)
-    {
-      const int px = x0 + (corner & 1);
-      const int py = y0 + (corner >> 1);
-      const double bw = ((corner & 1) ? ax : 1.0 - ax) * ((corner >> 1) ? ay : 1.0 - ay);
-      if (px < 0 || py < 0 || px >= w || py >= h || bw <= 0.0)
+    ForEachBilinearPixel(pixel,
+      this->Radiance.Width,
+      this->Radiance.Height,
+      [&](int px, int py, double bw)
       {
-        continue;
-      }
-      const std::uint8_t* rgb = this->Radiance.Pixel(view, px, py);
-      detail::AddToLabel(out,
-        glm::dvec3(rgb[0], rgb[1], rgb[2]),
-        weight * bw,
-        this->Labels.Data ? *this->Labels.Pixel(view, px, py) : 0);
-    }
+        const std::uint8_t* rgb = this->Radiance.Pixel(view, px, py);
+        detail::AddToLabel(out,
+          glm::dvec3(rgb[0], rgb[1], rgb[2]),
+          weight * bw,
+          this->Labels.Data ? *this->Labels.Pixel(view, px, py) : 0);
+      });
   }
 };
 

@@ -318,6 +318,8 @@ struct RenderSettings
 {
   double FocalDistance = 0.0;
   int FocalSurface = 0;
+  double FocalDepth = 0.0;
+  double Aperture = 0.0;
   int Subdivision = 1;
   int WidenedSearch = 2;
   double ObjectThreshold = 10.0;
@@ -341,6 +343,19 @@ void ParseRender(const Json& render, RenderSettings& settings)
         "expected \"auto\", \"plane\" or \"proxy\", found " + lfd::io::Describe(*v));
     }
     settings.FocalSurface = static_cast<int>(name - std::begin(FocalSurfaceNames));
+  }
+  for (const auto& [name, value] : { std::make_pair("focal_depth", &settings.FocalDepth),
+         std::make_pair("aperture", &settings.Aperture) })
+  {
+    if (const Json* v = lfd::io::FindMember(render, "render", name))
+    {
+      const std::string path = std::string("render.") + name;
+      *value = lfd::io::GetNumber(*v, path);
+      if (!(*value >= 0.0))
+      {
+        throw FieldError(path, "expected a distance >= 0, found " + lfd::io::Describe(*v));
+      }
+    }
   }
   if (const Json* v = lfd::io::FindMember(render, "render", "subdivision"))
   {
@@ -423,6 +438,8 @@ void vtkLightFieldScene::Initialize()
   this->Height = 512;
   this->FocalDistance = 0.0;
   this->FocalSurface = 0;
+  this->FocalDepth = 0.0;
+  this->Aperture = 0.0;
   this->Subdivision = 1;
   this->WidenedSearch = 2;
   this->ObjectThreshold = 10.0;
@@ -611,6 +628,8 @@ bool vtkLightFieldScene::Read(const char* fileName)
   this->Height = height;
   this->FocalDistance = settings.FocalDistance;
   this->FocalSurface = settings.FocalSurface;
+  this->FocalDepth = settings.FocalDepth;
+  this->Aperture = settings.Aperture;
   this->Subdivision = settings.Subdivision;
   this->WidenedSearch = settings.WidenedSearch;
   this->ObjectThreshold = settings.ObjectThreshold;
@@ -769,6 +788,14 @@ bool vtkLightFieldScene::WriteFile(const char* fileName)
   {
     render["focal"] = FocalSurfaceNames[this->FocalSurface];
   }
+  if (this->FocalDepth != 0.0)
+  {
+    render["focal_depth"] = this->FocalDepth;
+  }
+  if (this->Aperture != 0.0)
+  {
+    render["aperture"] = this->Aperture;
+  }
   if (this->Subdivision == 0)
   {
     render["subdivision"] = "auto";
@@ -818,6 +845,8 @@ void vtkLightFieldScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
   os << indent << "FocalSurface: " << FocalSurfaceNames[this->FocalSurface] << "\n";
+  os << indent << "FocalDepth: " << this->FocalDepth << "\n";
+  os << indent << "Aperture: " << this->Aperture << "\n";
   os << indent << "Subdivision: " << this->Subdivision << (this->Subdivision == 0 ? " (auto)" : "")
      << "\n";
   os << indent << "WidenedSearch: " << this->WidenedSearch << "\n";

@@ -21,7 +21,10 @@
  *   degrees) and the image Width x Height (default 512 x 512, 30 degrees).
  * - Render settings: FocalDistance (default 0), FocalSurface (`render.focal`:
  *   "auto", the default, "plane" or "proxy"; see
- *   vtkLightFieldRenderer::SetFocalSurface), Subdivision (k x k x k
+ *   vtkLightFieldRenderer::SetFocalSurface), FocalDepth and Aperture
+ *   (`render.focal_depth`, `render.aperture`, default 0: the refocusing of
+ *   a two-plane light field, see vtkLightFieldRenderer::SetFocalDepth;
+ *   rings ignore them), Subdivision (k x k x k
  *   sub-boxes per box, >= 1, default 1; the string "auto" is stored as 0,
  *   see GetSubdivisionAuto()), WidenedSearch (views searched on each side
  *   for regions a deformation uncovers, >= 0, default 2, 0 = off),
@@ -208,6 +211,20 @@ public:
 
   ///@{
   /**
+   * Two-plane light fields: the focal plane's depth in front of the camera
+   * plane (`render.focal_depth`, 0 = infinity) and the synthetic aperture
+   * (`render.aperture`, 0 = the 4 nearest cameras), as
+   * vtkLightFieldRenderer::SetFocalDepth / SetAperture. Rings ignore them.
+   * Written only when not 0.
+   */
+  vtkSetClampMacro(FocalDepth, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(FocalDepth, double);
+  vtkSetClampMacro(Aperture, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Aperture, double);
+  ///@}
+
+  ///@{
+  /**
    * Tessellation of every box into k x k x k sub-boxes (DESIGN.md 4.4);
    * k >= 1, default 1. 0 means "auto" (the renderer chooses).
    */
@@ -255,6 +272,8 @@ protected:
   int Height = 512;
   double FocalDistance = 0.0;
   int FocalSurface = 0;
+  double FocalDepth = 0.0;
+  double Aperture = 0.0;
   int Subdivision = 1;
   int WidenedSearch = 2;
   double ObjectThreshold = 10.0;

@@ -868,6 +868,8 @@ void vtkLightFieldSceneLogic::ConfigureRenderer(vtkLightFieldRenderer* renderer,
   renderer->SetCageData(cage);
   this->ApplyView(renderer);
   renderer->SetBackground(this->Internal->Scene->GetBackground());
+  renderer->SetFocalDepth(this->Internal->Scene->GetFocalDepth());
+  renderer->SetAperture(this->Internal->Scene->GetAperture());
 }
 
 //------------------------------------------------------------------------------

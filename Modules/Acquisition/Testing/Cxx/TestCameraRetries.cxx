@@ -1,7 +1,8 @@
 // Frames lost on the way from the simulated camera: a dropped frame (never
 // sent) and a damaged one (half its packets lost) are triggered again and
-// the next good frame is returned; a camera whose frames keep getting lost
-// gives one error after MaximumAttempts.
+// the next good frame is returned; a late frame (the trigger given up on,
+// answered after the retry's) is discarded by the next Acquire(); a camera whose frames keep
+// getting lost gives one error after MaximumAttempts.
 #include "lfdCameraTestScene.h"
 #include "vtkAravisCamera.h"
 #include "vtkLightFieldErrorObserver.h"
@@ -47,6 +48,31 @@ int TestCameraRetries(int, char*[])
   lfdtest::Check(
     afterDamage > 60.0, "PSNR of the frame after the damaged one (dB)", afterDamage, 60.0);
   lfdtest::Check(!errors->HasError(), "errors so far", errors->HasError(), 0);
+
+  // A slow camera: the first frame comes after its attempt gave up, so the
+  // retry's trigger is answered as well, later. The next Acquire() waits for
+  // that frame and discards it instead of taking it for its own (on a rig,
+  // a frame exposed under the previous pass's lights).
+  camera->SetFrameTimeout(3000);
+  simulated->DelayFrames(1, 4000);
+  const int retriesBefore = camera->GetNumberOfRetries();
+  const int renderedBefore = simulated->GetNumberOfFramesRendered();
+  const bool slow = camera->Acquire(frame);
+  lfdtest::Check(slow && camera->GetNumberOfRetries() == retriesBefore + 1,
+    "retries after a late frame (total)",
+    camera->GetNumberOfRetries(),
+    retriesBefore + 1);
+  const bool next = camera->Acquire(frame);
+  lfdtest::Check(next && camera->GetNumberOfLateFrames() == 1,
+    "late frames discarded by the next Acquire",
+    camera->GetNumberOfLateFrames(),
+    1);
+  lfdtest::Check(simulated->GetNumberOfFramesRendered() - renderedBefore == 3,
+    "frames sent for 3 triggers",
+    simulated->GetNumberOfFramesRendered() - renderedBefore,
+    3);
+  const double afterLate = next ? lfdtest::FramePSNR(frame, reference, 0, 0) : 0.0;
+  lfdtest::Check(afterLate > 60.0, "PSNR of the frame after the late one (dB)", afterLate, 60.0);
 
   camera->SetMaximumAttempts(3);
   camera->SetFrameTimeout(300);

@@ -204,7 +204,8 @@ int TestLightFieldScene(int, char*[])
     "{\"format\": \"lfd-scene\", \"version\": 1, \"lightfield\": \"../x.lf\",\n"
     " \"cage\": {\"rest_points\": [[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0,0,1],[1,0,1],[1,1,1],"
     "[0,1,1]],\n \"boxes\": [{\"corners\": [0,1,2,3,4,5,6,7], \"label\": 4}]},\n"
-    " \"render\": {\"subdivision\": \"auto\", \"focal\": \"proxy\"}}");
+    " \"render\": {\"subdivision\": \"auto\", \"focal\": \"proxy\", \"focal_depth\": 3.5,"
+    " \"aperture\": 0.15}}");
   vtkNew<vtkLightFieldScene> undeformed;
   errors->Observe(undeformed);
   Check(undeformed->Read(restOnly.c_str()),
@@ -215,6 +216,8 @@ int TestLightFieldScene(int, char*[])
     "points equal rest when omitted");
   Check(undeformed->GetSubdivisionAuto(), "subdivision \"auto\"");
   CheckEqual(undeformed->GetFocalSurface(), 2, "render.focal \"proxy\"");
+  CheckEqual(undeformed->GetFocalDepth(), 3.5, "render.focal_depth");
+  CheckEqual(undeformed->GetAperture(), 0.15, "render.aperture");
   CheckEqual(std::string(undeformed->GetResolvedLightFieldPath()),
     std::filesystem::path(LFD_TEST_TEMP_DIR).lexically_normal().string() + "/x.lf",
     "relative path resolved against the scene folder");
@@ -224,9 +227,15 @@ int TestLightFieldScene(int, char*[])
     "\"auto\" written back");
   Check(lfdtest::ReadText(autoFile).find("\"focal\": \"proxy\"") != std::string::npos,
     "render.focal written back");
+  Check(lfdtest::ReadText(autoFile).find("\"focal_depth\": 3.5") != std::string::npos &&
+      lfdtest::ReadText(autoFile).find("\"aperture\": 0.15") != std::string::npos,
+    "render.focal_depth and render.aperture written back");
   undeformed->SetFocalSurface(0);
+  undeformed->SetFocalDepth(0.0);
+  undeformed->SetAperture(0.0);
   Check(undeformed->Write(autoFile.c_str()) &&
-      lfdtest::ReadText(autoFile).find("\"focal\"") == std::string::npos,
-    "render.focal \"auto\" (the default) not written");
+      lfdtest::ReadText(autoFile).find("\"focal") == std::string::npos &&
+      lfdtest::ReadText(autoFile).find("\"aperture\"") == std::string::npos,
+    "render.focal \"auto\", focal_depth and aperture 0 (the defaults) not written");
   return lfdtest::Result();
 }
