@@ -42,7 +42,9 @@
  * loses half the packets of the next n frames (the client gets a frame
  * whose status is not SUCCESS), DelayFrames(n, ms) sends the next n frames
  * ms late (a slow camera: a client that gave up on the trigger and sent
- * another gets both frames). When the AngleSource fails the frame is
+ * another gets both frames; like Aravis's fake camera, it answers no control
+ * packet meanwhile, and past its 3 s heartbeat timeout it drops the client).
+ * When the AngleSource fails the frame is
  * dropped too.
  *
  * @sa vtkAravisCamera vtkSimulatedProjector vtkSimulatedCoaxialLight

@@ -53,8 +53,11 @@ int TestCameraRetries(int, char*[])
   // retry's trigger is answered as well, later. The next Acquire() waits for
   // that frame and discards it instead of taking it for its own (on a rig,
   // a frame exposed under the previous pass's lights).
-  camera->SetFrameTimeout(3000);
-  simulated->DelayFrames(1, 4000);
+  // (The fake camera answers no control packet while it fills a frame:
+  // the delay stays under its 3 s heartbeat timeout, past which it would
+  // drop its controller.)
+  camera->SetFrameTimeout(1000);
+  simulated->DelayFrames(1, 1800);
   const int retriesBefore = camera->GetNumberOfRetries();
   const int renderedBefore = simulated->GetNumberOfFramesRendered();
   const bool slow = camera->Acquire(frame);

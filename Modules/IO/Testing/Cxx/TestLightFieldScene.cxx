@@ -234,7 +234,8 @@ int TestLightFieldScene(int, char*[])
   undeformed->SetFocalDepth(0.0);
   undeformed->SetAperture(0.0);
   Check(undeformed->Write(autoFile.c_str()) &&
-      lfdtest::ReadText(autoFile).find("\"focal") == std::string::npos &&
+      lfdtest::ReadText(autoFile).find("\"focal\"") == std::string::npos &&
+      lfdtest::ReadText(autoFile).find("\"focal_depth\"") == std::string::npos &&
       lfdtest::ReadText(autoFile).find("\"aperture\"") == std::string::npos,
     "render.focal \"auto\", focal_depth and aperture 0 (the defaults) not written");
   return lfdtest::Result();

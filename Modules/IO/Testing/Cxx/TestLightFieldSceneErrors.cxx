@@ -108,7 +108,7 @@ int TestLightFieldSceneErrors(int, char*[])
     { "\"render.focal\"", "expected \"auto\", \"plane\" or \"proxy\", found" });
   expectFailure("negative aperture",
     Scene(Cage("", Box), ", \"render\": {\"aperture\": -0.1}"),
-    { "\"render.aperture\"", "expected a distance >= 0, found -0.1" });
+    { "\"render.aperture\"", "expected a distance >= 0, found the number -0.1" });
   expectFailure("background out of [0, 1]",
     Scene(Cage("", Box), ", \"render\": {\"background\": [0, 255, 0]}"),
     { "\"render.background[1]\"", "[0, 1]" });
