@@ -20,6 +20,7 @@ void AddTwoPlaneCommands(CLI::App& app, NumericOptions& numbers, std::vector<Com
     std::string Out;
     double Spacing = 1.0;
     double FocalLength = 0.0;
+    std::string Positions;
   };
   auto options = std::make_shared<TwoPlaneOptions>();
   vtkNew<vtkTwoPlaneImporter> limits;
@@ -27,7 +28,8 @@ void AddTwoPlaneCommands(CLI::App& app, NumericOptions& numbers, std::vector<Com
     "two-plane light field (Levoy and Hanrahan 1996): a folder of images named by grid row and "
     "column (the first two whole-number fields of the name split at '_': the Stanford archive's "
     "out_RR_CC_*.png, RR_CC.png) into the dataset folder OUT (replaced when complete); camera "
-    "(r, c) at (c, r, 0) x SPACING looking along +Z, R = I, principal point at the image centre");
+    "(r, c) at (c, r, 0) x SPACING, or at the position --positions gives its image, looking along "
+    "+Z, R = I, principal point at the image centre");
   command->add_option("FOLDER", options->Folder, "the folder of images")->required();
   command->add_option("--out", options->Out, "output light-field directory")->required();
   numbers.Add(command,
@@ -36,6 +38,11 @@ void AddTwoPlaneCommands(CLI::App& app, NumericOptions& numbers, std::vector<Com
     limits->GetSpacingMinValue(),
     limits->GetSpacingMaxValue(),
     "distance between neighbouring camera positions, world units");
+  command->add_option("--positions",
+    options->Positions,
+    "per-image camera positions instead of --spacing: a text file of lines 'NAME X Y' (the "
+    "image's file name, its camera centre on the camera plane, world units; '#' starts a "
+    "comment line), one for every image");
   numbers
     .Add(command,
       "--focal-length",
@@ -52,6 +59,7 @@ void AddTwoPlaneCommands(CLI::App& app, NumericOptions& numbers, std::vector<Com
       importer->SetFileName(options->Folder.c_str());
       importer->SetSpacing(options->Spacing);
       importer->SetFocalLength(options->FocalLength);
+      importer->SetPositionsFile(options->Positions.empty() ? nullptr : options->Positions.c_str());
       ImportCalibratedImages(importer, options->Out, options->Out);
     },
     false });

@@ -2,6 +2,7 @@
 
 #include "lfdFileUtilities.h"
 #include "lfdImageFiles.h"
+#include "lfdTextFields.h"
 #include "vtkErrorCode.h"
 #include "vtkObjectFactory.h"
 
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <exception>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -62,6 +64,54 @@ bool ParseRowColumn(const std::string& name, int& row, int& column)
   column = found[1];
   return true;
 }
+
+/// The camera positions of a PositionsFile, by image name (see the header).
+bool ReadPositions(const std::string& path,
+  std::map<std::string, std::pair<double, double>>& positions,
+  std::map<std::string, int>& lineOf,
+  std::string& error)
+{
+  std::vector<std::string> lines;
+  try
+  {
+    lines = lfd::io::ReadTextLines(path);
+  }
+  catch (const std::exception& failure)
+  {
+    error = failure.what();
+    return false;
+  }
+  for (std::size_t n = 0; n < lines.size(); ++n)
+  {
+    const std::vector<std::string> fields = lfd::io::SplitFields(lines[n]);
+    if (fields.empty() || fields[0][0] == '#')
+    {
+      continue;
+    }
+    const std::string where = path + ": line " + std::to_string(n + 1);
+    double x = 0.0, y = 0.0;
+    std::string problem;
+    if (fields.size() != 3)
+    {
+      error = where + ": expected NAME X Y, found " + std::to_string(fields.size()) + " fields";
+      return false;
+    }
+    if (!lfd::io::ParseFiniteNumber(fields[1], x, problem) ||
+      !lfd::io::ParseFiniteNumber(fields[2], y, problem))
+    {
+      error = where + ": the position " + problem;
+      return false;
+    }
+    if (!positions.emplace(fields[0], std::make_pair(x, y)).second)
+    {
+      error =
+        where + ": " + fields[0] + " again (also line " + std::to_string(lineOf[fields[0]]) + ")";
+      return false;
+    }
+    lineOf[fields[0]] = static_cast<int>(n + 1);
+  }
+  return true;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -72,7 +122,10 @@ vtkTwoPlaneImporter::vtkTwoPlaneImporter()
 }
 
 //------------------------------------------------------------------------------
-vtkTwoPlaneImporter::~vtkTwoPlaneImporter() = default;
+vtkTwoPlaneImporter::~vtkTwoPlaneImporter()
+{
+  this->SetPositionsFile(nullptr);
+}
 
 //------------------------------------------------------------------------------
 bool vtkTwoPlaneImporter::ParseCalibration(std::vector<CalibratedView>& views,
@@ -134,6 +187,13 @@ bool vtkTwoPlaneImporter::ParseCalibration(std::vector<CalibratedView>& views,
     columns[0] = std::min(columns[0], cell.first.second);
     columns[1] = std::max(columns[1], cell.first.second);
   }
+  std::map<std::string, std::pair<double, double>> positions;
+  std::map<std::string, int> lineOf;
+  const bool positioned = this->PositionsFile && *this->PositionsFile;
+  if (positioned && !ReadPositions(this->PositionsFile, positions, lineOf, error))
+  {
+    return false;
+  }
   // The image size gives the principal point.
   lfd::io::ImageHeader header;
   const std::string first = lfd::io::ResolvePath(folder, cells.begin()->second);
@@ -169,13 +229,33 @@ bool vtkTwoPlaneImporter::ParseCalibration(std::vector<CalibratedView>& views,
         0.0,
         1.0 };
       const double R[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-      // t = -R C for the centre C = (c, r, 0) x Spacing.
-      const double t[3] = { -c * this->Spacing, -r * this->Spacing, 0.0 };
+      // t = -R C for the centre C = (c, r, 0) x Spacing, or the file's.
+      double centre[2] = { c * this->Spacing, r * this->Spacing };
+      if (positioned)
+      {
+        const auto position = positions.find(view.Name);
+        if (position == positions.end())
+        {
+          error = std::string(this->PositionsFile) + ": no position for " + view.Name;
+          return false;
+        }
+        centre[0] = position->second.first;
+        centre[1] = position->second.second;
+        positions.erase(position);
+      }
+      const double t[3] = { -centre[0], -centre[1], 0.0 };
       std::copy(K, K + 9, view.K);
       std::copy(R, R + 9, view.R);
       std::copy(t, t + 3, view.t);
       views.push_back(view);
     }
+  }
+  if (!positions.empty())
+  {
+    const std::string& name = positions.begin()->first;
+    error = std::string(this->PositionsFile) + ": line " + std::to_string(lineOf[name]) + ": " +
+      name + " is not an image of " + folder;
+    return false;
   }
   return true;
 }
@@ -192,4 +272,6 @@ void vtkTwoPlaneImporter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Spacing: " << this->Spacing << "\n";
   os << indent << "FocalLength: " << this->FocalLength << "\n";
+  os << indent << "PositionsFile: " << (this->PositionsFile ? this->PositionsFile : "(none)")
+     << "\n";
 }

@@ -15,7 +15,8 @@
  * between the smallest and the largest index of each, once each.
  *
  * The rig (vtkCameraRig::IsTwoPlane() is true): the camera of row r, column
- * c has its centre at (c Spacing, r Spacing, 0), R = identity (it looks
+ * c has its centre at (c Spacing, r Spacing, 0), or, with a PositionsFile,
+ * at the (x, y, 0) that file gives its image; R = identity (it looks
  * along +Z, image x along +X, image y, downwards, along +Y: rows grow down
  * the grid, columns to the right), K = [FocalLength 0 cx; 0 FocalLength cy;
  * 0 0 1] with the principal point at the image centre ((w - 1) / 2,
@@ -56,6 +57,19 @@ public:
 
   ///@{
   /**
+   * Per-image camera positions instead of the regular Spacing: a text file
+   * with one line per image, `NAME X Y` (the image's file name, its camera
+   * centre on the camera plane in world units; blank lines and lines
+   * starting with '#' are skipped). Every image of the folder needs a line,
+   * once; a line naming no image of the folder is an error too (each error
+   * names the file and the line). nullptr (default): the regular grid.
+   */
+  vtkSetStringMacro(PositionsFile);
+  vtkGetStringMacro(PositionsFile);
+  ///@}
+
+  ///@{
+  /**
    * Focal length of every view in pixels; must be set (default 0: refused).
    */
   vtkSetClampMacro(FocalLength, double, 0.0, VTK_DOUBLE_MAX);
@@ -75,6 +89,7 @@ protected:
 
   double Spacing = 1.0;
   double FocalLength = 0.0;
+  char* PositionsFile = nullptr;
 
 private:
   vtkTwoPlaneImporter(const vtkTwoPlaneImporter&) = delete;

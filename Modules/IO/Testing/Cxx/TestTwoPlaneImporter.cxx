@@ -1,7 +1,8 @@
 // vtkTwoPlaneImporter: a tiny 2 x 3 grid folder named like the Stanford
 // archive imports into the exact rig (centres, R, K, order, names, a
-// two-plane rig without a cylinder fit), and each malformed folder fails with
-// one line naming the folder or the file.
+// two-plane rig without a cylinder fit), also with per-image positions from
+// a PositionsFile, and each malformed folder or positions file fails with
+// one line naming the folder or the file (and the line).
 #include "lfdIOTestUtilities.h"
 
 #include "vtkCameraRig.h"
@@ -33,7 +34,8 @@ void WritePng(const std::string& path, int width, int height, int value)
 /// Imports `folder`; the output, or null with the error in `message`.
 vtkSmartPointer<vtkLightField> Import(const std::string& folder,
   double focalLength,
-  std::string& message)
+  std::string& message,
+  const std::string& positions = "")
 {
   vtkNew<vtkTwoPlaneImporter> importer;
   vtkNew<vtkLightFieldErrorObserver> catcher;
@@ -41,6 +43,7 @@ vtkSmartPointer<vtkLightField> Import(const std::string& folder,
   importer->SetFileName(folder.c_str());
   importer->SetSpacing(0.25);
   importer->SetFocalLength(focalLength);
+  importer->SetPositionsFile(positions.empty() ? nullptr : positions.c_str());
   importer->Update();
   message = catcher->GetErrorMessage();
   if (importer->GetErrorCode() != 0)
@@ -114,6 +117,48 @@ int TestTwoPlaneImporter(int, char*[])
       "every view: K = [40 0 2; 0 40 1.5; 0 0 1], R = I, centre (c, r, 0) / 4 "
       "and its image");
   }
+
+  // Per-image positions: each image's centre from the file, in any order.
+  const std::string positions = folder + "/positions.txt";
+  std::string lines = "# name x y\n";
+  for (int v = 5; v >= 0; --v)
+  {
+    lines += "out_0" + std::to_string(v / 3) + "_0" + std::to_string(v % 3) + "_-381.6_" +
+      std::to_string(100 * (v % 3)) + ".5_.png " + std::to_string(0.5 * v) + " " +
+      std::to_string(-0.125 * v) + "\n";
+  }
+  lfdtest::WriteText(positions, lines);
+  vtkSmartPointer<vtkLightField> placed = Import(folder, 40.0, message, positions);
+  lfdtest::Check(placed != nullptr, "the grid with a positions file imports: " + message);
+  if (placed)
+  {
+    bool exact = true;
+    for (int v = 0; v < 6; ++v)
+    {
+      double centre[3];
+      placed->GetRig()->GetCameraCenter(v, centre);
+      exact = exact && centre[0] == 0.5 * v && centre[1] == -0.125 * v && centre[2] == 0.0;
+    }
+    lfdtest::Check(exact, "every view's centre is its line's (x, y, 0)");
+  }
+  const std::string shortFile = folder + "/short.txt";
+  lfdtest::WriteText(shortFile, "out_00_00_-381.6_0.5_.png 0 0\n");
+  lfdtest::CheckFailure("an image without a position",
+    Import(folder, 40.0, message, shortFile) == nullptr,
+    message,
+    { shortFile, "no position for out_00_01_-381.6_100.5_.png" });
+  const std::string badFile = folder + "/bad.txt";
+  lfdtest::WriteText(badFile, "# positions\nout_00_00_-381.6_0.5_.png 0 x\n");
+  lfdtest::CheckFailure("a position that is not a number",
+    Import(folder, 40.0, message, badFile) == nullptr,
+    message,
+    { badFile + ": line 2", "is not a number: \"x\"" });
+  const std::string extraFile = folder + "/extra.txt";
+  lfdtest::WriteText(extraFile, lines + "elsewhere.png 1 1\n");
+  lfdtest::CheckFailure("a line for no image of the folder",
+    Import(folder, 40.0, message, extraFile) == nullptr,
+    message,
+    { extraFile + ": line 8", "elsewhere.png is not an image of" });
 
   // Malformed folders: one line naming the folder or the file.
   lfdtest::CheckFailure("focal length not set",
