@@ -307,8 +307,7 @@ void AddProxyCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
     "(render.focal); writes the dataset folder OUT (IN + depth, replaced when complete); a "
     "recorded Depth pass (synthetic captures) is kept unless --replace");
   command->add_option("IN", proxy->In, "light-field directory")->required();
-  command->add_option("--out", proxy->Out, "output light-field directory (IN + depth)")
-    ->required();
+  command->add_option("--out", proxy->Out, "output light-field directory (IN + depth)")->required();
   command->add_flag("--replace", proxy->Replace, "estimate even when IN has a Depth pass");
   numbers.Add(command,
     "--resolution",
