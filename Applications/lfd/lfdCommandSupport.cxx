@@ -7,6 +7,7 @@
 #include "vtkImageFileWriter.h"
 #include "vtkLightField.h"
 #include "vtkLightFieldReader.h"
+#include "vtkLightFieldRenderer.h"
 #include "vtkLightFieldScene.h"
 #include "vtkLightFieldSceneLogic.h"
 #include "vtkLightFieldWriter.h"
@@ -140,12 +141,12 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path, Passes pa
 {
   vtkNew<vtkLightFieldReader> reader;
   reader->SetFileName(path.c_str());
-  if (passes == Passes::Rendered)
+  if (passes != Passes::All)
   {
     reader->ReadNoPasses();
     reader->SetReadPass(vtkLightField::COAXIAL, true);
     reader->SetReadPass(vtkLightField::LABEL, true);
-    reader->SetReadPass(vtkLightField::DEPTH, true);
+    reader->SetReadPass(vtkLightField::DEPTH, passes == Passes::Rendered);
   }
   lfd::ShowProgress(reader, "reading");
   Run(reader.Get(), "reading " + path);
@@ -160,6 +161,12 @@ vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scen
   errors->Observe(scene->GetScene());
   scene->GetScene()->ConfigureReader(nullptr);
   errors.FailOnError();
+  // The Depth pass is the renderer's proxy: a scene focused on the plane never reads it.
+  if (passes == Passes::Rendered &&
+    scene->GetScene()->GetFocalSurface() == vtkLightFieldRenderer::FOCAL_PLANE)
+  {
+    passes = Passes::RenderedOnPlane;
+  }
   return ReadLightField(scene->GetScene()->GetResolvedLightFieldPath(), passes);
 }
 

@@ -322,13 +322,15 @@ vtkSmartPointer<vtkImageData> ReadImage(const std::string& path);
 /**
  * Which passes of a light-field dataset a command reads: all of them, or
  * only those vtkLightFieldRenderer looks up (Coaxial, Label, and Depth: the
- * proxy of its per-pixel focal surface), so that a dataset's Coded, Flood
- * and Confidence passes take no memory in `lfd render` and `lfd animate`.
+ * proxy of its per-pixel focal surface; without Depth when it focuses on the
+ * plane), so that a dataset's Coded, Flood and Confidence passes take no
+ * memory in `lfd render` and `lfd animate`.
  */
 enum class Passes
 {
   All,
-  Rendered
+  Rendered,
+  RenderedOnPlane
 };
 
 vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path, Passes passes = Passes::All);

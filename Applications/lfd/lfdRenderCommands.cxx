@@ -128,6 +128,13 @@ void Render(const std::string& scenePath,
 {
   const double start = vtkTimerLog::GetUniversalTime();
   auto scene = ReadScene(scenePath);
+  if (!view.Focal.empty())
+  {
+    // Before reading: a scene focused on the plane does not read its Depth pass.
+    scene->GetScene()->SetFocalSurface(view.Focal == "plane" ? vtkLightFieldRenderer::FOCAL_PLANE
+        : view.Focal == "proxy"                              ? vtkLightFieldRenderer::FOCAL_PROXY
+                                : vtkLightFieldRenderer::FOCAL_AUTOMATIC);
+  }
   auto lightField = ReadSceneLightField(scene, Passes::Rendered);
   ApplyViewOptions(view, scene, lightField);
   auto cage = SceneCage(scene, lightField, time);
@@ -148,12 +155,6 @@ void Render(const std::string& scenePath,
     {
       renderer->SetAperture(refocus.Aperture);
     }
-  }
-  if (!view.Focal.empty())
-  {
-    renderer->SetFocalSurface(view.Focal == "plane" ? vtkLightFieldRenderer::FOCAL_PLANE
-        : view.Focal == "proxy"                     ? vtkLightFieldRenderer::FOCAL_PROXY
-                                                    : vtkLightFieldRenderer::FOCAL_AUTOMATIC);
   }
   WarnIfExtrapolating(lightField, scene, cage);
   Run(renderer.Get(), "rendering");
