@@ -491,50 +491,82 @@ struct LabelHull
   }
 
 private:
-  /// Marks the voxels whose bounding sphere (radius `radius`) may project
-  /// within one pixel of `rect` in `camera`.
+  /// Side, in voxels, of the blocks MarkCone tests first.
+  static constexpr int Block = 4;
+
+  /// The camera `camera` seen from the rig frame: c = Origin + ToCamera q.
+  struct ConeView
+  {
+    const PinholeCamera& Camera;
+    glm::dmat3 ToCamera;
+    glm::dvec3 Origin;
+    glm::ivec4 Rect;
+  };
+
+  /**
+   * Whether the sphere of radius `radius` around the rig-frame point `q` may
+   * project within one pixel of the view's label rectangle (a bilinear
+   * lookup reads the pixels within 1 of its position).
+   */
+  static bool SphereMayTouch(const ConeView& view, const glm::dvec3& q, double radius)
+  {
+    const glm::dvec3 c = view.Origin + view.ToCamera * q;
+    if (!(c.z > 2.0 * radius))
+    {
+      return true; // the sphere nears the camera plane: no bounded projection
+    }
+    // For |e| <= radius: |(c.x + e.x)/(c.z + e.z) - c.x/c.z| <=
+    // radius (c.z + |c.x|) / (c.z (c.z - radius)), likewise for y.
+    const double scale = radius / (c.z * (c.z - radius));
+    const double dx = scale * (c.z + std::abs(c.x));
+    const double dy = scale * (c.z + std::abs(c.y));
+    const double nx = c.x / c.z;
+    const double ny = c.y / c.z;
+    const glm::dmat3& K = view.Camera.K;
+    const double u = K[0][0] * nx + K[1][0] * ny + K[2][0];
+    const double w = K[0][1] * nx + K[1][1] * ny + K[2][1];
+    const double du = std::abs(K[0][0]) * dx + std::abs(K[1][0]) * dy;
+    const double dv = std::abs(K[0][1]) * dx + std::abs(K[1][1]) * dy;
+    const glm::ivec4& rect = view.Rect;
+    return u + du > rect.x - 1.0 - 1e-6 && u - du < rect.z + 1.0 + 1e-6 &&
+      w + dv > rect.y - 1.0 - 1e-6 && w - dv < rect.w + 1.0 + 1e-6;
+  }
+
+  /**
+   * Marks the voxels whose bounding sphere (radius `radius`) may project
+   * within one pixel of `rect` in `camera`: blocks of Block^3 voxels are
+   * tested first (their own bounding sphere), so that the voxels of the
+   * many blocks far from the cone are never tested one by one.
+   */
   void MarkCone(const PinholeCamera& camera,
     const glm::ivec4& rect,
     double radius,
     std::uint8_t* marks,
     const RingLayout& layout) const
   {
-    // World position of a voxel centre: Center + RefX q.x + RefY q.y + Axis q.z.
+    // World position of a rig-frame point: Center + RefX q.x + RefY q.y + Axis q.z.
     const glm::dmat3 frame(layout.RefX, layout.RefY, layout.Cyl.Axis);
-    const glm::dmat3 toCamera = camera.R * frame;
-    const glm::dvec3 origin = camera.R * layout.Cyl.Center + camera.t;
-    for (int k = 0; k < Cells; ++k)
+    const ConeView view{ camera, camera.R * frame, camera.R * layout.Cyl.Center + camera.t, rect };
+    const int blocks = Cells / Block;
+    for (int b = 0; b < blocks * blocks * blocks; ++b)
     {
-      for (int j = 0; j < Cells; ++j)
+      const glm::ivec3 corner =
+        Block * glm::ivec3(b % blocks, b / blocks % blocks, b / blocks / blocks);
+      const glm::dvec3 centre = this->Low + (glm::dvec3(corner) + 0.5 * Block) * this->CellSize;
+      if (!SphereMayTouch(view, centre, Block * radius))
       {
-        for (int i = 0; i < Cells; ++i)
+        continue;
+      }
+      for (int v = 0; v < Block * Block * Block; ++v)
+      {
+        const glm::ivec3 cell =
+          corner + glm::ivec3(v % Block, v / Block % Block, v / Block / Block);
+        std::uint8_t& mark =
+          marks[(static_cast<std::size_t>(cell.z) * Cells + cell.y) * Cells + cell.x];
+        if (!mark)
         {
-          std::uint8_t& mark = marks[(static_cast<std::size_t>(k) * Cells + j) * Cells + i];
-          if (mark)
-          {
-            continue;
-          }
-          const glm::dvec3 q = this->Low + (glm::dvec3(i, j, k) + 0.5) * this->CellSize;
-          const glm::dvec3 c = origin + toCamera * q;
-          if (!(c.z > 2.0 * radius))
-          {
-            mark = 1; // the sphere nears the camera plane: no bounded projection
-            continue;
-          }
-          // For |e| <= radius: |(c.x + e.x)/(c.z + e.z) - c.x/c.z| <=
-          // radius (c.z + |c.x|) / (c.z (c.z - radius)), likewise for y.
-          const double scale = radius / (c.z * (c.z - radius));
-          const double dx = scale * (c.z + std::abs(c.x));
-          const double dy = scale * (c.z + std::abs(c.y));
-          const double nx = c.x / c.z;
-          const double ny = c.y / c.z;
-          const double u = camera.K[0][0] * nx + camera.K[1][0] * ny + camera.K[2][0];
-          const double w = camera.K[0][1] * nx + camera.K[1][1] * ny + camera.K[2][1];
-          const double du = std::abs(camera.K[0][0]) * dx + std::abs(camera.K[1][0]) * dy;
-          const double dv = std::abs(camera.K[0][1]) * dx + std::abs(camera.K[1][1]) * dy;
-          // A bilinear lookup at (u, w) reads pixels within 1 of it.
-          mark = u + du > rect.x - 1.0 - 1e-6 && u - du < rect.z + 1.0 + 1e-6 &&
-            w + dv > rect.y - 1.0 - 1e-6 && w - dv < rect.w + 1.0 + 1e-6;
+          mark =
+            SphereMayTouch(view, this->Low + (glm::dvec3(cell) + 0.5) * this->CellSize, radius);
         }
       }
     }
