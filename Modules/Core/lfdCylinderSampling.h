@@ -445,6 +445,10 @@ struct LabelHull
     for (const RingRow& row : layout.Rows)
     {
       const int n = static_cast<int>(row.Azimuth.size());
+      if (n == 0)
+      {
+        continue;
+      }
       // The views BracketAzimuth may pick for an azimuth in [a0, a1], and one
       // more on each side for the rounding of the sector's bounds.
       const int first =
