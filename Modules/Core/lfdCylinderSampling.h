@@ -367,6 +367,249 @@ inline bool DepthBounds(const ViewStack<float>& depth,
   return low.x <= high.x;
 }
 
+/**
+ * Where a focal-plane lookup can meet a part: per azimuth sector of the rig,
+ * a voxel grid (in the rig's frame: RefX, RefY, Axis) marking every voxel
+ * that the label cone of a view that may be chosen in the sector touches
+ * (the cone from the view's centre through the bounding rectangle of its
+ * labelled pixels, widened by the bilinear footprint). A ray whose entry
+ * azimuth lies in a sector and whose focal point falls in an unmarked voxel
+ * of that sector's grid has no labelled sample among its 16: with labels it
+ * is background, exactly, and LightFieldSampler::Gather skips its texels.
+ * The marking is conservative (each voxel is tested as its bounding sphere,
+ * with a rigorous bound of the sphere's projection), and a focal point
+ * outside the grid is always looked up, so skipping never changes a pixel.
+ * Built once per light field; a rig with lens distortion (whose projection
+ * of a sphere this bound does not hold for) gets no grid.
+ */
+struct LabelHull
+{
+  static constexpr int Sectors = 32;
+  static constexpr int Cells = 32; ///< per axis of a sector's grid
+
+  glm::dvec3 Low{ 0.0 };      ///< grid corner in the rig frame
+  glm::dvec3 CellSize{ 1.0 }; ///< per axis
+  /// Per sector, Cells^3 flags (1: a label cone touches the voxel); empty: no grid.
+  std::vector<std::uint8_t> Marks;
+
+  /**
+   * Sizes the grid around the rig's axis: radially the half-width that the
+   * views image at the axis, along it the rows' heights widened by as much.
+   * Returns false (no grid) when a camera has lens distortion.
+   */
+  bool Initialize(const RingLayout& layout, const PinholeCamera* cameras, int width, int height)
+  {
+    this->Marks.clear();
+    double reach = 0.0;
+    for (const RingRow& row : layout.Rows)
+    {
+      for (int view : row.View)
+      {
+        const PinholeCamera& camera = cameras[view];
+        if (camera.Lens.Active)
+        {
+          return false;
+        }
+        const double focal = std::min(std::abs(camera.K[0][0]), std::abs(camera.K[1][1]));
+        reach = std::max(reach,
+          glm::distance(camera.Center(), layout.Cyl.Center) * 0.5 * std::max(width, height) /
+            focal);
+      }
+    }
+    if (layout.Rows.empty() || !(reach > 0.0))
+    {
+      return false;
+    }
+    this->Low = glm::dvec3(-reach, -reach, layout.Rows.front().Height - reach);
+    const glm::dvec3 high(reach, reach, layout.Rows.back().Height + reach);
+    this->CellSize = (high - this->Low) / double(Cells);
+    this->Marks.assign(static_cast<std::size_t>(Sectors) * Cells * Cells * Cells, 0);
+    return true;
+  }
+
+  /**
+   * Marks sector `sector`'s grid from `rects`: per view, the OpenCV pixel
+   * bounds (x0, y0, x1, y1) of its labelled pixels (x1 < x0: none).
+   * Sectors are independent: they may be marked in parallel.
+   */
+  void MarkSector(int sector,
+    const RingLayout& layout,
+    const PinholeCamera* cameras,
+    const std::vector<glm::ivec4>& rects)
+  {
+    std::uint8_t* marks =
+      this->Marks.data() + static_cast<std::size_t>(sector) * Cells * Cells * Cells;
+    const double a0 = TwoPi * sector / Sectors;
+    const double a1 = TwoPi * (sector + 1) / Sectors;
+    const double radius = 0.5 * glm::length(this->CellSize);
+    for (const RingRow& row : layout.Rows)
+    {
+      const int n = static_cast<int>(row.Azimuth.size());
+      if (n == 0)
+      {
+        continue;
+      }
+      // The views BracketAzimuth may pick for an azimuth in [a0, a1], and one
+      // more on each side for the rounding of the sector's bounds.
+      const int first =
+        static_cast<int>(
+          std::upper_bound(row.Azimuth.begin(), row.Azimuth.end(), a0) - row.Azimuth.begin()) -
+        2;
+      const int last =
+        static_cast<int>(
+          std::upper_bound(row.Azimuth.begin(), row.Azimuth.end(), a1) - row.Azimuth.begin()) +
+        1;
+      for (int i = first; i <= std::min(last, first + n - 1); ++i)
+      {
+        const int view = row.View[((i % n) + n) % n];
+        const glm::ivec4& rect = rects[view];
+        if (rect.z >= rect.x)
+        {
+          this->MarkCone(cameras[view], rect, radius, marks, layout);
+        }
+      }
+    }
+  }
+
+  /**
+   * False when the ray entering the rig at `azimuth`, focused at `x`, has
+   * no labelled sample for sure; true when it may have one.
+   */
+  bool MayMeetPart(double azimuth, const glm::dvec3& x, const RingLayout& layout) const
+  {
+    const glm::dvec3 v = x - layout.Cyl.Center;
+    const glm::dvec3 q =
+      (glm::dvec3(
+         glm::dot(v, layout.RefX), glm::dot(v, layout.RefY), glm::dot(v, layout.Cyl.Axis)) -
+        this->Low) /
+      this->CellSize;
+    if (!(q.x >= 0.0 && q.y >= 0.0 && q.z >= 0.0 && q.x < Cells && q.y < Cells && q.z < Cells))
+    {
+      return true;
+    }
+    const int sector = std::min(static_cast<int>(azimuth * (Sectors / TwoPi)), Sectors - 1);
+    const std::size_t cell =
+      (static_cast<std::size_t>(sector) * Cells + static_cast<int>(q.z)) * Cells * Cells +
+      static_cast<std::size_t>(q.y) * Cells + static_cast<std::size_t>(q.x);
+    return this->Marks[cell] != 0;
+  }
+
+private:
+  /// Side, in voxels, of the blocks MarkCone tests first.
+  static constexpr int Block = 4;
+
+  /// The camera `camera` seen from the rig frame: c = Origin + ToCamera q.
+  struct ConeView
+  {
+    const PinholeCamera& Camera;
+    glm::dmat3 ToCamera;
+    glm::dvec3 Origin;
+    glm::ivec4 Rect;
+  };
+
+  /**
+   * Whether the sphere of radius `radius` around the rig-frame point `q` may
+   * project within one pixel of the view's label rectangle (a bilinear
+   * lookup reads the pixels within 1 of its position).
+   */
+  static bool SphereMayTouch(const ConeView& view, const glm::dvec3& q, double radius)
+  {
+    const glm::dvec3 c = view.Origin + view.ToCamera * q;
+    if (!(c.z > 2.0 * radius))
+    {
+      return true; // the sphere nears the camera plane: no bounded projection
+    }
+    // For |e| <= radius: |(c.x + e.x)/(c.z + e.z) - c.x/c.z| <=
+    // radius (c.z + |c.x|) / (c.z (c.z - radius)), likewise for y.
+    const double scale = radius / (c.z * (c.z - radius));
+    const double dx = scale * (c.z + std::abs(c.x));
+    const double dy = scale * (c.z + std::abs(c.y));
+    const double nx = c.x / c.z;
+    const double ny = c.y / c.z;
+    const glm::dmat3& K = view.Camera.K;
+    const double u = K[0][0] * nx + K[1][0] * ny + K[2][0];
+    const double w = K[0][1] * nx + K[1][1] * ny + K[2][1];
+    const double du = std::abs(K[0][0]) * dx + std::abs(K[1][0]) * dy;
+    const double dv = std::abs(K[0][1]) * dx + std::abs(K[1][1]) * dy;
+    const glm::ivec4& rect = view.Rect;
+    return u + du > rect.x - 1.0 - 1e-6 && u - du < rect.z + 1.0 + 1e-6 &&
+      w + dv > rect.y - 1.0 - 1e-6 && w - dv < rect.w + 1.0 + 1e-6;
+  }
+
+  /**
+   * Marks the voxels whose bounding sphere (radius `radius`) may project
+   * within one pixel of `rect` in `camera`: blocks of Block^3 voxels are
+   * tested first (their own bounding sphere), so that the voxels of the
+   * many blocks far from the cone are never tested one by one.
+   */
+  void MarkCone(const PinholeCamera& camera,
+    const glm::ivec4& rect,
+    double radius,
+    std::uint8_t* marks,
+    const RingLayout& layout) const
+  {
+    // World position of a rig-frame point: Center + RefX q.x + RefY q.y + Axis q.z.
+    const glm::dmat3 frame(layout.RefX, layout.RefY, layout.Cyl.Axis);
+    const ConeView view{ camera, camera.R * frame, camera.R * layout.Cyl.Center + camera.t, rect };
+    const int blocks = Cells / Block;
+    for (int b = 0; b < blocks * blocks * blocks; ++b)
+    {
+      const glm::ivec3 corner =
+        Block * glm::ivec3(b % blocks, b / blocks % blocks, b / blocks / blocks);
+      const glm::dvec3 centre = this->Low + (glm::dvec3(corner) + 0.5 * Block) * this->CellSize;
+      if (!SphereMayTouch(view, centre, Block * radius))
+      {
+        continue;
+      }
+      for (int v = 0; v < Block * Block * Block; ++v)
+      {
+        const glm::ivec3 cell =
+          corner + glm::ivec3(v % Block, v / Block % Block, v / Block / Block);
+        std::uint8_t& mark =
+          marks[(static_cast<std::size_t>(cell.z) * Cells + cell.y) * Cells + cell.x];
+        if (!mark)
+        {
+          mark =
+            SphereMayTouch(view, this->Low + (glm::dvec3(cell) + 0.5) * this->CellSize, radius);
+        }
+      }
+    }
+  }
+};
+
+/**
+ * The OpenCV pixel bounds (x0, y0, x1, y1) of the labelled (non-zero) pixels
+ * of each view of a label stack; x1 < x0 for a view without any.
+ */
+inline std::vector<glm::ivec4> LabelRectangles(const ViewStack<std::uint8_t>& labels, int views)
+{
+  std::vector<glm::ivec4> rects(views, glm::ivec4(labels.Width, labels.Height, -1, -1));
+  for (int v = 0; v < views; ++v)
+  {
+    glm::ivec4& rect = rects[v];
+    for (int y = 0; y < labels.Height; ++y)
+    {
+      const std::uint8_t* row = labels.Pixel(v, 0, y);
+      int x0 = 0;
+      while (x0 < labels.Width && !row[x0])
+      {
+        ++x0;
+      }
+      if (x0 == labels.Width)
+      {
+        continue;
+      }
+      int x1 = labels.Width - 1;
+      while (!row[x1])
+      {
+        --x1;
+      }
+      rect = glm::ivec4(std::min(rect.x, x0), std::min(rect.y, y), std::max(rect.z, x1), y);
+    }
+  }
+  return rects;
+}
+
 /// Weighted vote of the samples' labels; -1 when there is no sample.
 inline int VoteLabel(const RaySamples& samples);
 
@@ -391,6 +634,9 @@ struct LightFieldSampler
   /// them meet no surface. Unbounded by default.
   glm::dvec3 SurfaceLow{ -std::numeric_limits<double>::infinity() };
   glm::dvec3 SurfaceHigh{ std::numeric_limits<double>::infinity() };
+  /// Where focal-plane rays may meet a part (LabelHull); null or empty: no
+  /// ray is skipped. Only meaningful with labels, and ignored with a proxy.
+  const LabelHull* Hull = nullptr;
   /// Views blended on the proxy surface (k of GatherOnSurface, 1..4).
   int ProxyViews = 3;
   /// Relative depth by which a camera's own depth map may be nearer than a
@@ -409,6 +655,9 @@ struct LightFieldSampler
    * first (s >= 0) and blended from the nearest views by angle
    * (GatherOnSurface); a ray that meets no surface, or whose focused samples
    * see background, falls back to the focal plane, as without a proxy.
+   *
+   * Without a proxy, a ray that the Hull proves to have no labelled sample
+   * returns false at once: with labels it is background either way.
    */
   bool Gather(const glm::dvec3& o, const glm::dvec3& d, RaySamples& out) const
   {
@@ -421,13 +670,18 @@ struct LightFieldSampler
     }
     double azimuth, height;
     this->Layout->Locate(o + s * d, azimuth, height);
+    const glm::dvec3 x = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
+    if (!this->Depth.Data && this->Hull && !this->Hull->Marks.empty() &&
+      !this->Hull->MayMeetPart(azimuth, x, *this->Layout))
+    {
+      return false;
+    }
     WeightedView views[4];
     const int nviews = ChooseViews(*this->Layout, azimuth, height, views);
     if (this->Depth.Data && this->GatherOnSurface(o, d, azimuth, height, views, nviews, out))
     {
       return true;
     }
-    const glm::dvec3 x = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
     for (int i = 0; i < nviews; ++i)
     {
       if (views[i].Weight > 0.0)

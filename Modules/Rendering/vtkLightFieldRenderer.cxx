@@ -546,6 +546,11 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.SurfaceHigh = glm::dvec3(extent[3], extent[4], extent[5]);
     sampler.ProxyViews = this->ProxyViews;
   }
+  if (settings.UseLabels && plane.Empty() && !sampler.Depth.Data)
+  {
+    sampler.Hull =
+      &this->GetLabelHull(labels, input->GetWidth(), input->GetHeight(), rig, layout, cameras);
+  }
   settings.WidenedSearch = this->WidenedSearch > 0;
   settings.AntiAliasing = this->AntiAliasing;
   settings.Owned = lfd::OwnedLabels(boxes);
@@ -642,6 +647,43 @@ const std::vector<double>& vtkLightFieldRenderer::GetProxyExtent(vtkDataArray* d
     this->ProxyExtentTime.Modified();
   }
   return this->ProxyExtent;
+}
+
+//------------------------------------------------------------------------------
+const lfd::LabelHull& vtkLightFieldRenderer::GetLabelHull(vtkDataArray* labels,
+  int width,
+  int height,
+  vtkCameraRig* rig,
+  const lfd::RingLayout& layout,
+  const std::vector<lfd::PinholeCamera>& cameras)
+{
+  if (!this->Hull || labels != this->HullArray || labels->GetMTime() > this->HullTime ||
+    rig->GetMTime() > this->HullTime || this->ExcludedViews != this->HullExcludedViews)
+  {
+    this->Hull = std::make_unique<lfd::LabelHull>();
+    if (this->Hull->Initialize(layout, cameras.data(), width, height))
+    {
+      const lfd::ViewStack<std::uint8_t> stack{
+        vtkUnsignedCharArray::SafeDownCast(labels)->GetPointer(0), width, height, 1
+      };
+      const std::vector<glm::ivec4> rects =
+        lfd::LabelRectangles(stack, static_cast<int>(cameras.size()));
+      lfd::LabelHull& hull = *this->Hull;
+      vtkSMPTools::For(0,
+        lfd::LabelHull::Sectors,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType sector = begin; sector < end; ++sector)
+          {
+            hull.MarkSector(static_cast<int>(sector), layout, cameras.data(), rects);
+          }
+        });
+    }
+    this->HullArray = labels;
+    this->HullExcludedViews = this->ExcludedViews;
+    this->HullTime.Modified();
+  }
+  return *this->Hull;
 }
 
 //------------------------------------------------------------------------------

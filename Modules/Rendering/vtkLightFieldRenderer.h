@@ -59,11 +59,14 @@
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 #include "vtkTimeStamp.h"    // For vtkTimeStamp
 
+#include <memory> // For std::unique_ptr
 #include <vector> // For std::vector
 
 namespace lfd
 {
 struct PinholeCamera;
+struct LabelHull;
+struct RingLayout;
 }
 
 class vtkCamera;
@@ -406,6 +409,26 @@ private:
     vtkCameraRig* rig,
     const std::vector<lfd::PinholeCamera>& cameras);
 #endif
+
+#ifndef __VTK_WRAP__
+  /**
+   * The lfd::LabelHull of the Label pass `labels` over `layout` (no grid
+   * when a camera has lens distortion), so that focal-plane rays that can
+   * meet no part skip their lookup; cached while the Label pass, the rig and
+   * the excluded views are unchanged.
+   */
+  const lfd::LabelHull& GetLabelHull(vtkDataArray* labels,
+    int width,
+    int height,
+    vtkCameraRig* rig,
+    const lfd::RingLayout& layout,
+    const std::vector<lfd::PinholeCamera>& cameras);
+#endif
+
+  std::unique_ptr<lfd::LabelHull> Hull;
+  vtkDataArray* HullArray = nullptr; // compared, never dereferenced
+  std::vector<int> HullExcludedViews;
+  vtkTimeStamp HullTime;
 
   std::vector<double> ProxyExtent;
   vtkDataArray* ProxyExtentArray = nullptr; // compared, never dereferenced

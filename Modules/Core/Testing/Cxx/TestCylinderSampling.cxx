@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <iostream>
 #include <vector>
@@ -124,6 +125,96 @@ void ProxySurface()
 }
 }
 
+// The label hull (LabelHull): two rings of 24 views of 32 x 32 whose label
+// pass is a square of 8 x 8 pixels (shifted by view), rays from all around
+// aimed at a box around the object. A ray that the hull lets Gather skip must
+// have no labelled sample without the hull; a ray it does not skip must get
+// the very same samples.
+void LabelHullSkips()
+{
+  const int size = 32, perRow = 24, views = 2 * perRow;
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double axis[3] = { 0.0, 1.0, 0.0 };
+  const double heights[2] = { -0.5, 0.5 };
+  vtkNew<vtkLightField> lf;
+  lf->SetLayout(size, size, views);
+  lf->GetRig()->MakeCylinder(origin, axis, 4.0, perRow, 2, heights, size, size, 40.0);
+  auto* rgb = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::COAXIAL));
+  auto* label = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::LABEL));
+  for (vtkIdType p = 0; p < lf->GetNumberOfPoints(); ++p)
+  {
+    const int v = static_cast<int>(p / (size * size));
+    const int x = static_cast<int>(p % size);
+    const int y = static_cast<int>(p / size % size);
+    const bool inside = x >= 10 + v % 3 && x < 18 + v % 3 && y >= 12 && y < 20;
+    rgb->SetComponent(p, 0, 5.0 * (v % 50));
+    label->SetComponent(p, 0, inside ? 1 + v % 2 : 0);
+  }
+  std::vector<lfd::PinholeCamera> cameras(views);
+  for (int v = 0; v < views; ++v)
+  {
+    cameras[v] = lf->GetRig()->GetCamera(v);
+  }
+  const lfd::RingLayout layout = lf->GetRig()->GetRingLayout();
+  lfd::LightFieldSampler sampler;
+  sampler.Layout = &layout;
+  sampler.Cameras = cameras.data();
+  sampler.Radiance = { rgb->GetPointer(0), size, size, 3 };
+  sampler.Labels = { label->GetPointer(0), size, size, 1 };
+  sampler.FocalDistance = 0.3;
+  lfd::LabelHull hull;
+  Expect("hull grid sized", hull.Initialize(layout, cameras.data(), size, size), 1.0);
+  const std::vector<glm::ivec4> rects = lfd::LabelRectangles(sampler.Labels, views);
+  Expect("label rectangle of view 4 (x0)", rects[4].x, 11.0);
+  Expect("label rectangle of view 4 (y1, OpenCV rows)", rects[4].w, 19.0);
+  for (int sector = 0; sector < lfd::LabelHull::Sectors; ++sector)
+  {
+    hull.MarkSector(sector, layout, cameras.data(), rects);
+  }
+  std::uint32_t seed = 12345;
+  const auto uniform = [&seed](double low, double high)
+  {
+    seed = seed * 1664525u + 1013904223u;
+    return low + (high - low) * (seed >> 8) / double(1u << 24);
+  };
+  int skipped = 0, labelled = 0, wrong = 0, differing = 0;
+  for (int i = 0; i < 4000; ++i)
+  {
+    const double phi = uniform(0.0, lfd::TwoPi);
+    const glm::dvec3 o(6.0 * std::sin(phi), uniform(-2.0, 2.0), 6.0 * std::cos(phi));
+    const glm::dvec3 target(uniform(-1.5, 1.5), uniform(-1.5, 1.5), uniform(-1.5, 1.5));
+    lfd::RaySamples plain, skipping;
+    sampler.Hull = nullptr;
+    const bool found = sampler.Gather(o, target - o, plain);
+    bool anyLabel = false;
+    for (int k = 0; k < plain.Count; ++k)
+    {
+      anyLabel = anyLabel || plain.Samples[k].Label > 0;
+    }
+    labelled += anyLabel ? 1 : 0;
+    sampler.Hull = &hull;
+    if (!sampler.Gather(o, target - o, skipping) && found)
+    {
+      ++skipped;
+      wrong += anyLabel ? 1 : 0;
+      continue;
+    }
+    bool same = skipping.Count == plain.Count;
+    for (int k = 0; same && k < plain.Count; ++k)
+    {
+      same = plain.Samples[k].Weight == skipping.Samples[k].Weight &&
+        plain.Samples[k].Label == skipping.Samples[k].Label &&
+        plain.Samples[k].Color == skipping.Samples[k].Color;
+    }
+    differing += same ? 0 : 1;
+  }
+  Expect("rays with a labelled sample", labelled, 615.0);
+  Expect("rays the hull skips", skipped, 1913.0);
+  Expect("skipped rays with a labelled sample", wrong, 0.0);
+  Expect("looked-up rays whose samples differ", differing, 0.0);
+  sampler.Hull = nullptr;
+}
+
 int TestCylinderSampling(int, char*[])
 {
   // Entry intersection.
@@ -214,5 +305,6 @@ int TestCylinderSampling(int, char*[])
   Expect("leave-one-out colour (views 1 and 3, weights 1/4, 3/4)", color.r, 25.0);
 
   ProxySurface();
+  LabelHullSkips();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
