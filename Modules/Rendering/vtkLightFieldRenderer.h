@@ -59,10 +59,12 @@
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 #include "vtkTimeStamp.h"    // For vtkTimeStamp
 
+#include <memory> // For std::unique_ptr
 #include <vector> // For std::vector
 
 namespace lfd
 {
+struct NearestDepthTiles;
 struct PinholeCamera;
 }
 
@@ -397,8 +399,9 @@ private:
   /**
    * The proxy's extent: the bounds of its surface points (6 values, low
    * then high, lfd::DepthBounds), then per view the smallest and largest
-   * depth (lfd::DepthRanges); cached while the Depth pass and the rig are
-   * unchanged.
+   * depth (lfd::DepthRanges); with ProxyTiles, the coarse level of the
+   * depth walk (lfd::NearestDepthTiles); cached while the Depth pass and
+   * the rig are unchanged.
    */
   const std::vector<double>& GetProxyExtent(vtkDataArray* depth,
     int width,
@@ -408,6 +411,7 @@ private:
 #endif
 
   std::vector<double> ProxyExtent;
+  std::unique_ptr<lfd::NearestDepthTiles> ProxyTiles;
   vtkDataArray* ProxyExtentArray = nullptr; // compared, never dereferenced
   vtkTimeStamp ProxyExtentTime;
 
