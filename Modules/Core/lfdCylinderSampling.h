@@ -639,19 +639,11 @@ struct LightFieldSampler
           const double surface = camera.Project(o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
           const double gap =
             surface > 0.0 ? co + s * cd - surface : std::numeric_limits<double>::quiet_NaN();
-          if (previousGap < 0.0 && gap >= 0.0)
+          if (gap >= 0.0)
           {
-            hit = previousS + (s - previousS) * previousGap / (previousGap - gap);
-            return true;
-          }
-          // From a pixel without a surface straight to one behind it: the
-          // ray meets that surface at its silhouette only if it is just
-          // behind it; deeper, the ray came round it or through a hole of
-          // the map (dark crevices under the object threshold) and meets
-          // it nowhere here.
-          if (std::isnan(previousGap) && gap >= 0.0 && gap <= this->OcclusionTolerance * surface)
-          {
-            hit = s;
+            hit = previousGap < 0.0
+              ? previousS + (s - previousS) * previousGap / (previousGap - gap)
+              : s;
             return true;
           }
           previousS = s;
