@@ -610,6 +610,77 @@ inline std::vector<glm::ivec4> LabelRectangles(const ViewStack<std::uint8_t>& la
   return rects;
 }
 
+/**
+ * The coarse level of a depth stack, for the coarse-then-fine walk of
+ * LightFieldSampler::IntersectDepthMap: per view, the nearest depth of each
+ * Size x Size tile of its map (infinity for a tile that sees no surface).
+ * A stretch of a ray whose camera z stays nearer than the nearest depth of
+ * every tile its projection crosses cannot go behind the map there, so the
+ * walk skips it without reading its pixels (the idea of a min-depth
+ * hierarchy in relief mapping and screen-space ray marching, one level).
+ * Built once per depth stack, like DepthRanges().
+ */
+struct NearestDepthTiles
+{
+  static constexpr int Size = 8;
+  int Width = 0; // of the depth maps
+  int Height = 0;
+  int Columns = 0;
+  int Rows = 0;
+  std::vector<float> Depth; // per view, Rows x Columns, top tile row first
+
+  void Build(const ViewStack<float>& depth, int views)
+  {
+    this->Width = depth.Width;
+    this->Height = depth.Height;
+    this->Columns = (depth.Width + Size - 1) / Size;
+    this->Rows = (depth.Height + Size - 1) / Size;
+    const std::size_t tiles = static_cast<std::size_t>(this->Columns) * this->Rows;
+    this->Depth.assign(tiles * views, std::numeric_limits<float>::infinity());
+    for (int v = 0; v < views; ++v)
+    {
+      float* nearest = this->Depth.data() + v * tiles;
+      for (int y = 0; y < depth.Height; ++y)
+      {
+        const float* row = depth.Pixel(v, 0, y);
+        for (int x = 0; x < depth.Width; ++x)
+        {
+          float& tile = nearest[(y / Size) * this->Columns + x / Size];
+          tile = row[x] > 0.0f ? std::min(tile, row[x]) : tile;
+        }
+      }
+    }
+  }
+
+  /**
+   * The nearest depth of `view` over the tiles that hold a pixel of the box
+   * [low, high] (pixel coordinates, clamped to the image); infinity when
+   * the box lies outside the image.
+   */
+  double Nearest(int view, const glm::dvec2& low, const glm::dvec2& high) const
+  {
+    if (!(high.x >= 0.0 && high.y >= 0.0 && low.x < this->Width && low.y < this->Height))
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+    const int x0 = static_cast<int>(std::max(low.x, 0.0)) / Size;
+    const int y0 = static_cast<int>(std::max(low.y, 0.0)) / Size;
+    const int x1 = static_cast<int>(std::min(high.x, this->Width - 1.0)) / Size;
+    const int y1 = static_cast<int>(std::min(high.y, this->Height - 1.0)) / Size;
+    const float* tiles =
+      this->Depth.data() + static_cast<std::size_t>(view) * this->Columns * this->Rows;
+    float nearest = std::numeric_limits<float>::infinity();
+    for (int y = y0; y <= y1; ++y)
+    {
+      for (int x = x0; x <= x1; ++x)
+      {
+        nearest = std::min(nearest, tiles[y * this->Columns + x]);
+      }
+    }
+    return nearest;
+  }
+};
+
 /// Weighted vote of the samples' labels; -1 when there is no sample.
 inline int VoteLabel(const RaySamples& samples);
 
@@ -630,6 +701,9 @@ struct LightFieldSampler
   /// Per view v, the smallest and largest depth of its map at 2 v and
   /// 2 v + 1 (DepthRanges()).
   const double* DepthRange = nullptr;
+  /// The coarse level of the walk (NearestDepthTiles of Depth); null: every
+  /// step of the walk reads its pixel.
+  const NearestDepthTiles* DepthTiles = nullptr;
   /// Bounds of the proxy's surface points (DepthBounds()): rays that miss
   /// them meet no surface. Unbounded by default.
   glm::dvec3 SurfaceLow{ -std::numeric_limits<double>::infinity() };
@@ -645,6 +719,8 @@ struct LightFieldSampler
 
   /// Steps of the walk along a ray's projection into a depth map.
   static constexpr int MaximumDepthSteps = 256;
+  /// Steps of the walk tested at once against DepthTiles.
+  static constexpr int CoarseDepthSteps = 8;
 
   /**
    * Sec. 6.2: gathers the weighted samples of the ray `o + s d` (d need not
@@ -742,6 +818,11 @@ struct LightFieldSampler
    * surface (another part hides it), the crossing comes earlier than the
    * surface, never later: the latest crossing of several views is the best
    * estimate. False when the ray stays in front of the map.
+   *
+   * Coarse then fine: with DepthTiles, each run of CoarseDepthSteps steps
+   * whose camera z stays nearer than the tiles around its projection is
+   * skipped unread; the others are walked step by step. The steps, and so
+   * the crossing, are those of the plain walk, bit for bit.
    */
   bool IntersectDepthMap(int view,
     const glm::dvec3& o,
@@ -782,21 +863,52 @@ struct LightFieldSampler
       std::clamp(std::ceil(glm::distance(uv0, uv1)), 1.0, double(MaximumDepthSteps)));
     double previousS = s0;
     double previousGap = std::numeric_limits<double>::quiet_NaN(); // NaN: no surface there
-    for (int i = 0; i <= steps; ++i)
+    // Steps first to last of the current run; previousGap is step first's
+    // when `walked` (the run before was walked), else that step is unread.
+    int first = 0;
+    bool walked = false;
+    glm::dvec2 uvFirst = uv0;
+    bool firstProjected = true; // uvFirst is step first's projection
+    while (first < steps)
     {
-      const double s = s0 + (s1 - s0) * i / steps;
-      glm::dvec2 uv;
-      const double surface = camera.Project(o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
-      const double gap =
-        surface > 0.0 ? co + s * cd - surface : std::numeric_limits<double>::quiet_NaN();
-      if (gap >= 0.0)
+      const int last = std::min(first + CoarseDepthSteps, steps);
+      const double sLast = s0 + (s1 - s0) * last / steps;
+      glm::dvec2 uvLast;
+      const bool lastProjected = this->DepthTiles && camera.Project(o + sLast * d, uvLast);
+      // A projection bends (lens distortion) far less than the margin of
+      // one pixel over a run, and each step reads its nearest pixel.
+      if (firstProjected && lastProjected &&
+        this->DepthTiles->Nearest(view,
+          glm::min(uvFirst, uvLast) - 1.0,
+          glm::max(uvFirst, uvLast) + 1.0) > std::max(co + previousS * cd, co + sLast * cd))
       {
-        hit =
-          previousGap < 0.0 ? previousS + (s - previousS) * previousGap / (previousGap - gap) : s;
-        return true;
+        walked = false;
       }
-      previousS = s;
-      previousGap = gap;
+      else
+      {
+        for (int i = walked ? first + 1 : first; i <= last; ++i)
+        {
+          const double s = s0 + (s1 - s0) * i / steps;
+          glm::dvec2 uv;
+          const double surface = camera.Project(o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
+          const double gap =
+            surface > 0.0 ? co + s * cd - surface : std::numeric_limits<double>::quiet_NaN();
+          if (gap >= 0.0)
+          {
+            hit = previousGap < 0.0
+              ? previousS + (s - previousS) * previousGap / (previousGap - gap)
+              : s;
+            return true;
+          }
+          previousS = s;
+          previousGap = gap;
+        }
+        walked = true;
+      }
+      first = last;
+      uvFirst = uvLast;
+      firstProjected = lastProjected;
+      previousS = sLast;
     }
     return false;
   }

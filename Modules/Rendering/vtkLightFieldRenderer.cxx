@@ -544,6 +544,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.DepthRange = extent.data() + 6;
     sampler.SurfaceLow = glm::dvec3(extent[0], extent[1], extent[2]);
     sampler.SurfaceHigh = glm::dvec3(extent[3], extent[4], extent[5]);
+    sampler.DepthTiles = this->ProxyTiles.get();
     sampler.ProxyViews = this->ProxyViews;
   }
   if (settings.UseLabels && plane.Empty() && !sampler.Depth.Data)
@@ -643,6 +644,8 @@ const std::vector<double>& vtkLightFieldRenderer::GetProxyExtent(vtkDataArray* d
     this->ProxyExtent = { low.x, low.y, low.z, high.x, high.y, high.z };
     const std::vector<double> ranges = lfd::DepthRanges(stack, views);
     this->ProxyExtent.insert(this->ProxyExtent.end(), ranges.begin(), ranges.end());
+    this->ProxyTiles = std::make_unique<lfd::NearestDepthTiles>();
+    this->ProxyTiles->Build(stack, views);
     this->ProxyExtentArray = depth;
     this->ProxyExtentTime.Modified();
   }

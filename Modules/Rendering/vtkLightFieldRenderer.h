@@ -64,6 +64,7 @@
 
 namespace lfd
 {
+struct NearestDepthTiles;
 struct PinholeCamera;
 struct LabelHull;
 struct RingLayout;
@@ -400,8 +401,9 @@ private:
   /**
    * The proxy's extent: the bounds of its surface points (6 values, low
    * then high, lfd::DepthBounds), then per view the smallest and largest
-   * depth (lfd::DepthRanges); cached while the Depth pass and the rig are
-   * unchanged.
+   * depth (lfd::DepthRanges); with ProxyTiles, the coarse level of the
+   * depth walk (lfd::NearestDepthTiles); cached while the Depth pass and
+   * the rig are unchanged.
    */
   const std::vector<double>& GetProxyExtent(vtkDataArray* depth,
     int width,
@@ -431,6 +433,7 @@ private:
   vtkTimeStamp HullTime;
 
   std::vector<double> ProxyExtent;
+  std::unique_ptr<lfd::NearestDepthTiles> ProxyTiles;
   vtkDataArray* ProxyExtentArray = nullptr; // compared, never dereferenced
   vtkTimeStamp ProxyExtentTime;
 

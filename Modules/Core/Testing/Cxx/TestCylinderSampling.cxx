@@ -36,6 +36,43 @@ void RayAt(double phi, double h, glm::dvec3& o, glm::dvec3& d)
   d = glm::normalize(glm::dvec3(0.0, h, 0.0) - o);
 }
 
+// The coarse-then-fine depth walk (NearestDepthTiles) gives the plain
+// walk's crossings bit for bit: a fan of rays from around the ring aimed
+// through, beside and past the sphere, each walked in one view's map with
+// and without the tiles.
+void ProxyCoarseWalk(lfd::LightFieldSampler& sampler, int views)
+{
+  lfd::NearestDepthTiles tiles;
+  tiles.Build(sampler.Depth, views);
+  Expect("nearest depth tile of view 0 (the sphere's nearest point, 3)",
+    tiles.Nearest(0, glm::dvec2(0.0), glm::dvec2(63.0)),
+    3.0,
+    0.005);
+  Expect(
+    "a box outside the image has no tile", std::isinf(tiles.Nearest(0, { 64, 0 }, { 70, 9 })), 1.0);
+  int crossings = 0, different = 0;
+  for (int i = 0; i < 24; ++i)
+  {
+    for (int j = 0; j < 24; ++j)
+    {
+      const double phi = 0.27 * i;
+      const glm::dvec3 o(10.0 * std::sin(phi), 0.2 * (j - 12), 10.0 * std::cos(phi));
+      const glm::dvec3 aim(0.1 * (i - 12), 0.1 * (12 - j), 0.07 * (i + j - 24));
+      double plain = 0.0, coarse = 0.0;
+      sampler.DepthTiles = nullptr;
+      const bool hitPlain = sampler.IntersectDepthMap(i % views, o, aim - o, 0.0, 100.0, plain);
+      sampler.DepthTiles = &tiles;
+      const bool hitCoarse = sampler.IntersectDepthMap(i % views, o, aim - o, 0.0, 100.0, coarse);
+      crossings += hitPlain ? 1 : 0;
+      different += hitPlain != hitCoarse || (hitPlain && plain != coarse) ? 1 : 0;
+    }
+  }
+  sampler.DepthTiles = nullptr;
+  Expect(
+    "coarse then fine: rays whose crossing differs from the plain walk's", different, 0.0, 0.0);
+  Expect("... of 576 rays, those that cross", crossings, 239.0, 0.0);
+}
+
 // The proxy path (GatherOnSurface): a ring of 8 flat-coloured views of 64 x
 // 64 (view v is (10 v, 0, 0)) around a sphere of radius 1 at the ring's
 // centre, their depth maps computed exactly per pixel. A ray aimed at the
@@ -94,6 +131,7 @@ void ProxySurface()
   Expect(
     "the ray meets view 2's depth map", sampler.IntersectDepthMap(2, o, d, 0.0, 100.0, hit), 1.0);
   Expect("... 1 before the axis (10 - 1)", hit, 9.0, 0.01);
+  ProxyCoarseWalk(sampler, views);
   lfd::RaySamples samples;
   sampler.ProxyViews = 1;
   Expect("proxy gather", sampler.Gather(o, d, samples), 1.0);
