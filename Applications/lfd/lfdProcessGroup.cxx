@@ -56,6 +56,11 @@ ProcessGroup::ProcessGroup(int* argc, char*** argv)
   {
     return;
   }
+  // A process waiting for the others (a round's outcomes, process 0's
+  // encoding) would spin on a core they need: OpenMPI busy-polls unless it
+  // counts more processes than cores, so it is told to yield (a user's
+  // setting stands).
+  setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
   vtkMPIController* controller = vtkMPIController::New();
   controller->Initialize(argc, argv);
   vtkMultiProcessController::SetGlobalController(controller);
