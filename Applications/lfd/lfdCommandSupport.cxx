@@ -137,10 +137,15 @@ vtkSmartPointer<vtkImageData> ReadImage(const std::string& path)
   return image;
 }
 
-vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path, Passes passes)
+vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path,
+  Passes passes,
+  int piece,
+  int pieces)
 {
   vtkNew<vtkLightFieldReader> reader;
   reader->SetFileName(path.c_str());
+  reader->SetPiece(piece);
+  reader->SetNumberOfPieces(pieces);
   if (passes != Passes::All)
   {
     reader->ReadNoPasses();
@@ -155,7 +160,10 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path, Passes pa
   return lightField;
 }
 
-vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene, Passes passes)
+vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene,
+  Passes passes,
+  int piece,
+  int pieces)
 {
   StepErrors errors;
   errors->Observe(scene->GetScene());
@@ -167,7 +175,7 @@ vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scen
   {
     passes = Passes::RenderedOnPlane;
   }
-  return ReadLightField(scene->GetScene()->GetResolvedLightFieldPath(), passes);
+  return ReadLightField(scene->GetScene()->GetResolvedLightFieldPath(), passes, piece, pieces);
 }
 
 vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldSceneLogic* scene,

@@ -333,12 +333,19 @@ enum class Passes
   RenderedOnPlane
 };
 
-vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path, Passes passes = Passes::All);
+/// With `pieces` > 1, only the views of piece `piece` are read, the others
+/// left zero (vtkLightFieldReader::SetPiece(); ProcessGroup::ShareLightField()).
+vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path,
+  Passes passes = Passes::All,
+  int piece = 0,
+  int pieces = 1);
 
 /// The light field a scene names (an error naming the scene and its field
 /// "lightfield" when it names none or a missing one).
 vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene,
-  Passes passes = Passes::All);
+  Passes passes = Passes::All,
+  int piece = 0,
+  int pieces = 1);
 
 /**
  * The scene's cage, validated by the scene logic (against the light field

@@ -2,6 +2,9 @@
 
 #include "lfdCommandSupport.h"
 
+#include "vtkDataArray.h"
+#include "vtkLightField.h"
+#include "vtkLightFieldReader.h"
 #include "vtkMultiProcessController.h"
 
 #ifdef LFD_USE_MPI
@@ -9,11 +12,11 @@
 #include "vtkMPIController.h"
 #include "vtkSMPTools.h"
 
-#include <algorithm>
 #include <cstdlib>
 #include <thread>
 #endif
 
+#include <algorithm>
 #include <string>
 
 namespace lfd::cli
@@ -53,6 +56,11 @@ ProcessGroup::ProcessGroup(int* argc, char*** argv)
   {
     return;
   }
+  // A process waiting for the others (a round's outcomes, process 0's
+  // encoding) would spin on a core they need: OpenMPI busy-polls unless it
+  // counts more processes than cores, so it is told to yield (a user's
+  // setting stands).
+  setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
   vtkMPIController* controller = vtkMPIController::New();
   controller->Initialize(argc, argv);
   vtkMultiProcessController::SetGlobalController(controller);
@@ -101,6 +109,40 @@ int ProcessGroup::GetRank()
 int ProcessGroup::GetSize()
 {
   return GetController() ? GetController()->GetNumberOfProcesses() : 1;
+}
+
+void ProcessGroup::ShareLightField(vtkLightField* lightField)
+{
+  const int processes = GetSize();
+  if (processes < 2)
+  {
+    return;
+  }
+  // A broadcast's length is a vtkIdType, but MPI counts in int: sent in
+  // pieces of at most 1 GiB.
+  const vtkIdType chunk = vtkIdType(1) << 30;
+  const int views = lightField->GetNumberOfViews();
+  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+  {
+    vtkDataArray* array = lightField->GetPass(pass);
+    if (!array)
+    {
+      continue;
+    }
+    const vtkIdType viewBytes = static_cast<vtkIdType>(lightField->GetWidth()) *
+      lightField->GetHeight() * array->GetNumberOfComponents() * array->GetDataTypeSize();
+    auto* bytes = static_cast<unsigned char*>(array->GetVoidPointer(0));
+    for (int process = 0; process < processes; ++process)
+    {
+      int range[2];
+      vtkLightFieldReader::GetPieceViews(views, process, processes, range);
+      const vtkIdType end = range[1] * viewBytes;
+      for (vtkIdType first = range[0] * viewBytes; first < end; first += chunk)
+      {
+        GetController()->Broadcast(bytes + first, std::min(chunk, end - first), process);
+      }
+    }
+  }
 }
 
 void ProcessGroup::Check(const char* command)

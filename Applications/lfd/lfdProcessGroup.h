@@ -7,6 +7,7 @@
 #ifndef lfdProcessGroup_h
 #define lfdProcessGroup_h
 
+class vtkLightField;
 class vtkMultiProcessController;
 
 namespace lfd::cli
@@ -37,6 +38,15 @@ public:
   /// Refuses a command other than `lfd animate` when there are several
   /// processes (each would write the same output).
   static void Check(const char* command);
+
+  /**
+   * Completes a light field of which this process read only its piece of
+   * the views (ReadLightField() with GetRank() of GetSize() pieces): every
+   * process broadcasts its views of every pass, so that each ends with the
+   * whole light field. Every process must call it, after all have read
+   * their piece (lfd::scene::AgreeOnError). Nothing with one process.
+   */
+  static void ShareLightField(vtkLightField* lightField);
 };
 }
 

@@ -213,9 +213,10 @@ namespace
 {
 void Animate(const std::string& scenePath, int frames, const std::string& out, bool paraview)
 {
-  // Under mpirun every process reads the scene and its light field (on a
-  // cluster, from a shared file system) and process 0 stages the output; a
-  // process that cannot stops them all, with the first refusal said once.
+  // Under mpirun every process reads the scene and its piece of the light
+  // field's views (on a cluster, from a shared file system), then they
+  // exchange the pieces; process 0 stages the output. A process that
+  // cannot read stops them all, with the first refusal said once.
   const bool root = ProcessGroup::GetRank() == 0;
   vtkSmartPointer<vtkLightFieldSceneLogic> scene;
   vtkSmartPointer<vtkLightField> lightField;
@@ -233,7 +234,8 @@ void Animate(const std::string& scenePath, int frames, const std::string& out, b
       {
         Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
       }
-      lightField = ReadSceneLightField(scene, Passes::Rendered);
+      lightField = ReadSceneLightField(
+        scene, Passes::Rendered, ProcessGroup::GetRank(), ProcessGroup::GetSize());
       if (root)
       {
         folder =
@@ -252,6 +254,7 @@ void Animate(const std::string& scenePath, int frames, const std::string& out, b
   {
     Fail(refusal);
   }
+  ProcessGroup::ShareLightField(lightField);
   const double start = vtkTimerLog::GetUniversalTime();
   RenderAnimation(scene, lightField, frames, root ? folder->GetPath() : std::string(), paraview);
   if (!root)

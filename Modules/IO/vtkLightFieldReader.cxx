@@ -21,6 +21,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <vector>
@@ -386,6 +387,15 @@ void vtkLightFieldReader::ReadNoPasses()
 }
 
 //------------------------------------------------------------------------------
+void vtkLightFieldReader::GetPieceViews(int views, int piece, int pieces, int range[2])
+{
+  const auto boundary = [views, pieces](int p)
+  { return static_cast<int>(static_cast<std::int64_t>(views) * std::min(p, pieces) / pieces); };
+  range[0] = boundary(piece);
+  range[1] = boundary(piece + 1);
+}
+
+//------------------------------------------------------------------------------
 int vtkLightFieldReader::RequestInformation(vtkInformation*,
   vtkInformationVector**,
   vtkInformationVector* outputs)
@@ -458,6 +468,8 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
     lfd::io::ImageHeader Header;
   };
   std::vector<Image> images;
+  int piece[2];
+  GetPieceViews(views, this->Piece, this->NumberOfPieces, piece);
   for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
   {
     if (!manifest.HasPass[pass] || !this->ReadPass[pass])
@@ -466,7 +478,7 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
     }
     const std::string passKey =
       MemberPath("passes", LowerCase(vtkLightField::GetPassName(pass)).c_str());
-    for (int i = 0; i < views; ++i)
+    for (int i = piece[0]; i < piece[1]; ++i)
     {
       images.push_back({ &manifest.Images[pass][i], ElementPath(passKey, i), pass, i, {} });
     }
@@ -510,16 +522,20 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
     mask->SetNumberOfTuples(masks->GetNumberOfPoints());
     masks->GetPointData()->SetScalars(mask);
   }
+  // Every selected pass whole, even when this piece holds none of its views.
+  for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+  {
+    if (manifest.HasPass[pass] && this->ReadPass[pass])
+    {
+      output->AllocatePass(pass);
+    }
+  }
   this->UpdateProgress(0.0);
   for (size_t done = 0; done < images.size(); ++done)
   {
     const Image& image = images[done];
     vtkDataArray* array =
       image.Pass < 0 ? static_cast<vtkDataArray*>(mask) : output->GetPass(image.Pass);
-    if (!array)
-    {
-      array = output->AllocatePass(image.Pass);
-    }
     if (!this->ReadImageInto(*image.Path, image.Field, image.Header, array, image.Slice, output))
     {
       return 0;
@@ -632,4 +648,5 @@ void vtkLightFieldReader::PrintSelf(ostream& os, vtkIndent indent)
     os << " " << vtkLightField::GetPassName(pass) << "=" << (this->ReadPass[pass] ? "on" : "off");
   }
   os << "\n";
+  os << indent << "Piece: " << this->Piece << " of " << this->NumberOfPieces << "\n";
 }

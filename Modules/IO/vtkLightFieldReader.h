@@ -82,6 +82,29 @@ public:
   void ReadNoPasses();
   ///@}
 
+  ///@{
+  /**
+   * Reads one piece of the views: the images of views [first, end) of every
+   * selected pass, GetPieceViews() of Piece out of NumberOfPieces (default
+   * 0 of 1: every view). The passes are allocated whole, the views of the
+   * other pieces left zero, and only the images read are checked: the
+   * processes of `mpirun -np N lfd animate` each read one piece and
+   * broadcast it to the others, so the decoding is split N ways. The
+   * projector masks are read whole by every piece.
+   */
+  vtkSetClampMacro(Piece, int, 0, VTK_INT_MAX);
+  vtkGetMacro(Piece, int);
+  vtkSetClampMacro(NumberOfPieces, int, 1, VTK_INT_MAX);
+  vtkGetMacro(NumberOfPieces, int);
+  ///@}
+
+  /**
+   * The views [range[0], range[1]) of piece `piece` out of `pieces` of a
+   * light field of `views` views: consecutive blocks whose sizes differ by at
+   * most one, empty for a piece >= `pieces`.
+   */
+  static void GetPieceViews(int views, int piece, int pieces, int range[2]);
+
 protected:
   vtkLightFieldReader();
   ~vtkLightFieldReader() override;
@@ -118,6 +141,8 @@ protected:
 
   char* FileName = nullptr;
   bool ReadPass[vtkLightField::NUMBER_OF_PASSES];
+  int Piece = 0;
+  int NumberOfPieces = 1;
 
 private:
   vtkLightFieldReader(const vtkLightFieldReader&) = delete;

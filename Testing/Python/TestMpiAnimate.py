@@ -48,11 +48,11 @@ camera = {"position": [0.3, 0.05, 4.0], "focal_point": [0, 0, 0], "view_up": [0,
           "view_angle": 30.0, "width": 40, "height": 30}
 
 
-def write_scene(name, keyframes):
+def write_scene(name, keyframes, lightfield="board.lf"):
     import json
     path = os.path.join(WORK, name)
     with open(path, "w") as f:
-        json.dump({"format": "lfd-scene", "version": 1, "lightfield": "board.lf",
+        json.dump({"format": "lfd-scene", "version": 1, "lightfield": lightfield,
                    "cage": {"rest_points": corners,
                             "boxes": [{"corners": list(range(8)), "label": 1}]},
                    "keyframes": [{"time": float(i), "points": p} for i, p in enumerate(keyframes)],
@@ -91,6 +91,21 @@ t.check(code != 0 and len(lines) == 1 and "fold.json" in lines[0] and "box 0" in
         "a frame failing on process 1: one error naming the scene and the box", err.strip())
 t.check({n: open(os.path.join(parallel, n), "rb").read() for n in os.listdir(parallel)} == before,
         "the earlier export untouched", sorted(os.listdir(parallel)))
+
+# Each process reads its piece of the views (process 1: views 12-23) and
+# they exchange them: an image only process 1 reads, cut short, is its
+# refusal, said once by process 0, naming the image; nothing is written.
+shutil.copytree(os.path.join(WORK, "board.lf"), os.path.join(WORK, "broken.lf"))
+cut = os.path.join(WORK, "broken.lf", "coaxial", "view_0020.png")
+with open(cut, "r+b") as f:
+    f.truncate(100)
+broken = write_scene("broken.json", [corners, twisted], "broken.lf")
+code, out, err = lfd("animate", broken, "--frames", "2", "--out", os.path.join(WORK, "none"),
+                     processes=2)
+lines = error_lines(err)
+t.check(code != 0 and len(lines) == 1 and "coaxial/view_0020.png" in lines[0]
+        and not os.path.exists(os.path.join(WORK, "none")),
+        "an image of process 1's piece cut short: one error naming it", err.strip())
 
 code, out, err = lfd("animate", os.path.join(WORK, "missing.json"), "--out",
                      os.path.join(WORK, "none"), processes=2)

@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <utility>
 
 namespace
 {
@@ -335,6 +336,53 @@ void CheckPassSelection(vtkLightField* original, const std::string& dataset)
 }
 }
 
+// Pieces of the views (the processes of `mpirun lfd animate`): the piece's
+// views as written, every other view zero, every pass allocated whole.
+void CheckPieces(vtkLightField* original, const std::string& dataset)
+{
+  int range[2];
+  vtkLightFieldReader::GetPieceViews(3, 0, 2, range);
+  Check(range[0] == 0 && range[1] == 1, "piece 0 of 2 of 3 views: [0, 1)");
+  vtkLightFieldReader::GetPieceViews(3, 1, 2, range);
+  Check(range[0] == 1 && range[1] == 3, "piece 1 of 2 of 3 views: [1, 3)");
+  vtkLightFieldReader::GetPieceViews(3, 0, 4, range);
+  Check(range[0] == 0 && range[1] == 0, "piece 0 of 4 of 3 views: empty");
+  vtkLightFieldReader::GetPieceViews(3, 5, 4, range);
+  Check(range[0] == 3 && range[1] == 3, "piece 5 of 4 of 3 views: empty");
+  for (const auto& piece : { std::make_pair(1, 2), std::make_pair(0, 4), std::make_pair(2, 4) })
+  {
+    vtkNew<vtkLightFieldReader> reader;
+    reader->SetFileName(dataset.c_str());
+    reader->SetPiece(piece.first);
+    reader->SetNumberOfPieces(piece.second);
+    reader->Update();
+    const std::string name =
+      "piece " + std::to_string(piece.first) + " of " + std::to_string(piece.second);
+    CheckEqual(reader->GetErrorCode(), 0ul, name + ": reader error code");
+    vtkLightFieldReader::GetPieceViews(Views, piece.first, piece.second, range);
+    int mismatches = 0;
+    for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+    {
+      vtkDataArray* expected = original->GetPass(pass);
+      vtkDataArray* read = reader->GetOutput()->GetPass(pass);
+      if (!read || read->GetNumberOfValues() != expected->GetNumberOfValues())
+      {
+        ++mismatches;
+        continue;
+      }
+      const vtkIdType viewValues = read->GetNumberOfValues() / Views;
+      for (vtkIdType i = 0; i < read->GetNumberOfValues(); ++i)
+      {
+        const int view = static_cast<int>(i / viewValues);
+        const double value =
+          view >= range[0] && view < range[1] ? expected->GetVariantValue(i).ToDouble() : 0.0;
+        mismatches += read->GetVariantValue(i).ToDouble() == value ? 0 : 1;
+      }
+    }
+    CheckEqual(mismatches, 0, name + ": values differing from the piece's views and zeros");
+  }
+}
+
 int TestLightFieldIO(int, char*[])
 {
   const std::string folder = lfdtest::ScratchFolder("TestLightFieldIO");
@@ -346,6 +394,7 @@ int TestLightFieldIO(int, char*[])
   vtkNew<vtkLightFieldReader> reader;
   CheckRead(reader, original, dataset);
   CheckPassSelection(original, dataset);
+  CheckPieces(original, dataset);
 
   // Replacing the dataset: a light field with only two passes replaces the
   // five-pass one completely.
