@@ -181,6 +181,7 @@ vtkSmartPointer<vtkLightField> Capture(vtkPolyData* mesh,
     capture->SetObjectName(options.Object.c_str());
   }
   capture->SetCaptureDepth(!options.NoDepth);
+  capture->SetSupersample(options.Supersample);
   if (options.Projectors > 0)
   {
     // One palette colour per part of the mesh, as far apart as the camera
@@ -329,6 +330,14 @@ void AddSynthOptions(CLI::App* command, SynthOptions& options, NumericOptions& n
     options.SceneFixedLight,
     "light fixed in the scene instead of travelling with the camera (paper Fig. 5)");
   command->add_flag("--no-depth", options.NoDepth, "skip the Depth pass");
+  numbers.Add(command,
+    "--supersample",
+    options.Supersample,
+    limits->GetSupersampleMinValue(),
+    limits->GetSupersampleMaxValue(),
+    "prefilter the Coaxial pass: render N x N samples per pixel and average them (a box over "
+    "the pixel: fine texture and silhouettes anti-aliased); the Label and Depth passes stay "
+    "point-sampled (1: point-sample the colour too)");
   numbers.Add(command,
     "--projectors",
     options.Projectors,

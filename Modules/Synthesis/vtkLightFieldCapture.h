@@ -73,9 +73,18 @@
  * away from view 0), with the cameras' field of view and an image of
  * ProjectorWidth x ProjectorHeight pixels (0 = the cameras' size).
  *
- * No pass is anti-aliased (no multisampling, no FXAA): a pixel's colour,
- * label and depth all come from the one surface its centre sees, so the
- * edges of the passes agree exactly.
+ * **Prefiltering.** With Supersample N > 1 the Coaxial pass is rendered at
+ * N x N times the pixels and each pixel is the mean of its N x N samples (a
+ * box filter over the pixel's footprint: what a camera's sensor integrates),
+ * so fine texture and silhouettes are anti-aliased instead of point-sampled;
+ * the provenance records "supersample": N (vtkGroundTruthEvaluator renders
+ * its truth the same way). The Label and Depth passes stay point-sampled at
+ * the pixel centre (no multisampling, no FXAA): a label is one part's, never
+ * a mix, and a depth is one surface's. The projector passes (Coded, Flood)
+ * stay point-sampled too: their per-pixel projective texturing works on the
+ * one surface point the pixel centre sees. With Supersample 1 (default) a
+ * pixel's colour, label and depth all come from the one surface its centre
+ * sees, so the edges of the passes agree exactly.
  *
  * The light field's pixel rows are copied bottom row first, exactly as the
  * OpenGL read-back delivers them (see vtkLightField, "Row order"). The
@@ -228,6 +237,16 @@ public:
   vtkSetMacro(CaptureDepth, bool);
   vtkGetMacro(CaptureDepth, bool);
   vtkBooleanMacro(CaptureDepth, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Samples per pixel along each image axis of the Coaxial pass (see
+   * Prefiltering above): 1 (default) point-samples the pixel centre, N > 1
+   * averages N x N samples over the pixel.
+   */
+  vtkSetClampMacro(Supersample, int, 1, 8);
+  vtkGetMacro(Supersample, int);
   ///@}
 
   ///@{
@@ -394,6 +413,7 @@ protected:
   bool CaptureLabel = true;
   bool CaptureDepth = true;
   bool SceneFixedLight = false;
+  int Supersample = 1;
   char* ObjectName = nullptr;
   double Ambient = 0.1;
   vtkCameraRig* Rig = nullptr;
