@@ -64,7 +64,11 @@ RowCoverage SceneCoverage(vtkLightFieldSceneLogic* scene, vtkDeformationCage* ca
 {
   RowCoverage coverage;
   coverage.Eyes = vtkSmartPointer<vtkPoints>::New();
-  coverage.Eyes->InsertNextPoint(scene->GetScene()->GetCamera()->GetPosition());
+  const double* eye = scene->GetScene()->GetCamera()->GetPosition();
+  coverage.Eyes->InsertNextPoint(eye);
+  // The eye as each moved box sees its rest contents, as it stands and at
+  // every keyframe: the deformed render looks the light field up from there.
+  vtkLightFieldCapture::AppendRestEyes(cage, eye, coverage.Eyes);
   // What the camera looks at besides the mesh: the boxes at rest, as they
   // stand, and at every keyframe.
   coverage.Targets = vtkSmartPointer<vtkPoints>::New();
@@ -78,10 +82,14 @@ RowCoverage SceneCoverage(vtkLightFieldSceneLogic* scene, vtkDeformationCage* ca
   for (int k = 0; k < scene->GetScene()->GetNumberOfKeyframes(); ++k)
   {
     vtkPoints* points = scene->GetScene()->GetKeyframePoints(k);
+    vtkNew<vtkDeformationCage> posed;
+    posed->DeepCopy(cage);
     for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
     {
       coverage.Targets->InsertNextPoint(points->GetPoint(p));
+      posed->SetDeformedPoint(p, points->GetPoint(p));
     }
+    vtkLightFieldCapture::AppendRestEyes(posed, eye, coverage.Eyes);
   }
   return coverage;
 }

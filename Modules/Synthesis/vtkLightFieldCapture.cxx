@@ -9,14 +9,17 @@
 #include "vtkCameraRig.h"
 #include "vtkCellData.h"
 #include "vtkDataObject.h"
+#include "vtkDeformationCage.h"
 #include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLandmarkTransform.h"
 #include "vtkLight.h"
 #include "vtkLightField.h"
+#include "vtkLinearTransform.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -1204,6 +1207,35 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
   }
   CaptureViews(this, studio, rig, passes, simulation.get());
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldCapture::AppendRestEyes(vtkDeformationCage* cage,
+  const double eye[3],
+  vtkPoints* eyes)
+{
+  for (vtkIdType box = 0; box < cage->GetNumberOfBoxes(); ++box)
+  {
+    double rest[24], deformed[24];
+    if (!cage->GetRestCorners(box, rest) || !cage->GetDeformedCorners(box, deformed))
+    {
+      continue;
+    }
+    vtkNew<vtkPoints> from, to;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      from->InsertNextPoint(rest + 3 * corner);
+      to->InsertNextPoint(deformed + 3 * corner);
+    }
+    vtkNew<vtkLandmarkTransform> map;
+    map->SetSourceLandmarks(from);
+    map->SetTargetLandmarks(to);
+    map->SetModeToAffine();
+    map->Update();
+    double restEye[3];
+    map->GetLinearInverse()->TransformPoint(eye, restEye);
+    eyes->InsertNextPoint(restEye);
+  }
 }
 
 //------------------------------------------------------------------------------
