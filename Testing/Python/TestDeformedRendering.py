@@ -6,8 +6,8 @@ and the bent figure (Fig. 1; bending goes beyond the paper), and occlusion
 between parts: turning the head towards or away from the camera shows as
 much of it as the ground truth does. The fish is rendered through the
 paper's focal plane and through its Depth pass as a per-pixel proxy focal
-surface (render.focal: proxy), also from a camera between two rows, and
-from rows that cover the eye as the swimming boxes see their rest contents
+surface (render.focal: proxy), also from a camera between two rows; its
+rows cover the eye as the swimming boxes see their rest contents
 (vtkLightFieldCapture::AppendRestEyes). Every capture and its ground truth
 are prefiltered (vtkLightFieldCapture::SetSupersample). Thresholds sit under
 the measured figures (README results table)."""
