@@ -64,7 +64,11 @@ RowCoverage SceneCoverage(vtkLightFieldSceneLogic* scene, vtkDeformationCage* ca
 {
   RowCoverage coverage;
   coverage.Eyes = vtkSmartPointer<vtkPoints>::New();
-  coverage.Eyes->InsertNextPoint(scene->GetScene()->GetCamera()->GetPosition());
+  const double* eye = scene->GetScene()->GetCamera()->GetPosition();
+  coverage.Eyes->InsertNextPoint(eye);
+  // The eye as each moved box sees its rest contents, as it stands and at
+  // every keyframe: the deformed render looks the light field up from there.
+  vtkLightFieldCapture::AppendRestEyes(cage, eye, coverage.Eyes);
   // What the camera looks at besides the mesh: the boxes at rest, as they
   // stand, and at every keyframe.
   coverage.Targets = vtkSmartPointer<vtkPoints>::New();
@@ -78,10 +82,14 @@ RowCoverage SceneCoverage(vtkLightFieldSceneLogic* scene, vtkDeformationCage* ca
   for (int k = 0; k < scene->GetScene()->GetNumberOfKeyframes(); ++k)
   {
     vtkPoints* points = scene->GetScene()->GetKeyframePoints(k);
+    vtkNew<vtkDeformationCage> posed;
+    posed->DeepCopy(cage);
     for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
     {
       coverage.Targets->InsertNextPoint(points->GetPoint(p));
+      posed->SetDeformedPoint(p, points->GetPoint(p));
     }
+    vtkLightFieldCapture::AppendRestEyes(posed, eye, coverage.Eyes);
   }
   return coverage;
 }
@@ -181,6 +189,7 @@ vtkSmartPointer<vtkLightField> Capture(vtkPolyData* mesh,
     capture->SetObjectName(options.Object.c_str());
   }
   capture->SetCaptureDepth(!options.NoDepth);
+  capture->SetSupersample(options.Supersample);
   if (options.Projectors > 0)
   {
     // One palette colour per part of the mesh, as far apart as the camera
@@ -329,6 +338,14 @@ void AddSynthOptions(CLI::App* command, SynthOptions& options, NumericOptions& n
     options.SceneFixedLight,
     "light fixed in the scene instead of travelling with the camera (paper Fig. 5)");
   command->add_flag("--no-depth", options.NoDepth, "skip the Depth pass");
+  numbers.Add(command,
+    "--supersample",
+    options.Supersample,
+    limits->GetSupersampleMinValue(),
+    limits->GetSupersampleMaxValue(),
+    "prefilter the Coaxial pass: render N x N samples per pixel and average them (a box over "
+    "the pixel: fine texture and silhouettes anti-aliased); the Label and Depth passes stay "
+    "point-sampled (1: point-sample the colour too)");
   numbers.Add(command,
     "--projectors",
     options.Projectors,

@@ -160,6 +160,48 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path,
   return lightField;
 }
 
+CLI::Option* AddFocalOption(CLI::App* command, std::string& name, const std::string& otherwise)
+{
+  return command
+    ->add_option("--focal",
+      name,
+      "focal surface: auto (the proxy when the light field has a depth pass), plane (the paper's "
+      "focal plane at the focal distance) or proxy (the depth pass, per pixel; see lfd proxy); "
+      "default: " +
+        otherwise)
+    ->check(CLI::IsMember({ "auto", "plane", "proxy" }));
+}
+
+int FocalSurfaceFromName(const std::string& name)
+{
+  return name == "plane" ? vtkLightFieldRenderer::FOCAL_PLANE
+    : name == "proxy"    ? vtkLightFieldRenderer::FOCAL_PROXY
+                         : vtkLightFieldRenderer::FOCAL_AUTOMATIC;
+}
+
+void AddRenderOverrideOptions(CLI::App* command, RenderOverrides& overrides)
+{
+  AddFocalOption(command, overrides.Focal, "the scene's render.focal");
+  command
+    ->add_option("--antialiasing",
+      overrides.AntiAliasing,
+      "anti-aliased silhouettes from label coverage (on) or hard label edges (off); default: the "
+      "scene's render.antialiasing (on when absent)")
+    ->check(CLI::IsMember({ "on", "off" }));
+}
+
+void ApplyRenderOverrides(const RenderOverrides& overrides, vtkLightFieldSceneLogic* scene)
+{
+  if (!overrides.Focal.empty())
+  {
+    scene->GetScene()->SetFocalSurface(FocalSurfaceFromName(overrides.Focal));
+  }
+  if (!overrides.AntiAliasing.empty())
+  {
+    scene->GetScene()->SetAntiAliasing(overrides.AntiAliasing == "on");
+  }
+}
+
 vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene,
   Passes passes,
   int piece,

@@ -348,6 +348,33 @@ vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scen
   int pieces = 1);
 
 /**
+ * `--focal auto|plane|proxy` on `command`: the renderer's focal surface
+ * (vtkLightFieldRenderer::FocalSurfaceType), into `name`; `otherwise` says
+ * what applies without the option. FocalSurfaceFromName() turns a given name
+ * into the renderer's value.
+ */
+CLI::Option* AddFocalOption(CLI::App* command, std::string& name, const std::string& otherwise);
+int FocalSurfaceFromName(const std::string& name);
+
+/**
+ * Render settings a command may override on its scene, empty when not
+ * given: `--focal` (render.focal) and `--antialiasing on|off`
+ * (render.antialiasing).
+ */
+struct RenderOverrides
+{
+  std::string Focal;
+  std::string AntiAliasing;
+};
+
+/// Adds --focal and --antialiasing to `command`.
+void AddRenderOverrideOptions(CLI::App* command, RenderOverrides& overrides);
+
+/// The given overrides set on the scene, before its light field is read (a
+/// scene focused on the plane does not read the Depth pass).
+void ApplyRenderOverrides(const RenderOverrides& overrides, vtkLightFieldSceneLogic* scene);
+
+/**
  * The scene's cage, validated by the scene logic (against the light field
  * when given; nullptr when the scene has none): the one check of a scene's
  * boxes for every command. With keyframes and a time, the cage points are

@@ -73,6 +73,7 @@ struct SynthOptions
   std::vector<double> Axis = { 0.0, 1.0, 0.0 };
   bool SceneFixedLight = false;
   bool NoDepth = false;
+  int Supersample = 1; // samples per pixel along each axis of the Coaxial pass
   int Projectors = 0;
   double ProjectorNoise = 0.0;
   double ProjectorAmbient = 0.0;

@@ -26,9 +26,11 @@ namespace
 void EvalGroundTruth(const std::string& scenePath,
   const std::string& meshName,
   const std::string& out,
-  const double* time)
+  const double* time,
+  const RenderOverrides& overrides)
 {
   auto scene = ReadScene(scenePath);
+  ApplyRenderOverrides(overrides, scene);
   auto lightField = ReadSceneLightField(scene);
   auto cage = SceneCage(scene, lightField, time);
   vtkSmartPointer<vtkImageData> texture;
@@ -87,6 +89,7 @@ void EvalLeaveOneOut(const std::string& path,
   int stride,
   const std::vector<int>& views,
   double focalDistance,
+  const std::string& focal,
   int threshold)
 {
   auto lightField = ReadLightField(path);
@@ -98,6 +101,7 @@ void EvalLeaveOneOut(const std::string& path,
     evaluator->AddView(v);
   }
   evaluator->SetFocalDistance(focalDistance);
+  evaluator->SetFocalSurface(FocalSurfaceFromName(focal));
   evaluator->SetObjectThreshold(threshold);
   lfd::ShowProgress(evaluator, "evaluating");
   Run(evaluator.Get(), "leave-one-out evaluation");
@@ -130,6 +134,7 @@ void AddEvalCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command
     std::string Mesh;
     std::string Out;
     double Time = 0.0;
+    RenderOverrides Overrides;
   };
   auto gt = std::make_shared<GroundTruthOptions>();
   auto* groundTruth = evalCommand->add_subcommand("groundtruth",
@@ -150,9 +155,13 @@ void AddEvalCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command
     "--time",
     gt->Time,
     "time of the keyframes to evaluate (default: the cage's points)");
+  AddRenderOverrideOptions(groundTruth, gt->Overrides);
   commands.push_back({ groundTruth,
     [gt, gtTimeOption]
-    { EvalGroundTruth(gt->Scene, gt->Mesh, gt->Out, *gtTimeOption ? &gt->Time : nullptr); },
+    {
+      EvalGroundTruth(
+        gt->Scene, gt->Mesh, gt->Out, *gtTimeOption ? &gt->Time : nullptr, gt->Overrides);
+    },
     true });
 
   struct LeaveOneOutOptions
@@ -160,7 +169,8 @@ void AddEvalCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command
     std::string Path;
     int Stride = 1;
     std::vector<int> Views;
-    double Focal = 0.0;
+    double FocalDistance = 0.0;
+    std::string Focal;
     int Threshold = 20;
   };
   auto loo = std::make_shared<LeaveOneOutOptions>();
@@ -183,7 +193,8 @@ void AddEvalCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command
       VTK_INT_MAX,
       "evaluate these views (overrides --stride)")
     ->delimiter(',');
-  numbers.AddReal(looCommand, "--focal-distance", loo->Focal, "focal distance d");
+  numbers.AddReal(looCommand, "--focal-distance", loo->FocalDistance, "focal distance d");
+  AddFocalOption(looCommand, loo->Focal, "auto");
   numbers.Add(looCommand,
     "--threshold",
     loo->Threshold,
@@ -191,7 +202,11 @@ void AddEvalCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command
     looLimits->GetObjectThresholdMaxValue(),
     "object pixel threshold for light fields without labels");
   commands.push_back({ looCommand,
-    [loo] { EvalLeaveOneOut(loo->Path, loo->Stride, loo->Views, loo->Focal, loo->Threshold); },
+    [loo]
+    {
+      EvalLeaveOneOut(
+        loo->Path, loo->Stride, loo->Views, loo->FocalDistance, loo->Focal, loo->Threshold);
+    },
     false });
 }
 }

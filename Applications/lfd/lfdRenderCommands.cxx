@@ -43,7 +43,7 @@ struct ViewOptions
   std::string Size;
   std::vector<double> CameraPosition;
   std::vector<double> FocalPoint;
-  std::string Focal; // render.focal override ("": the scene's)
+  RenderOverrides Overrides; // of render.focal and render.antialiasing
 };
 
 /// The refocusing of a two-plane light field (vtkLightFieldRenderer's
@@ -128,13 +128,7 @@ void Render(const std::string& scenePath,
 {
   const double start = vtkTimerLog::GetUniversalTime();
   auto scene = ReadScene(scenePath);
-  if (!view.Focal.empty())
-  {
-    // Before reading: a scene focused on the plane does not read its Depth pass.
-    scene->GetScene()->SetFocalSurface(view.Focal == "plane" ? vtkLightFieldRenderer::FOCAL_PLANE
-        : view.Focal == "proxy"                              ? vtkLightFieldRenderer::FOCAL_PROXY
-                                : vtkLightFieldRenderer::FOCAL_AUTOMATIC);
-  }
+  ApplyRenderOverrides(view.Overrides, scene);
   auto lightField = ReadSceneLightField(scene, Passes::Rendered);
   ApplyViewOptions(view, scene, lightField);
   auto cage = SceneCage(scene, lightField, time);
@@ -211,7 +205,11 @@ void PrintAnimation(vtkLightFieldSceneLogic* scene,
 
 namespace
 {
-void Animate(const std::string& scenePath, int frames, const std::string& out, bool paraview)
+void Animate(const std::string& scenePath,
+  int frames,
+  const std::string& out,
+  bool paraview,
+  const RenderOverrides& overrides)
 {
   // Under mpirun every process reads the scene and its piece of the light
   // field's views (on a cluster, from a shared file system), then they
@@ -230,6 +228,7 @@ void Animate(const std::string& scenePath, int frames, const std::string& out, b
     try
     {
       scene = ReadScene(scenePath);
+      ApplyRenderOverrides(overrides, scene);
       if (scene->GetScene()->GetNumberOfKeyframes() < 2)
       {
         Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
@@ -423,13 +422,7 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
       "bilinearly); with a Label pass each pixel keeps its winning part's colour, so the blur "
       "stops at part borders")
     ->default_str("");
-  renderCommand
-    ->add_option("--focal",
-      render->View.Focal,
-      "focal surface, overriding the scene's render.focal: auto (the proxy when the light field "
-      "has a depth pass), plane (the paper's focal plane at render.focal_distance) or proxy (the "
-      "depth pass, per pixel; see lfd proxy)")
-    ->check(CLI::IsMember({ "auto", "plane", "proxy" }));
+  AddRenderOverrideOptions(renderCommand, render->View.Overrides);
   commands.push_back({ renderCommand,
     [render, timeOption]
     {
@@ -447,6 +440,7 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     std::string Out;
     int Frames = 48;
     bool ParaView = false;
+    RenderOverrides Overrides;
   };
   auto animate = std::make_shared<AnimateOptions>();
   auto* animateCommand = app.add_subcommand("animate",
@@ -460,8 +454,11 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     animate->ParaView,
     "also write the ParaView series: each frame as frame_NNNN.vti (Radiance, Label, Depth) and "
     "its cage as cage_NNNN.vtu, listed with their times in animation.pvd and cage.pvd");
+  AddRenderOverrideOptions(animateCommand, animate->Overrides);
   commands.push_back({ animateCommand,
-    [animate] { Animate(animate->Scene, animate->Frames, animate->Out, animate->ParaView); },
+    [animate] {
+      Animate(animate->Scene, animate->Frames, animate->Out, animate->ParaView, animate->Overrides);
+    },
     false });
 
   auto lattice = std::make_shared<LatticeOptions>();

@@ -1,5 +1,6 @@
 #include "vtkGroundTruthEvaluator.h"
 
+#include "lfdJsonFields.h"
 #include "lfdRequestGuard.h"
 
 #include "vtkAdaptiveSubdivisionFilter.h"
@@ -238,6 +239,8 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
   capture->SetRig(rig);
   capture->CaptureDepthOff();
   capture->SetAmbient(this->Ambient);
+  capture->SetSupersample(
+    this->Supersample > 0 ? this->Supersample : GetCaptureSupersample(lightField));
   errors->Observe(capture);
   capture->Update();
   vtkLightField* truth = capture->GetOutput();
@@ -284,6 +287,20 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
+int vtkGroundTruthEvaluator::GetCaptureSupersample(vtkLightField* lightField)
+{
+  const char* provenance = lightField ? lightField->GetProvenance() : nullptr;
+  lfd::io::Json document;
+  std::string error;
+  if (provenance && lfd::io::ParseJsonText(provenance, document, error) && document.is_object() &&
+    document.contains("supersample") && document["supersample"].is_number_integer())
+  {
+    return std::max(1, document["supersample"].get<int>());
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 void vtkGroundTruthEvaluator::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -297,6 +314,7 @@ void vtkGroundTruthEvaluator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ObjectThreshold: " << this->ObjectThreshold << "\n";
   os << indent << "AntiAliasing: " << (this->AntiAliasing ? "On" : "Off") << "\n";
   os << indent << "Ambient: " << this->Ambient << "\n";
+  os << indent << "Supersample: " << this->Supersample << "\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "PSNR: " << this->PSNR << "\n";
   os << indent << "SSIM: " << this->SSIM << "\n";

@@ -7,6 +7,11 @@
  * (vtkCageTransform), renders it with the same coaxial light from the same
  * camera (vtkLightFieldCapture from a one-view rig), renders the light field
  * through the cage (vtkLightFieldRenderer) and compares the two images:
+ * The truth is prefiltered as the light field was captured: Supersample 0
+ * (default) reads the capture's "supersample" from the light field's
+ * provenance (vtkLightFieldCapture::SetSupersample; 1 when absent), so a
+ * prefiltered capture is compared with a prefiltered truth and a
+ * point-sampled one with a point-sampled truth.
  * PSNR and SSIM over the object pixels (where either image shows a part),
  * the IoU of the two silhouettes and the fraction of object pixels whose
  * part label agrees.
@@ -27,6 +32,7 @@
 #include "vtkImageAlgorithm.h"
 
 class vtkCamera;
+class vtkLightField;
 
 class LFDEVALUATION_EXPORT vtkGroundTruthEvaluator : public vtkImageAlgorithm
 {
@@ -110,6 +116,24 @@ public:
 
   ///@{
   /**
+   * Samples per pixel along each axis of the ground truth's colour
+   * (vtkLightFieldCapture::SetSupersample); 0 (default): the light field's
+   * own, from its provenance (1 when it records none).
+   */
+  vtkSetClampMacro(Supersample, int, 0, 8);
+  vtkGetMacro(Supersample, int);
+  ///@}
+
+  ///@{
+  /**
+   * The supersampling a light field was captured with: the "supersample"
+   * of its provenance (vtkLightFieldCapture), 1 when it records none.
+   */
+  static int GetCaptureSupersample(vtkLightField* lightField);
+  ///@}
+
+  ///@{
+  /**
    * Before the cage map deforms it, the mesh is refined
    * (vtkAdaptiveSubdivisionFilter) until no edge is longer than this, so
    * the deformed mesh follows the map inside its triangles too (a map bends
@@ -162,6 +186,7 @@ protected:
   double ObjectThreshold = 10.0;
   bool AntiAliasing = true;
   double Ambient = 0.1;
+  int Supersample = 0;
   double MaximumEdgeLength = 0.0;
   double PSNR = 0.0;
   double SSIM = 0.0;

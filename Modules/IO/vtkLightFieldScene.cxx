@@ -318,6 +318,7 @@ struct RenderSettings
 {
   double FocalDistance = 0.0;
   int FocalSurface = 0;
+  bool AntiAliasing = true;
   double FocalDepth = 0.0;
   double Aperture = 0.0;
   int Subdivision = 1;
@@ -343,6 +344,15 @@ void ParseRender(const Json& render, RenderSettings& settings)
         "expected \"auto\", \"plane\" or \"proxy\", found " + lfd::io::Describe(*v));
     }
     settings.FocalSurface = static_cast<int>(name - std::begin(FocalSurfaceNames));
+  }
+  if (const Json* v = lfd::io::FindMember(render, "render", "antialiasing"))
+  {
+    if (!v->is_boolean())
+    {
+      throw FieldError(
+        "render.antialiasing", "expected true or false, found " + lfd::io::Describe(*v));
+    }
+    settings.AntiAliasing = v->get<bool>();
   }
   for (const auto& [name, value] : { std::make_pair("focal_depth", &settings.FocalDepth),
          std::make_pair("aperture", &settings.Aperture) })
@@ -438,6 +448,7 @@ void vtkLightFieldScene::Initialize()
   this->Height = 512;
   this->FocalDistance = 0.0;
   this->FocalSurface = 0;
+  this->AntiAliasing = true;
   this->FocalDepth = 0.0;
   this->Aperture = 0.0;
   this->Subdivision = 1;
@@ -628,6 +639,7 @@ bool vtkLightFieldScene::Read(const char* fileName)
   this->Height = height;
   this->FocalDistance = settings.FocalDistance;
   this->FocalSurface = settings.FocalSurface;
+  this->AntiAliasing = settings.AntiAliasing;
   this->FocalDepth = settings.FocalDepth;
   this->Aperture = settings.Aperture;
   this->Subdivision = settings.Subdivision;
@@ -788,6 +800,10 @@ bool vtkLightFieldScene::WriteFile(const char* fileName)
   {
     render["focal"] = FocalSurfaceNames[this->FocalSurface];
   }
+  if (!this->AntiAliasing)
+  {
+    render["antialiasing"] = false;
+  }
   if (this->FocalDepth != 0.0)
   {
     render["focal_depth"] = this->FocalDepth;
@@ -845,6 +861,7 @@ void vtkLightFieldScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "FocalDistance: " << this->FocalDistance << "\n";
   os << indent << "FocalSurface: " << FocalSurfaceNames[this->FocalSurface] << "\n";
+  os << indent << "AntiAliasing: " << (this->AntiAliasing ? "On" : "Off") << "\n";
   os << indent << "FocalDepth: " << this->FocalDepth << "\n";
   os << indent << "Aperture: " << this->Aperture << "\n";
   os << indent << "Subdivision: " << this->Subdivision << (this->Subdivision == 0 ? " (auto)" : "")

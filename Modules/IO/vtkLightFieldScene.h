@@ -29,7 +29,9 @@
  *   see GetSubdivisionAuto()), WidenedSearch (views searched on each side
  *   for regions a deformation uncovers, >= 0, default 2, 0 = off),
  *   ObjectThreshold (brightness in [0, 255] above which a pixel of a light
- *   field without a Label pass is the object, default 10) and
+ *   field without a Label pass is the object, default 10), AntiAliasing
+ *   (`render.antialiasing`, true or false, default true: soft silhouettes
+ *   from label coverage, see vtkLightFieldRenderer::SetAntiAliasing) and
  *   Background (RGB, each in [0, 1], default black).
  *
  * Read() validates the whole file before changing anything and returns false
@@ -211,6 +213,16 @@ public:
 
   ///@{
   /**
+   * Anti-aliased silhouettes, `render.antialiasing` (default true; see
+   * vtkLightFieldRenderer::SetAntiAliasing). Written only when false.
+   */
+  vtkSetMacro(AntiAliasing, bool);
+  vtkGetMacro(AntiAliasing, bool);
+  vtkBooleanMacro(AntiAliasing, bool);
+  ///@}
+
+  ///@{
+  /**
    * Two-plane light fields: the focal plane's depth in front of the camera
    * plane (`render.focal_depth`, 0 = infinity) and the synthetic aperture
    * (`render.aperture`, 0 = the 4 nearest cameras), as
@@ -272,6 +284,7 @@ protected:
   int Height = 512;
   double FocalDistance = 0.0;
   int FocalSurface = 0;
+  bool AntiAliasing = true;
   double FocalDepth = 0.0;
   double Aperture = 0.0;
   int Subdivision = 1;

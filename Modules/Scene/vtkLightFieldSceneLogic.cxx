@@ -844,6 +844,7 @@ void ApplySceneView(Target* target, vtkLightFieldScene* scene)
   target->SetSubdivision(scene->GetSubdivision()); // 0 = "auto" in all three
   target->SetWidenedSearch(scene->GetWidenedSearch());
   target->SetObjectThreshold(scene->GetObjectThreshold());
+  target->SetAntiAliasing(scene->GetAntiAliasing());
 }
 }
 

@@ -9,14 +9,17 @@
 #include "vtkCameraRig.h"
 #include "vtkCellData.h"
 #include "vtkDataObject.h"
+#include "vtkDeformationCage.h"
 #include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLandmarkTransform.h"
 #include "vtkLight.h"
 #include "vtkLightField.h"
+#include "vtkLinearTransform.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -651,6 +654,10 @@ PassBuffers SetUpOutput(vtkLightFieldCapture* capture,
   provenance << "{\"generator\": \"vtkLightFieldCapture\", \"light\": \""
              << (capture->GetSceneFixedLight() ? "scene-fixed" : "coaxial")
              << "\", \"ambient\": " << capture->GetAmbient();
+  if (capture->GetSupersample() > 1)
+  {
+    provenance << ", \"supersample\": " << capture->GetSupersample();
+  }
   // Built-in object names are plain words (vtkProceduralObjectSource): no
   // JSON escaping needed; anything else is not recorded.
   const char* object = capture->GetObjectName();
@@ -684,6 +691,36 @@ PassBuffers SetUpOutput(vtkLightFieldCapture* capture,
   return passes;
 }
 
+// The mean of each n x n block of the RGB image `fine` (n width x n height,
+// bottom row first) into `rgb` (width x height, the same row order): a box
+// filter over each coarse pixel's footprint, rounded to the nearest level.
+void BoxDownsample(const unsigned char* fine, int n, int width, int height, unsigned char* rgb)
+{
+  const int fineWidth = n * width;
+  const int samples = n * n;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      int sum[3] = { 0, 0, 0 };
+      for (int j = 0; j < n; ++j)
+      {
+        const unsigned char* row =
+          fine + 3 * (static_cast<vtkIdType>(y * n + j) * fineWidth + x * n);
+        for (int i = 0; i < 3 * n; ++i)
+        {
+          sum[i % 3] += row[i];
+        }
+      }
+      unsigned char* pixel = rgb + 3 * (static_cast<vtkIdType>(y) * width + x);
+      for (int c = 0; c < 3; ++c)
+      {
+        pixel[c] = static_cast<unsigned char>((sum[c] + samples / 2) / samples);
+      }
+    }
+  }
+}
+
 // Renders every view of the rig into the passes.
 void CaptureViews(vtkLightFieldCapture* capture,
   CaptureStudio& studio,
@@ -705,12 +742,17 @@ void CaptureViews(vtkLightFieldCapture* capture,
     const vtkIdType slice = view * pixels;
     if (passes.Coaxial)
     {
+      // Prefiltered: the same frustum through n x n times the pixels, each
+      // pixel the mean of its samples; the other passes stay point-sampled.
+      const int n = capture->GetSupersample();
+      studio.SetSize(n * width, n * height);
       studio.RenderShaded(
         capture->GetSceneFixedLight() ? fixedLamp : studio.GetCamera()->GetPosition(),
         rgbBuffer,
-        width,
-        height);
-      std::copy_n(rgbBuffer->GetPointer(0), 3 * pixels, passes.Coaxial + 3 * slice);
+        n * width,
+        n * height);
+      BoxDownsample(rgbBuffer->GetPointer(0), n, width, height, passes.Coaxial + 3 * slice);
+      studio.SetSize(width, height);
     }
     float* z = passes.Depth ? passes.Depth + slice : (simulation ? viewDepth.data() : nullptr);
     if (passes.Label || z)
@@ -1168,6 +1210,35 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
+void vtkLightFieldCapture::AppendRestEyes(vtkDeformationCage* cage,
+  const double eye[3],
+  vtkPoints* eyes)
+{
+  for (vtkIdType box = 0; box < cage->GetNumberOfBoxes(); ++box)
+  {
+    double rest[24], deformed[24];
+    if (!cage->GetRestCorners(box, rest) || !cage->GetDeformedCorners(box, deformed))
+    {
+      continue;
+    }
+    vtkNew<vtkPoints> from, to;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      from->InsertNextPoint(rest + 3 * corner);
+      to->InsertNextPoint(deformed + 3 * corner);
+    }
+    vtkNew<vtkLandmarkTransform> map;
+    map->SetSourceLandmarks(from);
+    map->SetTargetLandmarks(to);
+    map->SetModeToAffine();
+    map->Update();
+    double restEye[3];
+    map->GetLinearInverse()->TransformPoint(eye, restEye);
+    eyes->InsertNextPoint(restEye);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkLightFieldCapture::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -1210,6 +1281,7 @@ void vtkLightFieldCapture::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CaptureLabel: " << this->CaptureLabel << "\n";
   os << indent << "CaptureDepth: " << this->CaptureDepth << "\n";
   os << indent << "SceneFixedLight: " << this->SceneFixedLight << "\n";
+  os << indent << "Supersample: " << this->Supersample << "\n";
   os << indent << "ObjectName: " << (this->ObjectName ? this->ObjectName : "(none)") << "\n";
   os << indent << "Ambient: " << this->Ambient << "\n";
   os << indent << "NumberOfProjectors: " << this->NumberOfProjectors << "\n";

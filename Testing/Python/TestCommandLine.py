@@ -71,6 +71,16 @@ t.check(code == 0 and os.path.isfile(os.path.join(lf, "lightfield.json")), "synt
         err.strip() or out.strip())
 code, out, _ = lfd("info", lf)
 t.check(code == 0 and "24 of 64 x 64" in out and "rows         1" in out, "info", out)
+# Prefiltered: 2 x 2 samples per pixel, recorded in the provenance (which
+# lfd eval groundtruth reads to prefilter its truth the same way).
+prefiltered = os.path.join(WORK, "board2.lf")
+code, out, err = lfd("synth", "--object", "checkerboard", "--views", "3", "--rows", "1",
+                     "--width", "16", "--height", "16", "--supersample", "2", "--out", prefiltered)
+provenance = (json.load(open(os.path.join(prefiltered, "lightfield.json"))).get("provenance", {})
+              if code == 0 else {})
+t.check(provenance.get("supersample") == 2, "synth --supersample 2: provenance supersample 2",
+        provenance or err.strip())
+expect_error(["synth", "--supersample", "9", "--out", prefiltered], "--supersample 9")
 
 scene = os.path.join(WORK, "scene.json")
 with open(scene, "w") as f:

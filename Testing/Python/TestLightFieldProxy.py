@@ -105,4 +105,19 @@ t.check(code == 1 and len(errors) == 1 and "no float Depth pass: compute one wit
 code, stdout, stderr = t.run_lfd("render", scene, "--focal", "plane", "--out",
                                  os.path.join(os.path.dirname(WORK), "a.png"))
 t.check(code == 0, "--focal plane overrides the scene's render.focal", (code, stderr.strip()[-200:]))
+code, _, stderr = t.run_lfd("render", scene, "--focal", "plane", "--antialiasing", "maybe",
+                            "--out", os.path.join(os.path.dirname(WORK), "a.png"))
+t.check(code != 0 and "--antialiasing: maybe not in {on,off}" in stderr,
+        "--antialiasing takes on or off", (code, stderr.strip()[-200:]))
+
+# lfd eval loo --focal: the evaluator's focal surface, as vtkLeaveOneOutEvaluator above.
+loo_psnr = {}
+for focal in ("plane", "proxy"):
+    code, stdout, stderr = t.run_lfd("eval", "loo", out, "--stride", "9", "--focal", focal)
+    mean = [line.split() for line in stdout.splitlines() if line.startswith("mean")]
+    loo_psnr[focal] = float(mean[0][2]) if code == 0 and mean else stderr.strip()[-200:]
+t.check(all(isinstance(v, float) for v in loo_psnr.values()) and
+        loo_psnr["plane"] == psnr["plane"] and loo_psnr["proxy"] > psnr["plane"] + 1.0,
+        "lfd eval loo --focal plane is the evaluator's plane; --focal proxy gains > 1 dB",
+        (loo_psnr, psnr["plane"]))
 t.finish()

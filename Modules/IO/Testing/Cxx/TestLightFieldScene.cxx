@@ -205,7 +205,7 @@ int TestLightFieldScene(int, char*[])
     " \"cage\": {\"rest_points\": [[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0,0,1],[1,0,1],[1,1,1],"
     "[0,1,1]],\n \"boxes\": [{\"corners\": [0,1,2,3,4,5,6,7], \"label\": 4}]},\n"
     " \"render\": {\"subdivision\": \"auto\", \"focal\": \"proxy\", \"focal_depth\": 3.5,"
-    " \"aperture\": 0.15}}");
+    " \"aperture\": 0.15, \"antialiasing\": false}}");
   vtkNew<vtkLightFieldScene> undeformed;
   errors->Observe(undeformed);
   Check(undeformed->Read(restOnly.c_str()),
@@ -218,6 +218,7 @@ int TestLightFieldScene(int, char*[])
   CheckEqual(undeformed->GetFocalSurface(), 2, "render.focal \"proxy\"");
   CheckEqual(undeformed->GetFocalDepth(), 3.5, "render.focal_depth");
   CheckEqual(undeformed->GetAperture(), 0.15, "render.aperture");
+  CheckEqual(undeformed->GetAntiAliasing(), false, "render.antialiasing false");
   CheckEqual(std::string(undeformed->GetResolvedLightFieldPath()),
     std::filesystem::path(LFD_TEST_TEMP_DIR).lexically_normal().string() + "/x.lf",
     "relative path resolved against the scene folder");
@@ -230,13 +231,18 @@ int TestLightFieldScene(int, char*[])
   Check(lfdtest::ReadText(autoFile).find("\"focal_depth\": 3.5") != std::string::npos &&
       lfdtest::ReadText(autoFile).find("\"aperture\": 0.15") != std::string::npos,
     "render.focal_depth and render.aperture written back");
+  Check(lfdtest::ReadText(autoFile).find("\"antialiasing\": false") != std::string::npos,
+    "render.antialiasing false written back");
   undeformed->SetFocalSurface(0);
+  undeformed->SetAntiAliasing(true);
   undeformed->SetFocalDepth(0.0);
   undeformed->SetAperture(0.0);
   Check(undeformed->Write(autoFile.c_str()) &&
       lfdtest::ReadText(autoFile).find("\"focal\"") == std::string::npos &&
       lfdtest::ReadText(autoFile).find("\"focal_depth\"") == std::string::npos &&
-      lfdtest::ReadText(autoFile).find("\"aperture\"") == std::string::npos,
-    "render.focal \"auto\", focal_depth and aperture 0 (the defaults) not written");
+      lfdtest::ReadText(autoFile).find("\"aperture\"") == std::string::npos &&
+      lfdtest::ReadText(autoFile).find("\"antialiasing\"") == std::string::npos,
+    "render.focal \"auto\", focal_depth and aperture 0, antialiasing true (the defaults) not "
+    "written");
   return lfdtest::Result();
 }

@@ -106,6 +106,9 @@ int TestLightFieldSceneErrors(int, char*[])
   expectFailure("unknown focal surface",
     Scene(Cage("", Box), ", \"render\": {\"focal\": \"sphere\"}"),
     { "\"render.focal\"", "expected \"auto\", \"plane\" or \"proxy\", found" });
+  expectFailure("anti-aliasing not a boolean",
+    Scene(Cage("", Box), ", \"render\": {\"antialiasing\": \"on\"}"),
+    { "\"render.antialiasing\"", "expected true or false, found the string \"on\"" });
   expectFailure("negative aperture",
     Scene(Cage("", Box), ", \"render\": {\"aperture\": -0.1}"),
     { "\"render.aperture\"", "expected a distance >= 0, found the number -0.1" });

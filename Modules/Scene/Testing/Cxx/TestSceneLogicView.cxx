@@ -59,6 +59,7 @@ void TestView(vtkLightFieldSceneLogic* logic, vtkLightField* lightField)
   logic->SetWidenedSearch(4);
   logic->SetObjectThreshold(60.0);
   logic->SetBackground(0.25, 0.5, 1.0);
+  logic->GetScene()->SetAntiAliasing(false); // render.antialiasing
   vtkNew<vtkDeformationCage> cage;
   Check(logic->GetCurrentCage(lightField, cage), "the current cage validates");
   vtkNew<vtkLightFieldRenderer> renderer;
@@ -69,6 +70,7 @@ void TestView(vtkLightFieldSceneLogic* logic, vtkLightField* lightField)
   CheckEqual(renderer->GetWidenedSearch(), 4, "renderer widened search");
   CheckEqual(renderer->GetObjectThreshold(), 60.0, "renderer object threshold");
   CheckEqual(renderer->GetBackground()[2], 1.0, "renderer background");
+  CheckEqual(renderer->GetAntiAliasing(), false, "renderer anti-aliasing");
   Check(renderer->GetCamera() &&
       renderer->GetCamera()->GetViewAngle() == logic->GetScene()->GetCamera()->GetViewAngle(),
     "renderer camera");

@@ -1,10 +1,13 @@
 // Regression image of the textured figure captured under coaxial light:
 // views 0 (from +Z) and 1 (45 degrees) side by side. The texture reaches
-// the capture through input port 1.
+// the capture through input port 1. Prefiltered (Supersample 2), a 64 x 64
+// capture is exactly the 2 x 2 means of the 128 x 128 one, with the
+// point-sampled Label pass of a plain 64 x 64 capture.
 #include "lfdSynthesisTestUtilities.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 
+#include <cstring>
 #include <set>
 
 int TestFigureCapture(int argc, char* argv[])
@@ -49,6 +52,48 @@ int TestFigureCapture(int argc, char* argv[])
     4);
   lfdtest::Check(reddish > 50, "red texture pixels, view 0", reddish, 50);
   lfdtest::Check(bluish > 20, "navy texture pixels, view 0", bluish, 20);
+
+  auto prefiltered = lfdtest::RingCapture(source, 64);
+  prefiltered->SetTextureConnection(source->GetOutputPort(1));
+  prefiltered->CaptureDepthOff();
+  prefiltered->SetSupersample(2);
+  prefiltered->Update();
+  auto pointSampled = lfdtest::RingCapture(source, 64);
+  pointSampled->CaptureCoaxialOff();
+  pointSampled->CaptureDepthOff();
+  pointSampled->Update();
+  vtkDataArray* mean = prefiltered->GetOutput()->GetPass(vtkLightField::COAXIAL);
+  vtkDataArray* meanLabel = prefiltered->GetOutput()->GetPass(vtkLightField::LABEL);
+  vtkDataArray* plainLabel = pointSampled->GetOutput()->GetPass(vtkLightField::LABEL);
+  int wrongMeans = 0;
+  int wrongLabels = 0;
+  for (vtkIdType view = 0; view < 8; ++view)
+  {
+    for (vtkIdType y = 0; y < 64; ++y)
+    {
+      for (vtkIdType x = 0; x < 64; ++x)
+      {
+        const vtkIdType p = view * 64 * 64 + y * 64 + x;
+        const vtkIdType fine = view * 128 * 128 + 2 * y * 128 + 2 * x;
+        for (int c = 0; c < 3; ++c)
+        {
+          const int sum =
+            static_cast<int>(coaxial->GetComponent(fine, c) + coaxial->GetComponent(fine + 1, c) +
+              coaxial->GetComponent(fine + 128, c) + coaxial->GetComponent(fine + 129, c));
+          wrongMeans += static_cast<int>(mean->GetComponent(p, c)) != (sum + 2) / 4 ? 1 : 0;
+        }
+        wrongLabels += meanLabel->GetComponent(p, 0) != plainLabel->GetComponent(p, 0) ? 1 : 0;
+      }
+    }
+  }
+  lfdtest::Check(wrongMeans == 0, "prefiltered pixels that are not the 2 x 2 mean", wrongMeans, 0);
+  lfdtest::Check(
+    wrongLabels == 0, "prefiltered Label pixels not the point-sampled ones", wrongLabels, 0);
+  const char* provenance = prefiltered->GetOutput()->GetProvenance();
+  lfdtest::Check(provenance && std::strstr(provenance, "\"supersample\": 2"),
+    "provenance records \"supersample\": 2",
+    provenance ? 1 : 0,
+    1);
 
   auto montage = lfdtest::CoaxialMontage(lightField, { 0, 1 });
   const bool matches = lfdtest::MatchesBaseline(argc, argv, montage, 0.05);
