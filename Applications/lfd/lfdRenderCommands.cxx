@@ -124,7 +124,8 @@ void Render(const std::string& scenePath,
   const std::string& out,
   const double* time,
   const ViewOptions& view,
-  const RefocusOptions& refocus)
+  const RefocusOptions& refocus,
+  std::int64_t cacheBytes)
 {
   const double start = vtkTimerLog::GetUniversalTime();
   auto scene = ReadScene(scenePath);
@@ -135,7 +136,7 @@ void Render(const std::string& scenePath,
         : view.Focal == "proxy"                              ? vtkLightFieldRenderer::FOCAL_PROXY
                                 : vtkLightFieldRenderer::FOCAL_AUTOMATIC);
   }
-  auto lightField = ReadSceneLightField(scene, Passes::Rendered);
+  auto lightField = ReadSceneLightField(scene, Passes::Rendered, cacheBytes);
   ApplyViewOptions(view, scene, lightField);
   auto cage = SceneCage(scene, lightField, time);
   vtkNew<vtkLightFieldRenderer> renderer;
@@ -158,6 +159,7 @@ void Render(const std::string& scenePath,
   }
   WarnIfExtrapolating(lightField, scene, cage);
   Run(renderer.Get(), "rendering");
+  CheckTexelSource(lightField);
   WriteImage(renderer->GetOutput(), out);
   std::cout << "wrote " << out << " (" << scene->GetScene()->GetWidth() << "x"
             << scene->GetScene()->GetHeight() << ") in " << Seconds(start) << " s\n";
@@ -211,7 +213,11 @@ void PrintAnimation(vtkLightFieldSceneLogic* scene,
 
 namespace
 {
-void Animate(const std::string& scenePath, int frames, const std::string& out, bool paraview)
+void Animate(const std::string& scenePath,
+  int frames,
+  const std::string& out,
+  bool paraview,
+  std::int64_t cacheBytes)
 {
   // Under mpirun every process reads the scene and its light field (on a
   // cluster, from a shared file system) and process 0 stages the output; a
@@ -233,7 +239,7 @@ void Animate(const std::string& scenePath, int frames, const std::string& out, b
       {
         Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
       }
-      lightField = ReadSceneLightField(scene, Passes::Rendered);
+      lightField = ReadSceneLightField(scene, Passes::Rendered, cacheBytes);
       if (root)
       {
         folder =
@@ -254,6 +260,7 @@ void Animate(const std::string& scenePath, int frames, const std::string& out, b
   }
   const double start = vtkTimerLog::GetUniversalTime();
   RenderAnimation(scene, lightField, frames, root ? folder->GetPath() : std::string(), paraview);
+  CheckTexelSource(lightField);
   if (!root)
   {
     return;
@@ -355,6 +362,10 @@ void Lattice(const LatticeOptions& options)
 
 void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands)
 {
+  static const std::string CacheSizeHelp =
+    "read the light field's colours and labels out of core, tile by tile through an image cache "
+    "of SIZE bytes (K, M or G; e.g. 512M) instead of into memory (the default); the dataset must "
+    "be tiled (lfd tile)";
   struct RenderOptions
   {
     std::string Scene;
@@ -362,6 +373,7 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     double Time = 0.0;
     ViewOptions View;
     RefocusOptions Refocus;
+    std::int64_t CacheSize = 0;
   };
   auto render = std::make_shared<RenderOptions>();
   auto* renderCommand = app.add_subcommand("render",
@@ -427,6 +439,7 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
       "has a depth pass), plane (the paper's focal plane at render.focal_distance) or proxy (the "
       "depth pass, per pixel; see lfd proxy)")
     ->check(CLI::IsMember({ "auto", "plane", "proxy" }));
+  numbers.AddByteSize(renderCommand, "--cache-size", render->CacheSize, CacheSizeHelp);
   commands.push_back({ renderCommand,
     [render, timeOption]
     {
@@ -434,7 +447,8 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
         render->Out,
         *timeOption ? &render->Time : nullptr,
         render->View,
-        render->Refocus);
+        render->Refocus,
+        render->CacheSize);
     },
     false });
 
@@ -444,6 +458,7 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     std::string Out;
     int Frames = 48;
     bool ParaView = false;
+    std::int64_t CacheSize = 0;
   };
   auto animate = std::make_shared<AnimateOptions>();
   auto* animateCommand = app.add_subcommand("animate",
@@ -457,8 +472,40 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     animate->ParaView,
     "also write the ParaView series: each frame as frame_NNNN.vti (Radiance, Label, Depth) and "
     "its cage as cage_NNNN.vtu, listed with their times in animation.pvd and cage.pvd");
+  numbers.AddByteSize(animateCommand, "--cache-size", animate->CacheSize, CacheSizeHelp);
   commands.push_back({ animateCommand,
-    [animate] { Animate(animate->Scene, animate->Frames, animate->Out, animate->ParaView); },
+    [animate] {
+      Animate(animate->Scene, animate->Frames, animate->Out, animate->ParaView, animate->CacheSize);
+    },
+    false });
+
+  struct TileOptions
+  {
+    std::string In;
+    std::string Out;
+    int TileSize = 64;
+  };
+  auto tile = std::make_shared<TileOptions>();
+  auto* tileCommand = app.add_subcommand("tile",
+    "rewrite the light-field dataset LF as OUT with tiled, MIP-mapped TIFF images (same manifest, "
+    "rig and passes), which lfd render and lfd animate --cache-size read tile by tile; replaces "
+    "OUT when complete");
+  tileCommand->add_option("LF", tile->In, "light-field dataset")->required();
+  tileCommand->add_option("--out", tile->Out, "output dataset")->required();
+  numbers.Add(tileCommand,
+    "--tile-size",
+    tile->TileSize,
+    16,
+    4096,
+    "tile width and height in pixels, a multiple of 16");
+  commands.push_back({ tileCommand,
+    [tile]
+    {
+      const double start = vtkTimerLog::GetUniversalTime();
+      WriteLightField(ReadLightField(tile->In), tile->Out, tile->TileSize);
+      std::cout << "wrote " << tile->Out << " (" << tile->TileSize << "x" << tile->TileSize
+                << " tiles) in " << Seconds(start) << " s\n";
+    },
     false });
 
   auto lattice = std::make_shared<LatticeOptions>();

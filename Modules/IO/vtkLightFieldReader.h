@@ -31,7 +31,14 @@
  * vtkLightFieldErrorObserver observing the reader records both quietly and
  * gives back the reader's one line.
  *
- * @sa vtkLightFieldWriter vtkLightField vtkMiddleburyImporter
+ * **Out of core.** With a CacheSize (bytes, > 0) the Coaxial and Label
+ * passes are not read into memory: the output has no arrays for them but a
+ * vtkLightFieldImageCache of that budget (vtkLightField::GetTexelSource())
+ * that the renderer reads tile by tile; the other selected passes are read
+ * as usual. Their images must then be tiled (`lfd tile`,
+ * vtkLightFieldTiler): an untiled one is an error naming it.
+ *
+ * @sa vtkLightFieldWriter vtkLightField vtkMiddleburyImporter vtkLightFieldImageCache
  */
 #ifndef vtkLightFieldReader_h
 #define vtkLightFieldReader_h
@@ -82,6 +89,16 @@ public:
   void ReadNoPasses();
   ///@}
 
+  ///@{
+  /**
+   * 0 (default): every selected pass is read into memory. > 0: the Coaxial
+   * and Label passes are served out of core by an image cache of this many
+   * bytes (see Out of core above).
+   */
+  vtkSetClampMacro(CacheSize, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
+  vtkGetMacro(CacheSize, vtkTypeInt64);
+  ///@}
+
 protected:
   vtkLightFieldReader();
   ~vtkLightFieldReader() override;
@@ -117,6 +134,7 @@ protected:
   std::string DescribeFailure(const std::string& problem) override;
 
   char* FileName = nullptr;
+  vtkTypeInt64 CacheSize = 0;
   bool ReadPass[vtkLightField::NUMBER_OF_PASSES];
 
 private:
