@@ -357,6 +357,9 @@ bool WriteTiledImagePixels(const std::string& path,
   spec.tile_height = tileSize;
   spec.tile_depth = 1;
   spec.attribute("compression", "zip");
+  // TIFF has no MIP levels of its own: they are subimages of halving size,
+  // which OpenImageIO reads as MIP levels when the file says it is a texture.
+  spec.attribute("textureformat", "Plain Texture");
   OIIO::ImageBuf level(spec);
   const OIIO::stride_t pixelBytes = static_cast<OIIO::stride_t>(type.size()) * channels;
   const OIIO::stride_t rowBytes = pixelBytes * width;
@@ -391,7 +394,7 @@ bool WriteTiledImagePixels(const std::string& path,
       error = OneLine(level.geterror(), "cannot compute a MIP level");
       return false;
     }
-    mode = OIIO::ImageOutput::AppendMIPLevel;
+    mode = OIIO::ImageOutput::AppendSubimage;
   }
   if (!output->close())
   {

@@ -54,8 +54,8 @@ public:
     , Files(files)
     , Serial(NextSerial++)
   {
-    this->PixelBytes = vtkLightField::GetPassComponents(pass) *
-      (vtkLightField::GetPassScalarType(pass) == VTK_FLOAT ? 4 : 1);
+    this->ValueBytes = vtkLightField::GetPassScalarType(pass) == VTK_FLOAT ? 4 : 1;
+    this->PixelBytes = vtkLightField::GetPassComponents(pass) * this->ValueBytes;
     for (const std::string& file : files)
     {
       this->Handles.push_back(cache->get_image_handle(OIIO::ustring(file)));
@@ -109,9 +109,9 @@ public:
     Cache::Tile* tile = this->CacheOf->get_tile(this->Handles[view], table.Thread, 0, 0, x, y, 0);
     OIIO::TypeDesc format;
     const void* pixels = tile ? this->CacheOf->tile_pixels(tile, format) : nullptr;
-    if (!pixels)
+    if (!pixels || static_cast<int>(format.size()) != this->ValueBytes)
     {
-      this->Fail(view);
+      this->Fail(view, pixels ? "the tile's pixels are not of the pass's type" : "");
       if (tile)
       {
         this->CacheOf->release_tile(tile);
@@ -188,9 +188,9 @@ private:
     return *table;
   }
 
-  void Fail(int view) const
+  void Fail(int view, const std::string& problem) const
   {
-    std::string message = this->CacheOf->geterror();
+    std::string message = problem.empty() ? this->CacheOf->geterror() : problem;
     std::lock_guard<std::mutex> lock(this->Mutex);
     if (this->FirstError.empty())
     {
@@ -204,6 +204,7 @@ private:
   std::vector<std::string> Files;
   std::vector<Cache::ImageHandle*> Handles;
   std::uint64_t Serial;
+  int ValueBytes = 1;
   int PixelBytes = 1;
   int TileWidth = 1;
   int TileHeight = 1;

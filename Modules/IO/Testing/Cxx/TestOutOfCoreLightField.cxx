@@ -32,14 +32,14 @@ constexpr int Size = 384;
 constexpr int Views = 72;
 constexpr vtkTypeInt64 Bytes = vtkTypeInt64(Size) * Size * Views * 4;
 
-vtkSmartPointer<vtkLightField> MakeLightField()
+vtkSmartPointer<vtkLightField> MakeLightField(int size, int views)
 {
   auto lightField = vtkSmartPointer<vtkLightField>::New();
-  lightField->SetLayout(Size, Size, Views);
+  lightField->SetLayout(size, size, views);
   const double center[3] = { 0, 0, 0 };
   const double axis[3] = { 0, 1, 0 };
   const double height = 0.0;
-  lightField->GetRig()->MakeCylinder(center, axis, 4.0, Views, 1, &height, Size, Size, 40.0);
+  lightField->GetRig()->MakeCylinder(center, axis, 4.0, views, 1, &height, size, size, 40.0);
   auto* rgb = vtkUnsignedCharArray::SafeDownCast(lightField->AllocatePass(vtkLightField::COAXIAL));
   auto* label = vtkUnsignedCharArray::SafeDownCast(lightField->AllocatePass(vtkLightField::LABEL));
   unsigned char* colour = rgb->GetPointer(0);
@@ -47,9 +47,9 @@ vtkSmartPointer<vtkLightField> MakeLightField()
   // Smooth bands that differ per view, so every texel read matters.
   for (vtkIdType i = 0; i < lightField->GetNumberOfPoints(); ++i)
   {
-    const int x = static_cast<int>(i % Size);
-    const int y = static_cast<int>(i / Size % Size);
-    const int v = static_cast<int>(i / (Size * Size));
+    const int x = static_cast<int>(i % size);
+    const int y = static_cast<int>(i / size % size);
+    const int v = static_cast<int>(i / (size * size));
     colour[3 * i] = static_cast<unsigned char>(x + 3 * v);
     colour[3 * i + 1] = static_cast<unsigned char>(y * 2 + v);
     colour[3 * i + 2] = static_cast<unsigned char>((x ^ y) + 5 * v);
@@ -92,8 +92,12 @@ bool SameArray(vtkDataArray* a, vtkDataArray* b)
 }
 
 // Renders `frames` views on an orbit around the ring from both light fields;
-// returns how many frames differ in any pixel.
-int CompareOrbit(vtkLightField* inMemory, vtkLightField* outOfCore, int frames)
+// returns how many frames differ in any pixel. `lit` counts the pixels that
+// are not black (background) in the in-memory frames.
+int CompareOrbit(vtkLightField* inMemory,
+  vtkLightField* outOfCore,
+  int frames,
+  vtkIdType* lit = nullptr)
 {
   vtkNew<vtkLightFieldRenderer> memory;
   vtkNew<vtkLightFieldRenderer> cached;
@@ -115,6 +119,12 @@ int CompareOrbit(vtkLightField* inMemory, vtkLightField* outOfCore, int frames)
       renderer->SetCamera(camera);
       renderer->Update();
     }
+    auto* pixels =
+      vtkUnsignedCharArray::SafeDownCast(memory->GetOutput()->GetPointData()->GetScalars());
+    for (vtkIdType p = 0; lit && p < pixels->GetNumberOfTuples(); ++p)
+    {
+      *lit += pixels->GetValue(3 * p) || pixels->GetValue(3 * p + 1) || pixels->GetValue(3 * p + 2);
+    }
     different += SameArray(memory->GetOutput()->GetPointData()->GetScalars(),
                    cached->GetOutput()->GetPointData()->GetScalars())
       ? 0
@@ -128,7 +138,7 @@ int TestOutOfCoreLightField(int, char*[])
 {
   const std::string folder = lfdtest::ScratchFolder("TestOutOfCoreLightField");
   const std::string tiled = folder + "/tiled.lf";
-  vtkSmartPointer<vtkLightField> original = MakeLightField();
+  vtkSmartPointer<vtkLightField> original = MakeLightField(Size, Views);
   lfdtest::Check(Write(original, tiled, 64), "written with 64 x 64 tiles");
 
   // Read into memory, the tiled images give back the light field exactly.
@@ -152,8 +162,13 @@ int TestOutOfCoreLightField(int, char*[])
   }
   lfdtest::Check(outOfCore->HasLabel(3) && !outOfCore->HasLabel(4),
     "labels 1..3 present, 4 absent (scanned through the cache)");
+  vtkIdType lit = 0;
   lfdtest::CheckEqual(
-    CompareOrbit(inMemory, outOfCore, 12), 0, "frames of a first orbit that differ");
+    CompareOrbit(inMemory, outOfCore, 12, &lit), 0, "frames of a first orbit that differ");
+  lfdtest::CheckRange(static_cast<double>(lit) / (12 * 96 * 96),
+    0.5,
+    1.0,
+    "fraction of the orbit's pixels that show the light field (not background)");
   const vtkTypeInt64 firstOrbit = cache->GetTilesRead();
   lfdtest::CheckEqual(
     CompareOrbit(inMemory, outOfCore, 12), 0, "frames of a second orbit that differ");
@@ -179,7 +194,7 @@ int TestOutOfCoreLightField(int, char*[])
 
   // An untiled dataset cannot be read through the cache.
   const std::string untiled = folder + "/untiled.lf";
-  lfdtest::Check(Write(original, untiled, 0), "written untiled (PNG)");
+  lfdtest::Check(Write(MakeLightField(32, 4), untiled, 0), "written untiled (PNG)");
   Read(untiled, Bytes / 4, message);
   lfdtest::CheckFailure("untiled dataset out of core",
     true,
