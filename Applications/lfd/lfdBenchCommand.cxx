@@ -15,10 +15,12 @@
 #include "vtkLightField.h"
 #include "vtkLightFieldCapture.h"
 #include "vtkLightFieldEditor.h"
+#include "vtkLightFieldImageCache.h"
 #include "vtkLightFieldMapper.h"
 #include "vtkLightFieldRenderer.h"
 #include "vtkNew.h"
 #include "vtkPartCageSource.h"
+#include "vtkPointData.h"
 #include "vtkProceduralObjectSource.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -34,6 +36,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -699,6 +703,51 @@ void TwoPlaneRows(const BenchSettings& settings,
   }
 }
 
+/**
+ * Out of core: the undeformed fish at TableSize() read tile by tile (`lfd
+ * tile`, 64^2 tiles) through image caches of 1/4, 1/2 and 1x its bytes,
+ * against the same render from memory in the same run ("vs_in_memory"),
+ * with the cache's reads and whether the frame equals the in-memory one
+ * pixel for pixel ("identical", 1 or 0). The in-memory fish stays resident
+ * in the bench's process: "peak MB" counts it too.
+ */
+void OutOfCoreRows(vtkLightField* fish,
+  const BenchSettings& settings,
+  PeakMemory& peak,
+  std::vector<BenchRow>& rows)
+{
+  const int size = TableSize(settings);
+  const std::string folder = lfd::io::TemporaryDirectoryName(
+    (std::filesystem::temp_directory_path() / "lfd-bench-tiles").string());
+  WriteLightField(fish, folder, 64);
+  vtkSmartPointer<vtkLightFieldRenderer> memory = OrbitRenderer(fish, size);
+  const Measure inMemory = MeasureRender(memory, settings.Repeat, peak);
+  vtkDataArray* expected = memory->GetOutput()->GetPointData()->GetScalars();
+  const long long bytes = LightFieldBytes(fish);
+  for (const auto& [name, fraction] :
+    std::vector<std::pair<std::string, double>>{ { "cache 1/4 of the data", 0.25 },
+      { "cache 1/2 of the data", 0.5 },
+      { "cache as large as the data", 1.0 } })
+  {
+    auto lightField =
+      ReadLightField(folder, Passes::RenderedOnPlane, static_cast<std::int64_t>(fraction * bytes));
+    auto* cache = vtkLightFieldImageCache::SafeDownCast(lightField->GetTexelSource());
+    vtkSmartPointer<vtkLightFieldRenderer> renderer = OrbitRenderer(lightField, size);
+    const Measure figures = MeasureRender(renderer, settings.Repeat, peak);
+    vtkDataArray* frame = renderer->GetOutput()->GetPointData()->GetScalars();
+    const bool identical = frame->GetNumberOfValues() == expected->GetNumberOfValues() &&
+      std::memcmp(frame->GetVoidPointer(0),
+        expected->GetVoidPointer(0),
+        static_cast<std::size_t>(frame->GetNumberOfValues())) == 0;
+    rows.push_back(Row("out of core", name, size, fish, 0, figures));
+    rows.back().Extra = { { "vs_in_memory", figures.Seconds / inMemory.Seconds },
+      { "cache_mb", cache->GetCacheSize() / 1048576.0 },
+      { "tiles_read", static_cast<double>(cache->GetTilesRead()) },
+      { "identical", identical ? 1.0 : 0.0 } };
+  }
+  lfd::io::RemoveQuietly(folder);
+}
+
 /// The reference loop's time at each size (s).
 using ReferenceTimes = std::map<int, double>;
 
@@ -869,6 +918,7 @@ void Bench(const BenchSettings& settings)
   ProxyRows(settings, views, rowsOfViews, image, peak, rows);
   CageSizeRows(fish, settings, peak, rows);
   TwoPlaneRows(settings, image, peak, rows);
+  OutOfCoreRows(fish, settings, peak, rows);
   LoadAverage(load[1]);
 
   const std::string scene = "light field: " + std::to_string(views) + "x" +
@@ -880,6 +930,8 @@ void Bench(const BenchSettings& settings)
   PrintTable("deformed fish (bend 30), cage size", "cage size", rows, reference);
   PrintTable(
     "two-plane fish (16x16 grid of " + std::to_string(image) + "^2)", "two-plane", rows, reference);
+  PrintTable(
+    "undeformed fish out of core (lfd tile, --cache-size)", "out of core", rows, reference);
   std::printf("(median of %d renders each; vs ref: against the reference loop at the same "
               "frame size, timed in the same run; peak MB: the process's peak resident memory "
               "during the configuration (its light fields included); vs_rest: against the "
@@ -887,6 +939,8 @@ void Bench(const BenchSettings& settings)
               "timed just before; "
               "vs_3_boxes: against the 3 boxes of the same table; "
               "no_accel_ms: the same cage with vtkLightFieldRenderer::CageAcceleration off; "
+              "vs_in_memory: against the same frame from memory, identical: 1 when its pixels "
+              "equal it, cache_mb and tiles_read: the image cache's budget and reads; "
               "load average at the end: %.2f %.2f %.2f)\n",
     settings.Repeat,
     load[1][0],

@@ -6,6 +6,7 @@
 #include "vtkImageFileReader.h"
 #include "vtkImageFileWriter.h"
 #include "vtkLightField.h"
+#include "vtkLightFieldImageCache.h"
 #include "vtkLightFieldReader.h"
 #include "vtkLightFieldRenderer.h"
 #include "vtkLightFieldScene.h"
@@ -139,11 +140,13 @@ vtkSmartPointer<vtkImageData> ReadImage(const std::string& path)
 
 vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path,
   Passes passes,
+  std::int64_t cacheBytes,
   int piece,
   int pieces)
 {
   vtkNew<vtkLightFieldReader> reader;
   reader->SetFileName(path.c_str());
+  reader->SetCacheSize(cacheBytes);
   reader->SetPiece(piece);
   reader->SetNumberOfPieces(pieces);
   if (passes != Passes::All)
@@ -204,6 +207,7 @@ void ApplyRenderOverrides(const RenderOverrides& overrides, vtkLightFieldSceneLo
 
 vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene,
   Passes passes,
+  std::int64_t cacheBytes,
   int piece,
   int pieces)
 {
@@ -217,7 +221,39 @@ vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scen
   {
     passes = Passes::RenderedOnPlane;
   }
-  return ReadLightField(scene->GetScene()->GetResolvedLightFieldPath(), passes, piece, pieces);
+  return ReadLightField(scene->GetScene()->GetResolvedLightFieldPath(), passes, cacheBytes, piece, pieces);
+}
+
+void CheckTexelSource(vtkLightField* lightField)
+{
+  auto* cache = vtkLightFieldImageCache::SafeDownCast(lightField->GetTexelSource());
+  if (cache && *cache->GetError())
+  {
+    Fail(std::string("reading the light field's tiles: ") + cache->GetError());
+  }
+}
+
+std::int64_t NumericOptions::ParseByteSize(const std::string& name, const std::string& text)
+{
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const long long number = std::strtoll(begin, &end, 10);
+  std::int64_t unit = 1;
+  if (end != begin && (*end == 'K' || *end == 'M' || *end == 'G') && end[1] == '\0')
+  {
+    unit = std::int64_t(1) << (*end == 'K' ? 10 : *end == 'M' ? 20 : 30);
+    ++end;
+  }
+  const std::int64_t largest = std::numeric_limits<std::int64_t>::max() / unit;
+  if (end == begin || *end != '\0' || errno != 0 || number < 1 || number > largest ||
+    number * unit < (std::int64_t(1) << 20))
+  {
+    Fail(name + " " + text +
+      ": expected a size of at least 1M: an integer with an optional unit "
+      "K, M or G (e.g. 512M)");
+  }
+  return number * unit;
 }
 
 vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldSceneLogic* scene,
@@ -248,11 +284,12 @@ vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldSceneL
   return labelled;
 }
 
-void WriteLightField(vtkLightField* lightField, const std::string& directory)
+void WriteLightField(vtkLightField* lightField, const std::string& directory, int tileSize)
 {
   vtkNew<vtkLightFieldWriter> writer;
   writer->SetInputData(lightField);
   writer->SetDirectory(directory.c_str());
+  writer->SetTileSize(tileSize);
   lfd::ShowProgress(writer, "writing");
   Run(writer.Get(), "writing " + directory);
 }

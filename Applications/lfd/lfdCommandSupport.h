@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <functional>
 #include <limits>
@@ -234,6 +235,22 @@ public:
     return this->Add(command, name, values, -Huge, Huge, description);
   }
 
+  /// A size in bytes: an integer with an optional unit K, M or G (powers of
+  /// 1024), e.g. 512M; at least 1M.
+  CLI::Option* AddByteSize(CLI::App* command,
+    const std::string& name,
+    std::int64_t& value,
+    const std::string& description)
+  {
+    Entry* entry = this->NewEntry();
+    entry->Assign = [&value, name](const std::vector<std::string>& text)
+    { value = ParseByteSize(name, text.back()); };
+    return command->add_option(name, entry->Text, description)
+      ->type_name("SIZE")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  }
+
   /// Converts every numeric option given on the command line.
   void Convert()
   {
@@ -305,6 +322,8 @@ private:
     return static_cast<T>(number);
   }
 
+  static std::int64_t ParseByteSize(const std::string& name, const std::string& text);
+
   std::vector<std::unique_ptr<Entry>> Entries;
 };
 
@@ -333,10 +352,15 @@ enum class Passes
   RenderedOnPlane
 };
 
-/// With `pieces` > 1, only the views of piece `piece` are read, the others
-/// left zero (vtkLightFieldReader::SetPiece(); ProcessGroup::ShareLightField()).
+/// With `cacheBytes` > 0 the Coaxial and Label passes stay on disk and are
+/// read tile by tile through an image cache of that many bytes
+/// (vtkLightFieldReader::SetCacheSize; the dataset must be tiled, `lfd tile`).
+/// With `pieces` > 1, only the views of piece `piece` of the passes read into
+/// memory are read, the others left zero (vtkLightFieldReader::SetPiece();
+/// ProcessGroup::ShareLightField()).
 vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path,
   Passes passes = Passes::All,
+  std::int64_t cacheBytes = 0,
   int piece = 0,
   int pieces = 1);
 
@@ -344,6 +368,7 @@ vtkSmartPointer<vtkLightField> ReadLightField(const std::string& path,
 /// "lightfield" when it names none or a missing one).
 vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scene,
   Passes passes = Passes::All,
+  std::int64_t cacheBytes = 0,
   int piece = 0,
   int pieces = 1);
 
@@ -374,6 +399,10 @@ void AddRenderOverrideOptions(CLI::App* command, RenderOverrides& overrides);
 /// scene focused on the plane does not read the Depth pass).
 void ApplyRenderOverrides(const RenderOverrides& overrides, vtkLightFieldSceneLogic* scene);
 
+/// Fails with the file name when a tile of a light field read out of core
+/// could not be read while rendering (those texels read as zeros).
+void CheckTexelSource(vtkLightField* lightField);
+
 /**
  * The scene's cage, validated by the scene logic (against the light field
  * when given; nullptr when the scene has none): the one check of a scene's
@@ -392,7 +421,9 @@ vtkSmartPointer<vtkDeformationCage> SceneCage(vtkLightFieldSceneLogic* scene,
  */
 vtkSmartPointer<vtkPolyData> LabelByScene(vtkPolyData* mesh, vtkLightFieldSceneLogic* scene);
 
-void WriteLightField(vtkLightField* lightField, const std::string& directory);
+/// Writes a dataset (tileSize > 0: tiled, MIP-mapped TIFF images, see
+/// vtkLightFieldWriter::SetTileSize).
+void WriteLightField(vtkLightField* lightField, const std::string& directory, int tileSize = 0);
 
 void WriteScene(vtkLightFieldScene* scene, const std::string& path);
 

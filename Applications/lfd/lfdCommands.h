@@ -21,7 +21,7 @@ namespace lfd::cli
 {
 /// `lfd synth`, `lfd import middlebury`, `lfd info` (lfdCaptureCommands.cxx).
 void AddCaptureCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
-/// `lfd render`, `lfd animate`, `lfd lattice` (lfdRenderCommands.cxx).
+/// `lfd render`, `lfd animate`, `lfd tile`, `lfd lattice` (lfdRenderCommands.cxx).
 void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);
 /// `lfd eval groundtruth`, `lfd eval loo` (lfdEvalCommands.cxx).
 void AddEvalCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands);

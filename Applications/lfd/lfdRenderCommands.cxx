@@ -124,12 +124,13 @@ void Render(const std::string& scenePath,
   const std::string& out,
   const double* time,
   const ViewOptions& view,
-  const RefocusOptions& refocus)
+  const RefocusOptions& refocus,
+  std::int64_t cacheBytes)
 {
   const double start = vtkTimerLog::GetUniversalTime();
   auto scene = ReadScene(scenePath);
   ApplyRenderOverrides(view.Overrides, scene);
-  auto lightField = ReadSceneLightField(scene, Passes::Rendered);
+  auto lightField = ReadSceneLightField(scene, Passes::Rendered, cacheBytes);
   ApplyViewOptions(view, scene, lightField);
   auto cage = SceneCage(scene, lightField, time);
   vtkNew<vtkLightFieldRenderer> renderer;
@@ -152,6 +153,7 @@ void Render(const std::string& scenePath,
   }
   WarnIfExtrapolating(lightField, scene, cage);
   Run(renderer.Get(), "rendering");
+  CheckTexelSource(lightField);
   WriteImage(renderer->GetOutput(), out);
   std::cout << "wrote " << out << " (" << scene->GetScene()->GetWidth() << "x"
             << scene->GetScene()->GetHeight() << ") in " << Seconds(start) << " s\n";
@@ -209,7 +211,8 @@ void Animate(const std::string& scenePath,
   int frames,
   const std::string& out,
   bool paraview,
-  const RenderOverrides& overrides)
+  const RenderOverrides& overrides,
+  std::int64_t cacheBytes)
 {
   // Under mpirun every process reads the scene and its piece of the light
   // field's views (on a cluster, from a shared file system), then they
@@ -233,8 +236,11 @@ void Animate(const std::string& scenePath,
       {
         Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
       }
-      lightField = ReadSceneLightField(
-        scene, Passes::Rendered, ProcessGroup::GetRank(), ProcessGroup::GetSize());
+      lightField = ReadSceneLightField(scene,
+        Passes::Rendered,
+        cacheBytes,
+        ProcessGroup::GetRank(),
+        ProcessGroup::GetSize());
       if (root)
       {
         folder =
@@ -256,6 +262,7 @@ void Animate(const std::string& scenePath,
   ProcessGroup::ShareLightField(lightField);
   const double start = vtkTimerLog::GetUniversalTime();
   RenderAnimation(scene, lightField, frames, root ? folder->GetPath() : std::string(), paraview);
+  CheckTexelSource(lightField);
   if (!root)
   {
     return;
@@ -357,6 +364,10 @@ void Lattice(const LatticeOptions& options)
 
 void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands)
 {
+  static const std::string CacheSizeHelp =
+    "read the light field's colours and labels out of core, tile by tile through an image cache "
+    "of SIZE bytes (K, M or G; e.g. 512M) instead of into memory (the default); the dataset must "
+    "be tiled (lfd tile)";
   struct RenderOptions
   {
     std::string Scene;
@@ -364,6 +375,7 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     double Time = 0.0;
     ViewOptions View;
     RefocusOptions Refocus;
+    std::int64_t CacheSize = 0;
   };
   auto render = std::make_shared<RenderOptions>();
   auto* renderCommand = app.add_subcommand("render",
@@ -423,6 +435,7 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
       "stops at part borders")
     ->default_str("");
   AddRenderOverrideOptions(renderCommand, render->View.Overrides);
+  numbers.AddByteSize(renderCommand, "--cache-size", render->CacheSize, CacheSizeHelp);
   commands.push_back({ renderCommand,
     [render, timeOption]
     {
@@ -430,7 +443,8 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
         render->Out,
         *timeOption ? &render->Time : nullptr,
         render->View,
-        render->Refocus);
+        render->Refocus,
+        render->CacheSize);
     },
     false });
 
@@ -441,6 +455,7 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     int Frames = 48;
     bool ParaView = false;
     RenderOverrides Overrides;
+    std::int64_t CacheSize = 0;
   };
   auto animate = std::make_shared<AnimateOptions>();
   auto* animateCommand = app.add_subcommand("animate",
@@ -455,9 +470,44 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     "also write the ParaView series: each frame as frame_NNNN.vti (Radiance, Label, Depth) and "
     "its cage as cage_NNNN.vtu, listed with their times in animation.pvd and cage.pvd");
   AddRenderOverrideOptions(animateCommand, animate->Overrides);
+  numbers.AddByteSize(animateCommand, "--cache-size", animate->CacheSize, CacheSizeHelp);
   commands.push_back({ animateCommand,
     [animate] {
-      Animate(animate->Scene, animate->Frames, animate->Out, animate->ParaView, animate->Overrides);
+      Animate(animate->Scene,
+        animate->Frames,
+        animate->Out,
+        animate->ParaView,
+        animate->Overrides,
+        animate->CacheSize);
+    },
+    false });
+
+  struct TileOptions
+  {
+    std::string In;
+    std::string Out;
+    int TileSize = 64;
+  };
+  auto tile = std::make_shared<TileOptions>();
+  auto* tileCommand = app.add_subcommand("tile",
+    "rewrite the light-field dataset LF as OUT with tiled, MIP-mapped TIFF images (same manifest, "
+    "rig and passes), which lfd render and lfd animate --cache-size read tile by tile; replaces "
+    "OUT when complete");
+  tileCommand->add_option("LF", tile->In, "light-field dataset")->required();
+  tileCommand->add_option("--out", tile->Out, "output dataset")->required();
+  numbers.Add(tileCommand,
+    "--tile-size",
+    tile->TileSize,
+    16,
+    4096,
+    "tile width and height in pixels, a multiple of 16");
+  commands.push_back({ tileCommand,
+    [tile]
+    {
+      const double start = vtkTimerLog::GetUniversalTime();
+      WriteLightField(ReadLightField(tile->In), tile->Out, tile->TileSize);
+      std::cout << "wrote " << tile->Out << " (" << tile->TileSize << "x" << tile->TileSize
+                << " tiles) in " << Seconds(start) << " s\n";
     },
     false });
 

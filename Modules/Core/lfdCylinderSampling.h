@@ -32,6 +32,7 @@
 #define lfdCylinderSampling_h
 
 #include "lfdPinholeCamera.h"
+#include "lfdTexelSource.h"
 
 #include <glm/glm.hpp>
 
@@ -257,7 +258,9 @@ inline int ChooseViews(const RingLayout& layout, double azimuth, double height, 
 
 /**
  * Pixels of all views of one pass, stacked view after view. Rows are stored
- * in VTK order (bottom image row first), as vtkLightField stores them.
+ * in VTK order (bottom image row first), as vtkLightField stores them. A
+ * pass larger than memory has no Data but a Source its texels are read
+ * through (a light field backed by an image cache).
  */
 template<typename T>
 struct ViewStack
@@ -266,10 +269,19 @@ struct ViewStack
   int Width = 0;
   int Height = 0;
   int Components = 1;
+  const TexelSource* Source = nullptr;
 
-  /// Pointer to the pixel at OpenCV coordinates (x, y) (top-left origin).
+  /// Whether the stack holds a pass (in memory or through Source).
+  bool Present() const { return this->Data || this->Source; }
+
+  /// Pointer to the pixel at OpenCV coordinates (x, y) (top-left origin);
+  /// read it before the next Pixel() call (Source's tiles are recycled).
   const T* Pixel(int view, int x, int y) const
   {
+    if (this->Source)
+    {
+      return static_cast<const T*>(this->Source->Texel(view, x, y));
+    }
     const std::size_t row = static_cast<std::size_t>(view) * this->Height + (this->Height - 1 - y);
     return this->Data + (row * this->Width + x) * this->Components;
   }
@@ -693,7 +705,7 @@ struct LightFieldSampler
   const RingLayout* Layout = nullptr;
   const PinholeCamera* Cameras = nullptr; // indexed by view
   ViewStack<std::uint8_t> Radiance;       // 3 components
-  ViewStack<std::uint8_t> Labels;         // 1 component, Data may be null
+  ViewStack<std::uint8_t> Labels;         // 1 component, may be absent (Present())
   double FocalDistance = 0.0;
   /// The proxy: per-view depth maps (camera z, 0 = no surface), 1 component;
   /// Data null = the paper's focal plane at FocalDistance.
@@ -789,7 +801,7 @@ struct LightFieldSampler
         const std::uint8_t* rgb = this->Radiance.Pixel(view, px, py);
         sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
         sample.Weight = weight * bw;
-        sample.Label = this->Labels.Data ? *this->Labels.Pixel(view, px, py) : 0;
+        sample.Label = this->Labels.Present() ? *this->Labels.Pixel(view, px, py) : 0;
       });
   }
 
@@ -1047,7 +1059,7 @@ struct LightFieldSampler
     // Near a silhouette the depth maps are least certain (one depth per
     // pixel, nearest pixel): where the focused samples vote for background,
     // the ray is looked up as without a proxy, through the plane.
-    if (out.Count == 0 || (this->Labels.Data && VoteLabel(out) == 0))
+    if (out.Count == 0 || (this->Labels.Present() && VoteLabel(out) == 0))
     {
       out.Count = 0;
       return false;
@@ -1116,7 +1128,7 @@ struct LightFieldSampler
   {
     const glm::dvec3 d = b - a;
     double s;
-    if (!this->Labels.Data || !IntersectCylinderEntry(this->Layout->Cyl, a, d, s))
+    if (!this->Labels.Present() || !IntersectCylinderEntry(this->Layout->Cyl, a, d, s))
     {
       return false;
     }

@@ -284,7 +284,7 @@ struct TwoPlaneSampler
   const TwoPlaneLayout* Layout = nullptr;
   const PinholeCamera* Cameras = nullptr; // indexed by view
   ViewStack<std::uint8_t> Radiance;       // 3 components
-  ViewStack<std::uint8_t> Labels;         // 1 component, Data may be null
+  ViewStack<std::uint8_t> Labels;         // 1 component, may be absent (Present())
   /// Depth of the focal plane in front of the camera plane (along Normal);
   /// 0 or less: at infinity, where every camera sees the ray's direction
   /// (the zero-disparity plane of views that share one K).
@@ -369,7 +369,7 @@ struct TwoPlaneSampler
         detail::AddToLabel(out,
           glm::dvec3(rgb[0], rgb[1], rgb[2]),
           weight * bw,
-          this->Labels.Data ? *this->Labels.Pixel(view, px, py) : 0);
+          this->Labels.Present() ? *this->Labels.Pixel(view, px, py) : 0);
       });
   }
 };

@@ -606,7 +606,7 @@ std::string vtkDeformationCage::ValidateBoxes(vtkIdList* boxes)
 std::string vtkDeformationCage::ValidateLabels(vtkLightField* lightField)
 {
   const vtkIdType numberOfBoxes = this->GetNumberOfBoxes();
-  if (lightField->GetPass(vtkLightField::LABEL))
+  if (lightField->HasPass(vtkLightField::LABEL))
   {
     // A box moves the rays of its label only (paper Sec. 4), so a label the
     // light field's Label pass never holds is an error.

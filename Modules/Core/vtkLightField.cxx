@@ -7,6 +7,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLightFieldTexelSource.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -41,10 +42,12 @@ vtkLightField::~vtkLightField()
   this->SetRig(nullptr);
   this->SetProjectors(nullptr);
   this->SetProjectorMasks(nullptr);
+  this->SetTexelSource(nullptr);
   this->SetProvenance(nullptr);
 }
 
 //------------------------------------------------------------------------------
+vtkCxxSetObjectMacro(vtkLightField, TexelSource, vtkLightFieldTexelSource);
 vtkCxxSetObjectMacro(vtkLightField, Rig, vtkCameraRig);
 vtkCxxSetObjectMacro(vtkLightField, Projectors, vtkCameraRig);
 vtkCxxSetObjectMacro(vtkLightField, ProjectorMasks, vtkImageData);
@@ -149,9 +152,19 @@ vtkDataArray* vtkLightField::GetPass(int pass)
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightField::HasPass(int pass)
+{
+  return this->GetPass(pass) || (this->TexelSource && this->TexelSource->HasPass(pass));
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightField::HasLabel(int label)
 {
   vtkDataArray* labels = this->GetPass(LABEL);
+  if (!labels && this->TexelSource && this->TexelSource->HasPass(LABEL))
+  {
+    return label >= 0 && label <= 255 && this->TexelSource->HasLabel(label);
+  }
   if (!labels || label < 0 || label > 255)
   {
     return false;
@@ -230,6 +243,7 @@ void vtkLightField::Initialize()
   vtkNew<vtkCameraRig> projectors;
   this->SetProjectors(projectors);
   this->SetProjectorMasks(nullptr);
+  this->SetTexelSource(nullptr);
   this->SetProvenance(nullptr);
 }
 
@@ -242,6 +256,7 @@ void vtkLightField::ShallowCopy(vtkDataObject* source)
     this->SetRig(lightField->GetRig());
     this->SetProjectors(lightField->GetProjectors());
     this->SetProjectorMasks(lightField->GetProjectorMasks());
+    this->SetTexelSource(lightField->GetTexelSource());
     this->SetProvenance(lightField->GetProvenance());
   }
 }
@@ -265,6 +280,7 @@ void vtkLightField::DeepCopy(vtkDataObject* source)
       masks->DeepCopy(lightField->GetProjectorMasks());
     }
     this->SetProjectorMasks(masks);
+    this->SetTexelSource(lightField->GetTexelSource());
     this->SetProvenance(lightField->GetProvenance());
   }
 }
@@ -288,9 +304,9 @@ void vtkLightField::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Passes:";
   for (int pass = 0; pass < NUMBER_OF_PASSES; ++pass)
   {
-    if (this->GetPass(pass))
+    if (this->HasPass(pass))
     {
-      os << " " << PassNames[pass];
+      os << " " << PassNames[pass] << (this->GetPass(pass) ? "" : " (texel source)");
     }
   }
   os << "\n";

@@ -46,6 +46,7 @@ class vtkCameraRig;
 class vtkDataArray;
 class vtkInformation;
 class vtkInformationVector;
+class vtkLightFieldTexelSource;
 class vtkUnsignedCharArray;
 
 class LFDCORE_EXPORT vtkLightField : public vtkImageData
@@ -113,11 +114,17 @@ public:
 
   /**
    * Whether the Label pass holds `label` anywhere (false without a Label
-   * pass). The scan is cached until the pass array is replaced or
-   * modified: after editing its values in place, call its Modified(), as
+   * pass; asked of the texel source when the pass is not in memory). The scan is cached until the
+   * pass array is replaced or modified: after editing its values in place, call its Modified(), as
    * for vtkDataArray::GetRange().
    */
   bool HasLabel(int label);
+
+  /**
+   * Whether the light field holds `pass`: its array in memory, or its
+   * texels through the texel source (a light field larger than memory).
+   */
+  bool HasPass(int pass);
 
   /**
    * Creates (or replaces) the zero-filled array of a pass, sized to the
@@ -164,6 +171,18 @@ public:
 
   ///@{
   /**
+   * Where the pixels of the passes that are not in memory are read from
+   * (nullptr: every pass is an array). A light field read out of core
+   * (vtkLightFieldReader::SetCacheSize) has no Coaxial and Label arrays;
+   * vtkLightFieldRenderer samples them through this source. Copies, deep
+   * or shallow, share it (it is read-only).
+   */
+  virtual void SetTexelSource(vtkLightFieldTexelSource* source);
+  vtkGetObjectMacro(TexelSource, vtkLightFieldTexelSource);
+  ///@}
+
+  ///@{
+  /**
    * Free-form provenance (JSON text), stored in the dataset manifest.
    */
   vtkSetStringMacro(Provenance);
@@ -201,6 +220,7 @@ protected:
   vtkCameraRig* Rig = nullptr;
   vtkCameraRig* Projectors = nullptr;
   vtkImageData* ProjectorMasks = nullptr;
+  vtkLightFieldTexelSource* TexelSource = nullptr;
   char* Provenance = nullptr;
 
   // The labels the Label pass holds (index = label), for the array and

@@ -6,6 +6,8 @@
 #include "vtkType.h"
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -161,6 +163,8 @@ bool ReadImageHeader(const std::string& path, ImageHeader& header, std::string& 
   header.Width = spec.width;
   header.Height = spec.height;
   header.Channels = spec.nchannels;
+  header.TileWidth = spec.tile_width;
+  header.TileHeight = spec.tile_height;
   switch (spec.format.basetype)
   {
     case OIIO::TypeDesc::UINT8:
@@ -323,6 +327,79 @@ bool WriteImagePixels(const std::string& path,
   {
     const std::vector<unsigned char>& bytes = encoded.buffer();
     return WriteFileContents(path, bytes.data(), bytes.size(), error);
+  }
+  return true;
+}
+//------------------------------------------------------------------------------
+bool WriteTiledImagePixels(const std::string& path,
+  int width,
+  int height,
+  int channels,
+  int scalarType,
+  const void* data,
+  int tileSize,
+  std::string& error)
+{
+  const OIIO::TypeDesc type = ToTypeDesc(scalarType);
+  if (type == OIIO::TypeDesc::UNKNOWN)
+  {
+    error = "unsupported scalar type (use unsigned char, unsigned short or float)";
+    return false;
+  }
+  auto output = OIIO::ImageOutput::create("tif");
+  if (!output)
+  {
+    error = LastOIIOError("no TIFF writer");
+    return false;
+  }
+  OIIO::ImageSpec spec(width, height, channels, type);
+  spec.tile_width = tileSize;
+  spec.tile_height = tileSize;
+  spec.tile_depth = 1;
+  spec.attribute("compression", "zip");
+  // TIFF has no MIP levels of its own: they are subimages of halving size,
+  // which OpenImageIO reads as MIP levels when the file says it is a texture.
+  spec.attribute("textureformat", "Plain Texture");
+  OIIO::ImageBuf level(spec);
+  const OIIO::stride_t pixelBytes = static_cast<OIIO::stride_t>(type.size()) * channels;
+  const OIIO::stride_t rowBytes = pixelBytes * width;
+  const char* last = static_cast<const char*>(data) + rowBytes * (height - 1);
+  level.set_pixels(level.roi(), type, last, pixelBytes, -rowBytes);
+  // Labels and depths are categorical or discontinuous: their coarser
+  // levels take one pixel of the finer one, never a blend.
+  const bool filtered = channels == 3;
+  OIIO::ImageOutput::OpenMode mode = OIIO::ImageOutput::Create;
+  OIIO::ImageSpec levelSpec = spec;
+  while (true)
+  {
+    levelSpec.width = levelSpec.full_width = level.spec().width;
+    levelSpec.height = levelSpec.full_height = level.spec().height;
+    if (!output->open(path, levelSpec, mode) ||
+      !output->write_image(level.spec().format, level.localpixels()))
+    {
+      error = OneLine(output->geterror(), "cannot write the tiled image");
+      return false;
+    }
+    const int w = level.spec().width;
+    const int h = level.spec().height;
+    if (w == 1 && h == 1)
+    {
+      break;
+    }
+    const OIIO::ROI coarser(0, std::max(1, w / 2), 0, std::max(1, h / 2), 0, 1, 0, channels);
+    level = filtered ? OIIO::ImageBufAlgo::resize(level, "box", 0.0f, coarser)
+                     : OIIO::ImageBufAlgo::resample(level, false, coarser);
+    if (level.has_error())
+    {
+      error = OneLine(level.geterror(), "cannot compute a MIP level");
+      return false;
+    }
+    mode = OIIO::ImageOutput::AppendSubimage;
+  }
+  if (!output->close())
+  {
+    error = OneLine(output->geterror(), "cannot write the tiled image");
+    return false;
   }
   return true;
 }

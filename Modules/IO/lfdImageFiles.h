@@ -28,6 +28,8 @@ struct ImageHeader
   int Height = 0;
   int Channels = 0;
   int ScalarType = 0;
+  int TileWidth = 0; // 0: stored in scanlines, not tiles
+  int TileHeight = 0;
 };
 
 /**
@@ -90,6 +92,22 @@ bool WriteImagePixels(const std::string& path,
   int channels,
   int scalarType,
   const void* data,
+  std::string& error);
+
+/**
+ * WriteImagePixels() to a tiled, MIP-mapped TIFF (`tileSize` x `tileSize`
+ * tiles, zip compression, every level down to 1x1): the file an image
+ * cache reads tile by tile. Colour levels (3 channels) are box-filtered;
+ * one-channel passes (labels, depth, confidence) are subsampled, never
+ * averaged. Level 0 holds `data` exactly.
+ */
+bool WriteTiledImagePixels(const std::string& path,
+  int width,
+  int height,
+  int channels,
+  int scalarType,
+  const void* data,
+  int tileSize,
   std::string& error);
 }
 }

@@ -94,14 +94,16 @@ Json ProjectorsToJson(vtkLightField* input, std::vector<ImageFile>& files)
 }
 
 //------------------------------------------------------------------------------
-std::string LightFieldImageName(int pass, int view)
+std::string LightFieldImageName(int pass, int view, bool tiled)
 {
   char name[32];
   std::snprintf(name,
     sizeof(name),
     "view_%04d.%s",
     view,
-    vtkLightField::GetPassScalarType(pass) == VTK_FLOAT ? "exr" : "png");
+    tiled                                                   ? "tif"
+      : vtkLightField::GetPassScalarType(pass) == VTK_FLOAT ? "exr"
+                                                            : "png");
   return LowerCase(vtkLightField::GetPassName(pass)) + "/" + name;
 }
 
@@ -180,7 +182,8 @@ std::string CheckLightFieldInput(vtkLightField* input,
 Json BuildLightFieldManifest(vtkLightField* input,
   const std::vector<int>& passes,
   int views,
-  std::vector<ImageFile>& files)
+  std::vector<ImageFile>& files,
+  bool tiled)
 {
   Json manifest;
   manifest["format"] = "lfd-lightfield";
@@ -194,7 +197,7 @@ Json BuildLightFieldManifest(vtkLightField* input,
     Json names = Json::array();
     for (int i = 0; i < views; ++i)
     {
-      names.push_back(LightFieldImageName(pass, i));
+      names.push_back(LightFieldImageName(pass, i, tiled));
     }
     passMap[LowerCase(vtkLightField::GetPassName(pass))] = names;
   }

@@ -33,8 +33,8 @@ struct ImageFile
 };
 
 /// The file of a pass's view, relative to the dataset directory:
-/// "coaxial/view_0007.png" (Depth: ".exr").
-std::string LightFieldImageName(int pass, int view);
+/// "coaxial/view_0007.png" (Depth: ".exr"; tiled: ".tif" for every pass).
+std::string LightFieldImageName(int pass, int view, bool tiled = false);
 
 /**
  * Validates a light field before anything touches the disk: a size, one
@@ -49,13 +49,15 @@ std::string CheckLightFieldInput(vtkLightField* input,
 
 /**
  * lightfield.json for the first `views` views of a validated light field
- * with `passes`: its rig's first `views` cameras and their images; the
- * image files of the projector masks join `files`.
+ * with `passes`: its rig's first `views` cameras and their images (tiled
+ * TIFF names when `tiled`); the image files of the projector masks join
+ * `files`.
  */
 Json BuildLightFieldManifest(vtkLightField* input,
   const std::vector<int>& passes,
   int views,
-  std::vector<ImageFile>& files);
+  std::vector<ImageFile>& files,
+  bool tiled = false);
 }
 }
 

@@ -12,9 +12,11 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLightFieldImageCache.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -62,6 +64,13 @@ struct Manifest
   bool HasProvenance = false;
   std::string Provenance;
 };
+
+// The passes an out-of-core reader serves through the image cache: the
+// ones the renderer samples per ray.
+bool IsCachedPass(int pass)
+{
+  return pass == vtkLightField::COAXIAL || pass == vtkLightField::LABEL;
+}
 
 std::string LowerCase(const char* text)
 {
@@ -416,7 +425,8 @@ int vtkLightFieldReader::RequestInformation(vtkInformation*,
   int bytesPerPixel = 0;
   for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
   {
-    if (manifest.HasPass[pass] && this->ReadPass[pass])
+    if (manifest.HasPass[pass] && this->ReadPass[pass] &&
+      !(this->CacheSize > 0 && IsCachedPass(pass)))
     {
       bytesPerPixel += vtkLightField::GetPassComponents(pass) *
         vtkDataArray::GetDataTypeSize(vtkLightField::GetPassScalarType(pass));
@@ -502,6 +512,33 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
     {
       return 0;
     }
+    if (this->CacheSize > 0 && !mask && IsCachedPass(image.Pass) && image.Header.TileWidth <= 0)
+    {
+      this->Fail(output,
+        vtkErrorCode::FileFormatError,
+        manifest.Path + ": field \"" + image.Field + "\": image " + *image.Path +
+          ": not tiled, so it cannot be read through the image cache (convert the dataset with "
+          "`lfd tile`)");
+      return 0;
+    }
+  }
+  vtkSmartPointer<vtkLightFieldImageCache> cache;
+  if (this->CacheSize > 0)
+  {
+    cache = vtkSmartPointer<vtkLightFieldImageCache>::New();
+    cache->SetCacheSize(this->CacheSize);
+    for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
+    {
+      if (manifest.HasPass[pass] && this->ReadPass[pass] && IsCachedPass(pass))
+      {
+        cache->SetPassFiles(pass, manifest.Images[pass], manifest.Width, manifest.Height);
+      }
+    }
+    // Only the passes read into memory are left to read.
+    images.erase(std::remove_if(images.begin(),
+                   images.end(),
+                   [](const Image& image) { return image.Pass >= 0 && IsCachedPass(image.Pass); }),
+      images.end());
   }
 
   output->SetLayout(manifest.Width, manifest.Height, views);
@@ -522,10 +559,11 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
     mask->SetNumberOfTuples(masks->GetNumberOfPoints());
     masks->GetPointData()->SetScalars(mask);
   }
-  // Every selected pass whole, even when this piece holds none of its views.
+  // Every selected pass read into memory whole, even when this piece holds
+  // none of its views (the cached passes stay on disk).
   for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
   {
-    if (manifest.HasPass[pass] && this->ReadPass[pass])
+    if (manifest.HasPass[pass] && this->ReadPass[pass] && !(cache && IsCachedPass(pass)))
     {
       output->AllocatePass(pass);
     }
@@ -568,6 +606,7 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
     output->SetPalette(palette);
   }
   output->SetRig(rig);
+  output->SetTexelSource(cache);
   output->SetProvenance(manifest.HasProvenance ? manifest.Provenance.c_str() : nullptr);
   this->UpdateProgress(1.0);
   return 1;
@@ -642,6 +681,7 @@ void vtkLightFieldReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "CacheSize: " << this->CacheSize << "\n";
   os << indent << "ReadPass:";
   for (int pass = 0; pass < vtkLightField::NUMBER_OF_PASSES; ++pass)
   {

@@ -31,7 +31,14 @@
  * vtkLightFieldErrorObserver observing the reader records both quietly and
  * gives back the reader's one line.
  *
- * @sa vtkLightFieldWriter vtkLightField vtkMiddleburyImporter
+ * **Out of core.** With a CacheSize (bytes, > 0) the Coaxial and Label
+ * passes are not read into memory: the output has no arrays for them but a
+ * vtkLightFieldImageCache of that budget (vtkLightField::GetTexelSource())
+ * that the renderer reads tile by tile; the other selected passes are read
+ * as usual. Their images must then be tiled (`lfd tile`,
+ * vtkLightFieldTiler): an untiled one is an error naming it.
+ *
+ * @sa vtkLightFieldWriter vtkLightField vtkMiddleburyImporter vtkLightFieldImageCache
  */
 #ifndef vtkLightFieldReader_h
 #define vtkLightFieldReader_h
@@ -90,7 +97,8 @@ public:
    * other pieces left zero, and only the images read are checked: the
    * processes of `mpirun -np N lfd animate` each read one piece and
    * broadcast it to the others, so the decoding is split N ways. The
-   * projector masks are read whole by every piece.
+   * projector masks are read whole by every piece, and so are the passes
+   * served by the image cache (CacheSize): each process reads their tiles.
    */
   vtkSetClampMacro(Piece, int, 0, VTK_INT_MAX);
   vtkGetMacro(Piece, int);
@@ -104,6 +112,16 @@ public:
    * most one, empty for a piece >= `pieces`.
    */
   static void GetPieceViews(int views, int piece, int pieces, int range[2]);
+
+  ///@{
+  /**
+   * 0 (default): every selected pass is read into memory. > 0: the Coaxial
+   * and Label passes are served out of core by an image cache of this many
+   * bytes (see Out of core above).
+   */
+  vtkSetClampMacro(CacheSize, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
+  vtkGetMacro(CacheSize, vtkTypeInt64);
+  ///@}
 
 protected:
   vtkLightFieldReader();
@@ -140,6 +158,7 @@ protected:
   std::string DescribeFailure(const std::string& problem) override;
 
   char* FileName = nullptr;
+  vtkTypeInt64 CacheSize = 0;
   bool ReadPass[vtkLightField::NUMBER_OF_PASSES];
   int Piece = 0;
   int NumberOfPieces = 1;

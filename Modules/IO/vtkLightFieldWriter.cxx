@@ -38,6 +38,7 @@ struct WriteFailure
 WriteFailure WriteDataset(const std::string& directory,
   const Json& manifest,
   const std::vector<ImageFile>& files,
+  int tileSize,
   const std::function<void(double)>& progress)
 {
   std::error_code ec;
@@ -67,13 +68,25 @@ WriteFailure WriteDataset(const std::string& directory,
     const vtkIdType sliceValues =
       static_cast<vtkIdType>(file.Width) * file.Height * file.Array->GetNumberOfComponents();
     const std::string image = (fs::path(temporary) / file.Name).string();
-    if (!lfd::io::WriteImagePixels(image,
-          file.Width,
-          file.Height,
-          file.Array->GetNumberOfComponents(),
-          file.Array->GetDataType(),
-          file.Array->GetVoidPointer(sliceValues * file.Slice),
-          error))
+    const void* pixels = file.Array->GetVoidPointer(sliceValues * file.Slice);
+    const int components = file.Array->GetNumberOfComponents();
+    // Projector masks stay PNG: only the views' passes are read tile by tile.
+    const bool tiled = tileSize > 0 && file.Name.compare(0, 11, "projectors/") != 0;
+    if (!(tiled ? lfd::io::WriteTiledImagePixels(image,
+                    file.Width,
+                    file.Height,
+                    components,
+                    file.Array->GetDataType(),
+                    pixels,
+                    tileSize,
+                    error)
+                : lfd::io::WriteImagePixels(image,
+                    file.Width,
+                    file.Height,
+                    components,
+                    file.Array->GetDataType(),
+                    pixels,
+                    error)))
     {
       lfd::io::RemoveQuietly(temporary);
       return { vtkErrorCode::OutOfDiskSpaceError, directory + ": " + file.Name + ": " + error };
@@ -135,6 +148,14 @@ void vtkLightFieldWriter::WriteData()
   }
 
   // Validate everything before touching the disk.
+  if (this->TileSize != 0 &&
+    (this->TileSize < 16 || this->TileSize > 4096 || this->TileSize % 16 != 0))
+  {
+    this->Fail(vtkErrorCode::UnknownError,
+      directory + ": tile size " + std::to_string(this->TileSize) +
+        ": expected a multiple of 16 from 16 to 4096");
+    return;
+  }
   std::vector<int> passes;
   const std::string invalid = lfd::io::CheckLightFieldInput(input, directory, passes);
   if (!invalid.empty())
@@ -147,7 +168,7 @@ void vtkLightFieldWriter::WriteData()
   {
     for (int i = 0; i < input->GetNumberOfViews(); ++i)
     {
-      files.push_back({ lfd::io::LightFieldImageName(pass, i),
+      files.push_back({ lfd::io::LightFieldImageName(pass, i, this->TileSize > 0),
         input->GetPass(pass),
         i,
         input->GetWidth(),
@@ -167,10 +188,13 @@ void vtkLightFieldWriter::WriteData()
       return;
     }
   }
-  const Json manifest =
-    lfd::io::BuildLightFieldManifest(input, passes, input->GetNumberOfViews(), files);
-  const WriteFailure failure =
-    WriteDataset(directory, manifest, files, [this](double done) { this->UpdateProgress(done); });
+  const Json manifest = lfd::io::BuildLightFieldManifest(
+    input, passes, input->GetNumberOfViews(), files, this->TileSize > 0);
+  const WriteFailure failure = WriteDataset(directory,
+    manifest,
+    files,
+    this->TileSize,
+    [this](double done) { this->UpdateProgress(done); });
   if (failure.Code != 0)
   {
     this->Fail(failure.Code, failure.Message);
@@ -214,4 +238,5 @@ void vtkLightFieldWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Directory: " << (this->Directory ? this->Directory : "(none)") << "\n";
+  os << indent << "TileSize: " << this->TileSize << "\n";
 }

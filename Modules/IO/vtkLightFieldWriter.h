@@ -12,6 +12,12 @@
  * that is valid JSON is stored as JSON, any other text as a JSON string. See
  * Data/README.md for the format.
  *
+ * With a TileSize every pass is written as a tiled, MIP-mapped TIFF instead
+ * (`coaxial/view_0000.tif`, TileSize x TileSize tiles, zip): the dataset a
+ * vtkLightFieldReader reads like any other, and also out of core, tile by
+ * tile through an image cache (vtkLightFieldReader::SetCacheSize). One file
+ * per view keeps the manifest's one image per view per pass.
+ *
  * Writing is atomic: everything goes to a temporary sibling directory,
  * `Directory.tmp-<pid>`, which is renamed onto Directory only when complete.
  * An existing Directory is replaced only after success, and only when it is
@@ -48,6 +54,16 @@ public:
   vtkGetStringMacro(Directory);
   ///@}
 
+  ///@{
+  /**
+   * 0 (default): PNG and EXR images. A multiple of 16 from 16 to 4096 (TIFF
+   * tiles are multiples of 16): tiled, MIP-mapped TIFF images with square
+   * tiles of this size; any other value is an error when writing.
+   */
+  vtkSetMacro(TileSize, int);
+  vtkGetMacro(TileSize, int);
+  ///@}
+
   /**
    * The input light field.
    */
@@ -70,6 +86,7 @@ protected:
   void WriteData() override;
 
   char* Directory = nullptr;
+  int TileSize = 0;
 
 private:
   vtkLightFieldWriter(const vtkLightFieldWriter&) = delete;

@@ -19,6 +19,7 @@
 #include "vtkInformationVector.h"
 #include "vtkLightField.h"
 #include "vtkLightFieldErrorObserver.h"
+#include "vtkLightFieldTexelSource.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -216,21 +217,41 @@ struct RenderRows
   }
 };
 
+/// The uint8 pass `pass` of `lightField` with `components` components as the
+/// samplers read it: its array, or else its texels through the light
+/// field's texel source (out of core); not Present() when it has neither.
+lfd::ViewStack<std::uint8_t> BytePass(vtkLightField* lightField, int pass, int components)
+{
+  lfd::ViewStack<std::uint8_t> stack{
+    nullptr, lightField->GetWidth(), lightField->GetHeight(), components
+  };
+  auto* array = vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(pass));
+  if (array && array->GetNumberOfComponents() == components)
+  {
+    stack.Data = array->GetPointer(0);
+  }
+  else if (vtkLightFieldTexelSource* source = lightField->GetTexelSource())
+  {
+    stack.Source = source->GetTexels(pass);
+  }
+  return stack;
+}
+
 /// The input's RGB uint8 Coaxial pass when the input can be rendered (its
-/// rig has a camera per view); nullptr after an error on `self`.
-vtkUnsignedCharArray* RenderableRadiance(vtkObject* self, vtkLightField* input)
+/// rig has a camera per view); not Present() after an error on `self`.
+lfd::ViewStack<std::uint8_t> RenderableRadiance(vtkObject* self, vtkLightField* input)
 {
   if (!input)
   {
     vtkErrorWithObjectMacro(self, "The input is not a vtkLightField.");
-    return nullptr;
+    return {};
   }
-  auto* radiance = vtkUnsignedCharArray::SafeDownCast(input->GetPass(vtkLightField::COAXIAL));
-  if (!radiance || radiance->GetNumberOfComponents() != 3)
+  const lfd::ViewStack<std::uint8_t> radiance = BytePass(input, vtkLightField::COAXIAL, 3);
+  if (!radiance.Present())
   {
     vtkErrorWithObjectMacro(
       self, "The light field has no RGB uint8 'Coaxial' pass to render from.");
-    return nullptr;
+    return {};
   }
   vtkCameraRig* rig = input->GetRig();
   const int views = input->GetNumberOfViews();
@@ -239,7 +260,7 @@ vtkUnsignedCharArray* RenderableRadiance(vtkObject* self, vtkLightField* input)
     vtkErrorWithObjectMacro(self,
       "The light field has " << views << " views but its rig has "
                              << (rig ? rig->GetNumberOfViews() : 0) << " cameras.");
-    return nullptr;
+    return {};
   }
   return radiance;
 }
@@ -462,8 +483,8 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   vtkInformationVector* outputVector)
 {
   vtkLightField* input = vtkLightField::GetData(inputVector[0]);
-  vtkUnsignedCharArray* radiance = RenderableRadiance(this, input);
-  if (!radiance)
+  const lfd::ViewStack<std::uint8_t> radiance = RenderableRadiance(this, input);
+  if (!radiance.Present())
   {
     return 0;
   }
@@ -518,13 +539,13 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   lfd::LightFieldSampler sampler;
   sampler.Layout = &layout;
   sampler.Cameras = cameras.data();
-  sampler.Radiance = { radiance->GetPointer(0), input->GetWidth(), input->GetHeight(), 3 };
-  auto* labels = vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::LABEL));
+  sampler.Radiance = radiance;
+  const lfd::ViewStack<std::uint8_t> labels = BytePass(lightField, vtkLightField::LABEL, 1);
   lfd::RenderViewSettings settings;
-  settings.UseLabels = this->UseLabels && labels;
+  settings.UseLabels = this->UseLabels && labels.Present();
   if (settings.UseLabels)
   {
-    sampler.Labels = { labels->GetPointer(0), input->GetWidth(), input->GetHeight(), 1 };
+    sampler.Labels = labels;
   }
   sampler.FocalDistance = this->FocalDistance;
   vtkDataArray* depth = input->GetPass(vtkLightField::DEPTH);
@@ -547,10 +568,15 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.DepthTiles = this->ProxyTiles.get();
     sampler.ProxyViews = this->ProxyViews;
   }
-  if (settings.UseLabels && plane.Empty() && !sampler.Depth.Data)
+  // The hull reads the Label pass whole: not for labels served by an image cache.
+  if (settings.UseLabels && plane.Empty() && !sampler.Depth.Data && labels.Data)
   {
-    sampler.Hull =
-      &this->GetLabelHull(labels, input->GetWidth(), input->GetHeight(), rig, layout, cameras);
+    sampler.Hull = &this->GetLabelHull(lightField->GetPass(vtkLightField::LABEL),
+      input->GetWidth(),
+      input->GetHeight(),
+      rig,
+      layout,
+      cameras);
   }
   settings.WidenedSearch = this->WidenedSearch > 0;
   settings.AntiAliasing = this->AntiAliasing;
@@ -694,7 +720,7 @@ vtkLightField* vtkLightFieldRenderer::LightFieldOfCage(vtkLightField* input,
   vtkDeformationCage* cage,
   int label)
 {
-  if (!this->UseLabels || label == 0 || input->GetPass(vtkLightField::LABEL))
+  if (!this->UseLabels || label == 0 || input->HasPass(vtkLightField::LABEL))
   {
     return input;
   }

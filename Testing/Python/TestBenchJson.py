@@ -32,15 +32,17 @@ for row in rows:
     tables.setdefault(row["table"], []).append(row)
 # 2 sizes: the reference loop, 2 objects x (undeformed, deformed); at 128
 # (the largest size): the fish on its proxy (undeformed, deformed), 2
-# light-field sizes, 2 cages, the two-plane fish (4 nearest, aperture).
+# light-field sizes, 2 cages, the two-plane fish (4 nearest, aperture), the
+# fish out of core (caches of 1/4, 1/2 and 1x its bytes).
 t.check({k: len(v) for k, v in tables.items()}
         == {"reference": 2, "render": 8, "proxy": 2, "light-field size": 2, "cage size": 2,
-            "two-plane": 2},
+            "two-plane": 2, "out of core": 3},
         "the rows of each table", {k: len(v) for k, v in tables.items()})
 common = {"table", "name", "size", "pixels", "views", "image_size", "light_field_bytes", "boxes",
           "ms_per_frame", "rays_per_second", "vs_reference", "peak_rss_bytes"}
 extra = {"reference": set(), "light-field size": set(), "cage size": {"vs_3_boxes", "no_accel_ms"},
-         "proxy": {"vs_plane"}, "two-plane": set()}
+         "proxy": {"vs_plane"}, "two-plane": set(),
+         "out of core": {"vs_in_memory", "cache_mb", "tiles_read", "identical"}}
 for row in rows:
     keys = set(row) - common
     wanted = extra.get(row["table"], {"vs_rest"} if row["boxes"] else set())
@@ -62,7 +64,10 @@ t.check([r["views"] for r in tables["light-field size"]] == [12, 24]
         "light-field sizes: views, resolution and bytes (RGB + label)", tables["light-field size"])
 t.check([r["boxes"] for r in tables["cage size"]] == [1, 3]
         and tables["cage size"][1]["vs_3_boxes"] == 1.0, "cage sizes 1 and 3", tables["cage size"])
+t.check([r["identical"] for r in tables["out of core"]] == [1, 1, 1]
+        and all(r["tiles_read"] > 0 for r in tables["out of core"]),
+        "out of core: every frame equals the in-memory one, tiles were read", tables["out of core"])
 for table in ("reference loop", "light-field size", "cage size", "focal surface: proxy",
-              "two-plane fish"):
+              "two-plane fish", "out of core"):
     t.check(table in out, f"the printed table '{table}'", out[:200])
 t.finish()

@@ -77,6 +77,14 @@ CASES = [
     (["demo", "--size", "0", "--out", "n"], 1, "--size 0: expected an integer from 1 to 16384"),
     (["eval", "loo", "x.lf", "--stride", "0"], 1, "--stride 0: expected an integer >= 1"),
     (["render", "s.json", "--time", "inf", "--out", "n.png"], 1, "--time inf: expected a number"),
+    (["render", "s.json", "--cache-size", "12X", "--out", "n.png"], 1,
+     "--cache-size 12X: expected a size of at least 1M: an integer with an optional unit K, M or G "
+     "(e.g. 512M)"),
+    (["animate", "s.json", "--cache-size", "512K", "--out", "n"], 1,
+     "--cache-size 512K: expected a size of at least 1M: an integer with an optional unit K, M or G "
+     "(e.g. 512M)"),
+    (["tile", "x.lf", "--tile-size", "8", "--out", "t.lf"], 1,
+     "--tile-size 8: expected an integer from 16 to 4096"),
 ]
 # Without an X display, the commands that open an OpenGL window say so.
 for args in (["synth", "--out", "n.lf"], ["eval", "groundtruth", "s.json", "--mesh", "fish"]):
@@ -186,6 +194,33 @@ code, out, err = lfd("animate", good, "--frames", "3", "--out", anim)
 t.check(code == 0 and sorted(f for f in listing(anim) if f.endswith(".png")) ==
         ["frame_0000.png", "frame_0001.png", "frame_0002.png"] and leftovers() == [],
         "a successful animate replaces the folder", sorted(listing(anim)))
+# Out of core (issue 14): an untiled dataset is refused naming its first
+# image; `lfd tile` makes one the cache reads, and the render equals the
+# in-memory one byte for byte; a missing tile file is named.
+expect(["render", good, "--cache-size", "16M", "--out", "n.png"], 1,
+       f"lfd: error: {lf}/lightfield.json: field \"passes.coaxial[0]\": image {lf}/coaxial/view_0000.png: "
+       "not tiled, so it cannot be read through the image cache (convert the dataset with `lfd tile`)")
+tiled = os.path.join(WORK, "tiled.lf")
+code, out, err = lfd("tile", lf, "--tile-size", "16", "--out", tiled)
+t.check(code == 0 and os.path.isfile(os.path.join(tiled, "coaxial", "view_0000.tif")),
+        "lfd tile writes tiled TIFF views", err.strip())
+with open(good) as f:
+    tiled_scene = json.load(f)
+tiled_scene["lightfield"] = "tiled.lf"
+tiled_json = os.path.join(WORK, "tiled.json")
+with open(tiled_json, "w") as f:
+    json.dump(tiled_scene, f)
+renders = {}
+for name, extra in (("memory.png", []), ("cached.png", ["--cache-size", "16M"])):
+    code, out, err = lfd("render", tiled_json, *extra, "--out", os.path.join(WORK, name))
+    renders[name] = open(os.path.join(WORK, name), "rb").read() if code == 0 else name
+t.check(renders["memory.png"] == renders["cached.png"],
+        "render --cache-size 16M equals the in-memory render byte for byte", err.strip())
+os.remove(os.path.join(tiled, "coaxial", "view_0003.tif"))
+expect(["render", tiled_json, "--cache-size", "16M", "--out", "n.png"], 1,
+       f"lfd: error: {tiled}/lightfield.json: field \"passes.coaxial[3]\": image "
+       f"{tiled}/coaxial/view_0003.tif: file not found")
+
 mine = os.path.join(WORK, "mine")
 os.makedirs(mine)
 with open(os.path.join(mine, "notes.txt"), "w") as f:

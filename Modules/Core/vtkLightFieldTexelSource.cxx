@@ -1,0 +1,7 @@
+#include "vtkLightFieldTexelSource.h"
+
+//------------------------------------------------------------------------------
+void vtkLightFieldTexelSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}
