@@ -403,6 +403,9 @@ struct LabelHull
   glm::dvec3 CellSize{ 1.0 }; ///< per axis
   /// Per sector, Cells^3 flags (1: a label cone touches the voxel); empty: no grid.
   std::vector<std::uint8_t> Marks;
+  /// Cells^3 flags, the union of the sectors' (Unite()): a focal point in an
+  /// unmarked voxel is skipped before the ray's azimuth is known.
+  std::vector<std::uint8_t> Union;
 
   /**
    * Sizes the grid around the rig's axis: radially the half-width that the
@@ -484,10 +487,24 @@ struct LabelHull
   }
 
   /**
-   * False when the ray entering the rig at `azimuth`, focused at `x`, has
-   * no labelled sample for sure; true when it may have one.
+   * Fills Union from the sectors' marks; call once every sector is marked
+   * (until then, and without a grid, Union is empty and unused).
    */
-  bool MayMeetPart(double azimuth, const glm::dvec3& x, const RingLayout& layout) const
+  void Unite()
+  {
+    const std::size_t cells = static_cast<std::size_t>(Cells) * Cells * Cells;
+    this->Union.assign(this->Marks.empty() ? 0 : cells, 0);
+    for (std::size_t i = 0; i < this->Marks.size(); ++i)
+    {
+      this->Union[i % cells] |= this->Marks[i];
+    }
+  }
+
+  /**
+   * Index of the voxel (within one sector's grid) holding the focal point
+   * `x`; -1 outside the grid, where every ray may meet a part.
+   */
+  long Cell(const glm::dvec3& x, const RingLayout& layout) const
   {
     const glm::dvec3 v = x - layout.Cyl.Center;
     const glm::dvec3 q =
@@ -497,13 +514,26 @@ struct LabelHull
       this->CellSize;
     if (!(q.x >= 0.0 && q.y >= 0.0 && q.z >= 0.0 && q.x < Cells && q.y < Cells && q.z < Cells))
     {
+      return -1;
+    }
+    return (static_cast<long>(q.z) * Cells + static_cast<long>(q.y)) * Cells +
+      static_cast<long>(q.x);
+  }
+
+  /**
+   * False when the ray entering the rig at `azimuth`, focused in voxel
+   * `cell` (Cell()), has no labelled sample for sure; true when it may have
+   * one.
+   */
+  bool MayMeetPart(double azimuth, long cell) const
+  {
+    if (cell < 0)
+    {
       return true;
     }
     const int sector = std::min(static_cast<int>(azimuth * (Sectors / TwoPi)), Sectors - 1);
-    const std::size_t cell =
-      (static_cast<std::size_t>(sector) * Cells + static_cast<int>(q.z)) * Cells * Cells +
-      static_cast<std::size_t>(q.y) * Cells + static_cast<std::size_t>(q.x);
-    return this->Marks[cell] != 0;
+    return this->Marks[static_cast<std::size_t>(sector) * Cells * Cells * Cells +
+             static_cast<std::size_t>(cell)] != 0;
   }
 
 private:
@@ -751,6 +781,16 @@ struct LightFieldSampler
   {
     out.Count = 0;
     out.Surface = std::numeric_limits<double>::quiet_NaN();
+    const glm::dvec3 x = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
+    const bool hull = !this->Depth.Data && this->Hull && !this->Hull->Marks.empty();
+    const long cell = hull ? this->Hull->Cell(x, *this->Layout) : -1;
+    // Most skipped rays are unmarked in every sector: they skip the cylinder
+    // entry and the atan2 of the azimuth too (a ray that misses the cylinder
+    // returns false as well).
+    if (cell >= 0 && !this->Hull->Union.empty() && !this->Hull->Union[cell])
+    {
+      return false;
+    }
     double s;
     if (!IntersectCylinderEntry(this->Layout->Cyl, o, d, s))
     {
@@ -758,9 +798,7 @@ struct LightFieldSampler
     }
     double azimuth, height;
     this->Layout->Locate(o + s * d, azimuth, height);
-    const glm::dvec3 x = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
-    if (!this->Depth.Data && this->Hull && !this->Hull->Marks.empty() &&
-      !this->Hull->MayMeetPart(azimuth, x, *this->Layout))
+    if (hull && !this->Hull->MayMeetPart(azimuth, cell))
     {
       return false;
     }

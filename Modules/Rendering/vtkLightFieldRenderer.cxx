@@ -707,6 +707,7 @@ const lfd::LabelHull& vtkLightFieldRenderer::GetLabelHull(vtkDataArray* labels,
             hull.MarkSector(static_cast<int>(sector), layout, cameras.data(), rects);
           }
         });
+      hull.Unite();
     }
     this->HullArray = labels;
     this->HullExcludedViews = this->ExcludedViews;
