@@ -36,9 +36,14 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
+# A unity build (CMake batches each library's sources into a few translation
+# units, so VTK's headers are parsed once per batch, not once per file) halves
+# a fresh build's CPU time: 633 s against 1505 s on the 2 cores here. Work
+# on the code in a build configured without it, where a change rebuilds one file.
 echo "== configuring in $build"
 cmake -S "$here" -B "$build" -G Ninja \
   -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_UNITY_BUILD=ON \
   -DPython3_EXECUTABLE=/usr/bin/python3 \
   -DBUILD_TESTING=ON
 echo "== building"
