@@ -221,7 +221,8 @@ vtkSmartPointer<vtkLightField> ReadSceneLightField(vtkLightFieldSceneLogic* scen
   {
     passes = Passes::RenderedOnPlane;
   }
-  return ReadLightField(scene->GetScene()->GetResolvedLightFieldPath(), passes, cacheBytes, piece, pieces);
+  return ReadLightField(
+    scene->GetScene()->GetResolvedLightFieldPath(), passes, cacheBytes, piece, pieces);
 }
 
 void CheckTexelSource(vtkLightField* lightField)

@@ -236,11 +236,8 @@ void Animate(const std::string& scenePath,
       {
         Fail("scene '" + scenePath + "' needs at least 2 keyframes to animate");
       }
-      lightField = ReadSceneLightField(scene,
-        Passes::Rendered,
-        cacheBytes,
-        ProcessGroup::GetRank(),
-        ProcessGroup::GetSize());
+      lightField = ReadSceneLightField(
+        scene, Passes::Rendered, cacheBytes, ProcessGroup::GetRank(), ProcessGroup::GetSize());
       if (root)
       {
         folder =
@@ -472,7 +469,8 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
   AddRenderOverrideOptions(animateCommand, animate->Overrides);
   numbers.AddByteSize(animateCommand, "--cache-size", animate->CacheSize, CacheSizeHelp);
   commands.push_back({ animateCommand,
-    [animate] {
+    [animate]
+    {
       Animate(animate->Scene,
         animate->Frames,
         animate->Out,

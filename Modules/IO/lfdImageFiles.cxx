@@ -330,6 +330,7 @@ bool WriteImagePixels(const std::string& path,
   }
   return true;
 }
+
 //------------------------------------------------------------------------------
 bool WriteTiledImagePixels(const std::string& path,
   int width,
