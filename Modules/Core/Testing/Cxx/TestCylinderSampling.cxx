@@ -221,7 +221,12 @@ void LabelHullSkips()
   {
     const double phi = uniform(0.0, lfd::TwoPi);
     const glm::dvec3 o(6.0 * std::sin(phi), uniform(-2.0, 2.0), 6.0 * std::cos(phi));
-    const glm::dvec3 target(uniform(-1.5, 1.5), uniform(-1.5, 1.5), uniform(-1.5, 1.5));
+    // Drawn one by one: the evaluation order of a constructor's arguments is
+    // unspecified (gcc and clang differ), and the counts below must not be.
+    const double tz = uniform(-1.5, 1.5);
+    const double ty = uniform(-1.5, 1.5);
+    const double tx = uniform(-1.5, 1.5);
+    const glm::dvec3 target(tx, ty, tz);
     lfd::RaySamples plain, skipping;
     const long cell =
       hull.Cell(lfd::FocalPoint(layout.Cyl, o, target - o, sampler.FocalDistance), layout);
