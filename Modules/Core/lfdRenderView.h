@@ -469,6 +469,8 @@ struct FrameCage
       }
     }
     std::sort(scratch.Entries.begin(), scratch.Entries.end());
+    // NextSegment's intervals never move: ShadeSegments holds one back.
+    scratch.Segments.reserve(scratch.Entries.size() * MaxWarpedSegments);
     return scratch.Entries.size();
   }
 
@@ -645,6 +647,14 @@ struct RenderViewSettings
   bool AntiAliasing = true;
   /// The colour of background rays (0..255), blended behind soft edges.
   glm::dvec3 Background{ 0.0 };
+  /**
+   * The lookup samples every line at its focal plane or cylinder (no proxy:
+   * Lookup::FocalParameter is where the cameras are sampled, known before
+   * the lookup), so a run of a moved part's intervals is looked up only
+   * from the one that holds the focal point (see ShadeSegments). Off: every
+   * interval is looked up.
+   */
+  bool FocalBeforeLookup = false;
 };
 
 /// The labels of `boxes`, as RenderViewSettings::Owned.
@@ -842,15 +852,137 @@ inline void AcceptMatch(const DeferredMatch& match,
 }
 
 /**
- * The intervals, front to back (`next(view)` hands them out, nullptr after
- * the last), composited by label coverage (RenderViewSettings::AntiAliasing)
- * into `composite`; the first whose warped ray shows its box's label
+ * One ray's walk through its intervals, front to back (ShadeSegments):
+ * composited by label coverage (RenderViewSettings::AntiAliasing) into
+ * Composite; the first interval whose warped ray shows its box's label
  * (Sec. 6; an interval of a moved box whose focal point lies beyond its
  * exit is held back for the next ones of its part, see DeferredMatch) gives
- * `result` its label and depth. Without anti-aliasing (and in boxes at
- * rest) an interval covers all or nothing, so the first match gives the
- * whole colour. Records what each interval showed in BoxSegment::Seen.
- * True when an interval matched.
+ * Result its label and depth. Without anti-aliasing (and in boxes at rest)
+ * an interval covers all or nothing, so the first match gives the whole
+ * colour.
+ */
+template<typename Lookup>
+struct SegmentWalk
+{
+  const std::vector<RenderBox>& Boxes;
+  const Lookup& Light;
+  const RenderViewSettings& Settings;
+  ViewRayLook<Lookup>& View;
+  ViewSample& Result;
+  CoverageComposite& Composite;
+  RaySamples Samples;
+  bool Matched = false;
+  DeferredMatch Held;
+
+  /// Past the match, only what still shows through is looked up.
+  bool Going() const
+  {
+    return this->Held.Label >= 0 || !this->Matched ||
+      this->Composite.Transmittance > CoverageComposite::Opaque;
+  }
+
+  /**
+   * Whether the lookup of `entry` waits for the next interval
+   * (RenderViewSettings::FocalBeforeLookup): it is an interval of a moved box
+   * whose warped ray's focal point lies beyond its exit.
+   */
+  bool MayDefer(const BoxSegment& entry) const
+  {
+    if (!this->Settings.FocalBeforeLookup || !this->Boxes[entry.Box].Moved)
+    {
+      return false;
+    }
+    const WarpedSegment& segment = entry.Segment;
+    return this->Light.FocalParameter(segment.RestEnter, segment.RestExit - segment.RestEnter) >
+      1.0;
+  }
+
+  /// `next` goes on with the part of `entry` where `entry` leaves off: a
+  /// moved box of the same label, entered where `entry` exits (up to rounding).
+  bool Continues(const BoxSegment& entry, const BoxSegment& next) const
+  {
+    const RenderBox& box = this->Boxes[next.Box];
+    return box.Moved && box.Label == this->Boxes[entry.Box].Label &&
+      next.Segment.TEnter <= entry.Segment.TExit * (1.0 + 1e-9);
+  }
+
+  /// Looks `entry` up and composites it (records what it showed in BoxSegment::Seen).
+  void Shade(BoxSegment& entry)
+  {
+    const RenderBox& box = this->Boxes[entry.Box];
+    if (this->Held.Label >= 0 && box.Label != this->Held.Label)
+    {
+      // Another part: the held interval of the part in front gives the pixel.
+      AcceptMatch(this->Held, this->Composite, this->Result, this->Matched);
+      this->Held.Label = -1;
+      if (this->Composite.Transmittance <= CoverageComposite::Opaque)
+      {
+        return;
+      }
+    }
+    const WarpedSegment& segment = entry.Segment;
+    const RaySamples* seenSamples = &this->Samples;
+    const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
+    if (!box.Moved)
+    {
+      entry.Seen = this->View.Look();
+      seenSamples = &*this->View.Samples;
+    }
+    else
+    {
+      if (glm::dot(direction, direction) <= 0.0 ||
+        !this->Light.Gather(segment.RestEnter, direction, this->Samples))
+      {
+        return;
+      }
+      entry.Seen = VoteLabel(this->Samples);
+    }
+    const bool match = entry.Seen == box.Label;
+    const double alpha = box.Moved && this->Settings.AntiAliasing
+      ? LabelCoverage(*seenSamples, box.Label)
+      : (match ? 1.0 : 0.0);
+    if (alpha <= 0.0)
+    {
+      return;
+    }
+    DeferredMatch candidate{
+      box.Label, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
+    };
+    BlendLabel(*seenSamples, box.Label, candidate.Color);
+    if (!match)
+    {
+      this->Composite.Add(alpha, candidate.Color);
+      return;
+    }
+    const double focal = std::isnan(seenSamples->Surface)
+      ? this->Light.FocalParameter(segment.RestEnter, direction)
+      : seenSamples->Surface;
+    if (box.Moved && focal > 1.0)
+    {
+      this->Held = candidate;
+      return;
+    }
+    this->Held.Label = -1; // this interval of the held part holds its focal point
+    AcceptMatch(candidate, this->Composite, this->Result, this->Matched);
+  }
+};
+
+/**
+ * The intervals, front to back (`next(view)` hands them out, nullptr after
+ * the last; a pointer it returned stays valid for the ray), shaded by
+ * SegmentWalk into `result` and `composite`. True when an interval matched.
+ *
+ * With RenderViewSettings::FocalBeforeLookup, a run of intervals of a moved
+ * part (boxes of one label, each entered where the one before is left: the
+ * slabs of a cage, the sub-boxes of a tessellation) is looked up only from
+ * the interval that holds the focal point of its warped ray (or the run's
+ * last): an interval whose focal point lies beyond its exit is skipped when
+ * the next one goes on with its part. The cameras are sampled at a warped
+ * ray's focal point, and the run's pieces in front of the one that holds it
+ * stray from the curved rest image of the view ray there (see the file's
+ * description), so their lookups are at best the held fallback of a
+ * DeferredMatch; a ray through 100 slabs would otherwise look up every one
+ * up to its focal point.
  */
 template<typename Lookup, typename Next>
 bool ShadeSegments(const std::vector<RenderBox>& boxes,
@@ -861,78 +993,37 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
   ViewSample& result,
   CoverageComposite& composite)
 {
-  RaySamples samples;
-  bool matched = false;
-  DeferredMatch held;
-  // Past the match, only what still shows through is looked up.
-  while (held.Label >= 0 || !matched || composite.Transmittance > CoverageComposite::Opaque)
+  SegmentWalk<Lookup> walk{ boxes, lookup, settings, view, result, composite };
+  BoxSegment* deferred = nullptr; // an interval whose lookup waits for the next one
+  while (walk.Going())
   {
     BoxSegment* handed = next(view);
-    if (!handed)
+    if (deferred && !(handed && walk.Continues(*deferred, *handed)))
     {
-      break;
-    }
-    BoxSegment& entry = *handed;
-    const RenderBox& box = boxes[entry.Box];
-    if (held.Label >= 0 && box.Label != held.Label)
-    {
-      // Another part: the held interval of the part in front gives the pixel.
-      AcceptMatch(held, composite, result, matched);
-      held.Label = -1;
-      if (composite.Transmittance <= CoverageComposite::Opaque)
+      // The run ends with the deferred interval: it is looked up after all.
+      walk.Shade(*deferred);
+      if (!walk.Going())
       {
         break;
       }
     }
-    const WarpedSegment& segment = entry.Segment;
-    const RaySamples* seenSamples = &samples;
-    const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
-    if (!box.Moved)
+    deferred = nullptr;
+    if (!handed)
     {
-      entry.Seen = view.Look();
-      seenSamples = &*view.Samples;
+      break;
     }
-    else
+    if (walk.MayDefer(*handed))
     {
-      if (glm::dot(direction, direction) <= 0.0 ||
-        !lookup.Gather(segment.RestEnter, direction, samples))
-      {
-        continue;
-      }
-      entry.Seen = VoteLabel(samples);
-    }
-    const bool match = entry.Seen == box.Label;
-    const double alpha = box.Moved && settings.AntiAliasing ? LabelCoverage(*seenSamples, box.Label)
-                                                            : (match ? 1.0 : 0.0);
-    if (alpha <= 0.0)
-    {
+      deferred = handed;
       continue;
     }
-    DeferredMatch candidate{
-      box.Label, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
-    };
-    BlendLabel(*seenSamples, box.Label, candidate.Color);
-    if (!match)
-    {
-      composite.Add(alpha, candidate.Color);
-      continue;
-    }
-    const double focal = std::isnan(seenSamples->Surface)
-      ? lookup.FocalParameter(segment.RestEnter, direction)
-      : seenSamples->Surface;
-    if (box.Moved && focal > 1.0)
-    {
-      held = candidate;
-      continue;
-    }
-    held.Label = -1; // this interval of the held part holds its focal point
-    AcceptMatch(candidate, composite, result, matched);
+    walk.Shade(*handed);
   }
-  if (held.Label >= 0)
+  if (walk.Held.Label >= 0)
   {
-    AcceptMatch(held, composite, result, matched);
+    AcceptMatch(walk.Held, composite, result, walk.Matched);
   }
-  return matched;
+  return walk.Matched;
 }
 
 /// Sec. 8: where the nearby cameras saw another part in a moved box, that
