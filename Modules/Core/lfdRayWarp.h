@@ -95,9 +95,8 @@ inline double DifferenceOfProducts(double a, double b, double c, double d)
  * A bilinear patch seen from a fixed ray origin o: the terms of the ray /
  * patch intersection that do not depend on the ray's direction. A frame's
  * view rays all leave the eye, so the renderer computes these once per face
- * and frame instead of once per ray (IntersectAlongS evaluates exactly the
- * expressions it would otherwise recompute, so the hits are bit for bit the
- * same).
+ * and frame instead of once per ray (every ray, single or of a frame, goes
+ * through this struct, so the hits are bit for bit the same either way).
  */
 struct PatchFromOrigin
 {
@@ -107,6 +106,11 @@ struct PatchFromOrigin
   glm::dvec3 E00;   ///< p01 - p00, the t-line at s = 0
   glm::dvec3 E11;   ///< p11 - p01
   glm::dvec3 Twist; ///< (p11 - p10) - (p01 - p00), zero for a parallelogram
+  /// The coefficients of f(s) (see IntersectAlongS) as linear forms of d:
+  /// A = e10 x twist, B = q x twist + e10 x e00, C = q x e00, so that
+  /// f(s) = (A.d) s^2 + (B.d) s + (C.d): three dot products per ray instead
+  /// of two cross products and three triple products (u.(v x d) = d.(u x v)).
+  glm::dvec3 A, B, C;
   /// (|q| + |e10|) (|e00| + |twist|): the vanishing scale of f(s) without |d|.
   double Scale;
 
@@ -126,6 +130,9 @@ struct PatchFromOrigin
     , E00(p01 - p00)
     , E11(p11 - p01)
     , Twist((p11 - p10) - (p01 - p00))
+    , A(glm::cross(E10, Twist))
+    , B(glm::cross(Q, Twist) + glm::cross(E10, E00))
+    , C(glm::cross(Q, E00))
     , Scale((glm::length(Q) + glm::length(E10)) * (glm::length(E00) + glm::length(Twist)))
   {
   }
@@ -135,7 +142,7 @@ struct PatchFromOrigin
    * for s. For a fixed s the patch is the segment pa(s) + t (pb(s) - pa(s)),
    * and the ray meets that line only when the two are coplanar:
    *
-   *   f(s) = (pa(s) - o) . ((pb(s) - pa(s)) x d) = A s^2 + B s + C = 0
+   *   f(s) = (pa(s) - o) . ((pb(s) - pa(s)) x d) = (A.d) s^2 + (B.d) s + (C.d) = 0
    *
    * (Reshetov 2019, Ray Tracing Gems ch. 8). Each root gives t and T as the
    * point where the two lines meet. Returns -1 when f vanishes identically
@@ -145,11 +152,9 @@ struct PatchFromOrigin
    */
   int IntersectAlongS(const glm::dvec3& d, double speed, PatchHit hits[2]) const
   {
-    const glm::dvec3 n0 = glm::cross(this->E00, d);
-    const glm::dvec3 nTwist = glm::cross(this->Twist, d);
-    const double a = glm::dot(this->E10, nTwist);
-    const double b = glm::dot(this->Q, nTwist) + glm::dot(this->E10, n0);
-    const double c = glm::dot(this->Q, n0);
+    const double a = glm::dot(this->A, d);
+    const double b = glm::dot(this->B, d);
+    const double c = glm::dot(this->C, d);
 
     const double vanishing = 1e-12 * (this->Scale * speed);
     if (std::abs(a) <= vanishing && std::abs(b) <= vanishing && std::abs(c) <= vanishing)

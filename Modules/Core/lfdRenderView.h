@@ -250,6 +250,78 @@ inline void CollectSegments(const std::vector<RenderBox>& boxes,
   detail::SortSegments(segments);
 }
 
+/**
+ * The convex hull of a deformed box's projection into a frame's image, as
+ * the inward edge lines of a counter-clockwise polygon (n.x x + n.y y + c,
+ * |n| = 1: the signed distance in pixels). A trilinear box lies in the
+ * convex hull of its 8 corners (Eq. 2 is a convex combination of them), so
+ * the projection of that hull, the hull of the projected corners, holds
+ * every pixel whose ray meets the box. No edges (Count 0): the box has a
+ * corner at or behind the eye plane, or projects to a line; every ray may
+ * meet it.
+ */
+struct ScreenHull
+{
+  int Count = 0;
+  glm::dvec3 Edges[8];
+
+  /// Pixels this far outside the hull (far more than the rounding of the
+  /// projection and the warp's patch slack) may still meet the box.
+  static constexpr double Margin = 1e-3;
+
+  /// The hull of `points` (`n` <= 8 projected corners), by Andrew's monotone chain.
+  static ScreenHull Of(glm::dvec2 points[8], int n)
+  {
+    std::sort(points,
+      points + n,
+      [](const glm::dvec2& a, const glm::dvec2& b)
+      { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    auto turn = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b)
+    { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+    glm::dvec2 chain[16];
+    int k = 0;
+    for (int pass = 0; pass < 2; ++pass) // lower chain, then upper
+    {
+      const int start = k;
+      for (int i = 0; i < n; ++i)
+      {
+        const glm::dvec2& point = points[pass == 0 ? i : n - 1 - i];
+        while (k >= start + 2 && turn(chain[k - 2], chain[k - 1], point) <= 0.0)
+        {
+          --k;
+        }
+        chain[k++] = point;
+      }
+      --k; // each chain's last point starts the other
+    }
+    ScreenHull hull;
+    if (k < 3)
+    {
+      return hull;
+    }
+    for (int i = 0; i < k; ++i)
+    {
+      const glm::dvec2 edge = chain[(i + 1) % k] - chain[i];
+      const glm::dvec2 normal = glm::dvec2(-edge.y, edge.x) / glm::length(edge);
+      hull.Edges[hull.Count++] = glm::dvec3(normal, -glm::dot(normal, chain[i]));
+    }
+    return hull;
+  }
+
+  /// False when the ray through pixel (x, y) surely misses the box.
+  bool MayHold(double x, double y) const
+  {
+    for (int i = 0; i < this->Count; ++i)
+    {
+      if (this->Edges[i].x * x + this->Edges[i].y * y + this->Edges[i].z < -Margin)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
 /// One thread's scratch space for the rays of a frame (FrameCage::NextSegment),
 /// reused from ray to ray: a ray allocates nothing once it has grown.
 struct FrameRayScratch
@@ -269,7 +341,10 @@ struct FrameRayScratch
  * PixelToDirection (x, y, 1), so what does not depend on the pixel is
  * computed once per frame instead of once per ray and box:
  *
- * - each box seen from the eye (BoxFromOrigin: the warp's per-face terms);
+ * - each box seen from the eye (BoxFromOrigin: the warp's per-face terms)
+ *   and the convex hull of its projection (ScreenHull): a ray outside it
+ *   misses the box, which is then neither bounds-tested nor warped (the
+ *   bounds of a rotated thin slab are far wider than the slab);
  * - a culling structure: the image is cut into square tiles and each box is
  *   listed in the tiles its screen-space bounding rectangle overlaps (the
  *   projection of its bounds' 8 corners, one pixel wider on every side; a
@@ -294,6 +369,7 @@ struct FrameCage
   const std::vector<RenderBox>* Boxes = nullptr;
   std::vector<BoxFromOrigin> Seen; ///< per box, seen from Eye
   std::vector<AxisBounds> Widened; ///< per box, its bounds widened (see above)
+  std::vector<ScreenHull> Hulls;   ///< per box, its projection's convex hull
   glm::dvec3 Eye{ 0.0 };
   glm::dmat3 PixelToDirection{ 1.0 };
   int TileSize = 1;
@@ -325,9 +401,11 @@ struct FrameCage
     this->PixelToDirection = pixelToDirection;
     this->Seen.resize(boxes.size());
     this->Widened.resize(boxes.size());
+    this->Hulls.resize(boxes.size());
     for (std::size_t b = 0; b < boxes.size(); ++b)
     {
       this->Seen[b] = BoxFromOrigin(boxes[b].Deformed, eye);
+      this->Hulls[b] = this->ProjectedHull(boxes[b].Deformed);
       const AxisBounds& bounds = boxes[b].Bounds;
       const glm::dvec3 margin(1e-6 * glm::distance(bounds.Min, bounds.Max));
       this->Widened[b] = { bounds.Min - margin, bounds.Max + margin };
@@ -368,8 +446,9 @@ struct FrameCage
 
   /**
    * Starts the walk of the ray through pixel (x, y), direction `d`, through
-   * the boxes of its tile whose bounds it meets (the bounds test of
-   * CollectSegments). Returns their number.
+   * the boxes of its tile whose projected hull holds the pixel and whose
+   * bounds it meets (the bounds test of CollectSegments). Returns their
+   * number.
    */
   std::size_t StartWalk(int x, int y, const glm::dvec3& d, FrameRayScratch& scratch) const
   {
@@ -383,13 +462,15 @@ struct FrameCage
     {
       const int b = this->TileBoxes[i];
       double entry = 0.0; // (the widened bounds hold the bounds: a miss is rounding)
-      if (RayHitsBounds(this->Eye, d, (*this->Boxes)[b].Bounds))
+      if (this->Hulls[b].MayHold(x, y) && RayHitsBounds(this->Eye, d, (*this->Boxes)[b].Bounds))
       {
         RayEntersBounds(this->Eye, d, this->Widened[b], entry);
         scratch.Entries.emplace_back(entry, b);
       }
     }
     std::sort(scratch.Entries.begin(), scratch.Entries.end());
+    // NextSegment's intervals never move: ShadeSegments holds one back.
+    scratch.Segments.reserve(scratch.Entries.size() * MaxWarpedSegments);
     return scratch.Entries.size();
   }
 
@@ -440,6 +521,34 @@ private:
     return (y / this->TileSize) * this->TilesX + x / this->TileSize;
   }
 
+  /// The pixel (x z, y z, z) of `point`, z its depth along the eye's axis;
+  /// false when it lies at or behind the eye plane.
+  bool ProjectToPixel(const glm::dmat3& toPixel, const glm::dvec3& point, glm::dvec2& pixel) const
+  {
+    const glm::dvec3 v = toPixel * (point - this->Eye);
+    if (!(v.z > 1e-6 * glm::length(v)))
+    {
+      return false;
+    }
+    pixel = glm::dvec2(v) / v.z;
+    return true;
+  }
+
+  /// The ScreenHull of the deformed box `box` (no edges when a corner does not project).
+  ScreenHull ProjectedHull(const Hexahedron& box) const
+  {
+    const glm::dmat3 toPixel = glm::inverse(this->PixelToDirection);
+    glm::dvec2 corners[8];
+    for (int c = 0; c < 8; ++c)
+    {
+      if (!this->ProjectToPixel(toPixel, box.Corners[c], corners[c]))
+      {
+        return {};
+      }
+    }
+    return ScreenHull::Of(corners, 8);
+  }
+
   /// The tiles (inclusive range; x1 < x0 for none) that the projection of
   /// `bounds` may touch.
   glm::ivec4 TileRange(const AxisBounds& bounds, int width, int height) const
@@ -452,14 +561,13 @@ private:
       const glm::dvec3 corner((c & 1) ? bounds.Max.x : bounds.Min.x,
         (c & 2) ? bounds.Max.y : bounds.Min.y,
         (c & 4) ? bounds.Max.z : bounds.Min.z);
-      // (x z, y z, z) of the corner, z its depth along the eye's axis.
-      const glm::dvec3 v = toPixel * (corner - this->Eye);
-      if (!(v.z > 1e-6 * glm::length(v)))
+      glm::dvec2 pixel;
+      if (!this->ProjectToPixel(toPixel, corner, pixel))
       {
         return { 0, 0, this->TilesX - 1, this->TilesY - 1 };
       }
-      low = glm::min(low, glm::dvec2(v) / v.z);
-      high = glm::max(high, glm::dvec2(v) / v.z);
+      low = glm::min(low, pixel);
+      high = glm::max(high, pixel);
     }
     // One pixel of margin absorbs the rounding of the projection.
     const double x0 = std::max(std::floor(low.x) - 1.0, 0.0);
@@ -539,6 +647,14 @@ struct RenderViewSettings
   bool AntiAliasing = true;
   /// The colour of background rays (0..255), blended behind soft edges.
   glm::dvec3 Background{ 0.0 };
+  /**
+   * The lookup samples every line at its focal plane or cylinder (no proxy:
+   * Lookup::FocalParameter is where the cameras are sampled, known before
+   * the lookup), so a run of a moved part's intervals is looked up only
+   * from the one that holds the focal point (see ShadeSegments). Off: every
+   * interval is looked up.
+   */
+  bool FocalBeforeLookup = false;
 };
 
 /// The labels of `boxes`, as RenderViewSettings::Owned.
@@ -736,15 +852,137 @@ inline void AcceptMatch(const DeferredMatch& match,
 }
 
 /**
- * The intervals, front to back (`next(view)` hands them out, nullptr after
- * the last), composited by label coverage (RenderViewSettings::AntiAliasing)
- * into `composite`; the first whose warped ray shows its box's label
+ * One ray's walk through its intervals, front to back (ShadeSegments):
+ * composited by label coverage (RenderViewSettings::AntiAliasing) into
+ * Composite; the first interval whose warped ray shows its box's label
  * (Sec. 6; an interval of a moved box whose focal point lies beyond its
  * exit is held back for the next ones of its part, see DeferredMatch) gives
- * `result` its label and depth. Without anti-aliasing (and in boxes at
- * rest) an interval covers all or nothing, so the first match gives the
- * whole colour. Records what each interval showed in BoxSegment::Seen.
- * True when an interval matched.
+ * Result its label and depth. Without anti-aliasing (and in boxes at rest)
+ * an interval covers all or nothing, so the first match gives the whole
+ * colour.
+ */
+template<typename Lookup>
+struct SegmentWalk
+{
+  const std::vector<RenderBox>& Boxes;
+  const Lookup& Light;
+  const RenderViewSettings& Settings;
+  ViewRayLook<Lookup>& View;
+  ViewSample& Result;
+  CoverageComposite& Composite;
+  RaySamples Samples;
+  bool Matched = false;
+  DeferredMatch Held;
+
+  /// Past the match, only what still shows through is looked up.
+  bool Going() const
+  {
+    return this->Held.Label >= 0 || !this->Matched ||
+      this->Composite.Transmittance > CoverageComposite::Opaque;
+  }
+
+  /**
+   * Whether the lookup of `entry` waits for the next interval
+   * (RenderViewSettings::FocalBeforeLookup): it is an interval of a moved box
+   * whose warped ray's focal point lies beyond its exit.
+   */
+  bool MayDefer(const BoxSegment& entry) const
+  {
+    if (!this->Settings.FocalBeforeLookup || !this->Boxes[entry.Box].Moved)
+    {
+      return false;
+    }
+    const WarpedSegment& segment = entry.Segment;
+    return this->Light.FocalParameter(segment.RestEnter, segment.RestExit - segment.RestEnter) >
+      1.0;
+  }
+
+  /// `next` goes on with the part of `entry` where `entry` leaves off: a
+  /// moved box of the same label, entered where `entry` exits (up to rounding).
+  bool Continues(const BoxSegment& entry, const BoxSegment& next) const
+  {
+    const RenderBox& box = this->Boxes[next.Box];
+    return box.Moved && box.Label == this->Boxes[entry.Box].Label &&
+      next.Segment.TEnter <= entry.Segment.TExit * (1.0 + 1e-9);
+  }
+
+  /// Looks `entry` up and composites it (records what it showed in BoxSegment::Seen).
+  void Shade(BoxSegment& entry)
+  {
+    const RenderBox& box = this->Boxes[entry.Box];
+    if (this->Held.Label >= 0 && box.Label != this->Held.Label)
+    {
+      // Another part: the held interval of the part in front gives the pixel.
+      AcceptMatch(this->Held, this->Composite, this->Result, this->Matched);
+      this->Held.Label = -1;
+      if (this->Composite.Transmittance <= CoverageComposite::Opaque)
+      {
+        return;
+      }
+    }
+    const WarpedSegment& segment = entry.Segment;
+    const RaySamples* seenSamples = &this->Samples;
+    const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
+    if (!box.Moved)
+    {
+      entry.Seen = this->View.Look();
+      seenSamples = &*this->View.Samples;
+    }
+    else
+    {
+      if (glm::dot(direction, direction) <= 0.0 ||
+        !this->Light.Gather(segment.RestEnter, direction, this->Samples))
+      {
+        return;
+      }
+      entry.Seen = VoteLabel(this->Samples);
+    }
+    const bool match = entry.Seen == box.Label;
+    const double alpha = box.Moved && this->Settings.AntiAliasing
+      ? LabelCoverage(*seenSamples, box.Label)
+      : (match ? 1.0 : 0.0);
+    if (alpha <= 0.0)
+    {
+      return;
+    }
+    DeferredMatch candidate{
+      box.Label, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
+    };
+    BlendLabel(*seenSamples, box.Label, candidate.Color);
+    if (!match)
+    {
+      this->Composite.Add(alpha, candidate.Color);
+      return;
+    }
+    const double focal = std::isnan(seenSamples->Surface)
+      ? this->Light.FocalParameter(segment.RestEnter, direction)
+      : seenSamples->Surface;
+    if (box.Moved && focal > 1.0)
+    {
+      this->Held = candidate;
+      return;
+    }
+    this->Held.Label = -1; // this interval of the held part holds its focal point
+    AcceptMatch(candidate, this->Composite, this->Result, this->Matched);
+  }
+};
+
+/**
+ * The intervals, front to back (`next(view)` hands them out, nullptr after
+ * the last; a pointer it returned stays valid for the ray), shaded by
+ * SegmentWalk into `result` and `composite`. True when an interval matched.
+ *
+ * With RenderViewSettings::FocalBeforeLookup, a run of intervals of a moved
+ * part (boxes of one label, each entered where the one before is left: the
+ * slabs of a cage, the sub-boxes of a tessellation) is looked up only from
+ * the interval that holds the focal point of its warped ray (or the run's
+ * last): an interval whose focal point lies beyond its exit is skipped when
+ * the next one goes on with its part. The cameras are sampled at a warped
+ * ray's focal point, and the run's pieces in front of the one that holds it
+ * stray from the curved rest image of the view ray there (see the file's
+ * description), so their lookups are at best the held fallback of a
+ * DeferredMatch; a ray through 100 slabs would otherwise look up every one
+ * up to its focal point.
  */
 template<typename Lookup, typename Next>
 bool ShadeSegments(const std::vector<RenderBox>& boxes,
@@ -755,78 +993,37 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
   ViewSample& result,
   CoverageComposite& composite)
 {
-  RaySamples samples;
-  bool matched = false;
-  DeferredMatch held;
-  // Past the match, only what still shows through is looked up.
-  while (held.Label >= 0 || !matched || composite.Transmittance > CoverageComposite::Opaque)
+  SegmentWalk<Lookup> walk{ boxes, lookup, settings, view, result, composite };
+  BoxSegment* deferred = nullptr; // an interval whose lookup waits for the next one
+  while (walk.Going())
   {
     BoxSegment* handed = next(view);
-    if (!handed)
+    if (deferred && !(handed && walk.Continues(*deferred, *handed)))
     {
-      break;
-    }
-    BoxSegment& entry = *handed;
-    const RenderBox& box = boxes[entry.Box];
-    if (held.Label >= 0 && box.Label != held.Label)
-    {
-      // Another part: the held interval of the part in front gives the pixel.
-      AcceptMatch(held, composite, result, matched);
-      held.Label = -1;
-      if (composite.Transmittance <= CoverageComposite::Opaque)
+      // The run ends with the deferred interval: it is looked up after all.
+      walk.Shade(*deferred);
+      if (!walk.Going())
       {
         break;
       }
     }
-    const WarpedSegment& segment = entry.Segment;
-    const RaySamples* seenSamples = &samples;
-    const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
-    if (!box.Moved)
+    deferred = nullptr;
+    if (!handed)
     {
-      entry.Seen = view.Look();
-      seenSamples = &*view.Samples;
+      break;
     }
-    else
+    if (walk.MayDefer(*handed))
     {
-      if (glm::dot(direction, direction) <= 0.0 ||
-        !lookup.Gather(segment.RestEnter, direction, samples))
-      {
-        continue;
-      }
-      entry.Seen = VoteLabel(samples);
-    }
-    const bool match = entry.Seen == box.Label;
-    const double alpha = box.Moved && settings.AntiAliasing ? LabelCoverage(*seenSamples, box.Label)
-                                                            : (match ? 1.0 : 0.0);
-    if (alpha <= 0.0)
-    {
+      deferred = handed;
       continue;
     }
-    DeferredMatch candidate{
-      box.Label, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
-    };
-    BlendLabel(*seenSamples, box.Label, candidate.Color);
-    if (!match)
-    {
-      composite.Add(alpha, candidate.Color);
-      continue;
-    }
-    const double focal = std::isnan(seenSamples->Surface)
-      ? lookup.FocalParameter(segment.RestEnter, direction)
-      : seenSamples->Surface;
-    if (box.Moved && focal > 1.0)
-    {
-      held = candidate;
-      continue;
-    }
-    held.Label = -1; // this interval of the held part holds its focal point
-    AcceptMatch(candidate, composite, result, matched);
+    walk.Shade(*handed);
   }
-  if (held.Label >= 0)
+  if (walk.Held.Label >= 0)
   {
-    AcceptMatch(held, composite, result, matched);
+    AcceptMatch(walk.Held, composite, result, walk.Matched);
   }
-  return matched;
+  return walk.Matched;
 }
 
 /// Sec. 8: where the nearby cameras saw another part in a moved box, that

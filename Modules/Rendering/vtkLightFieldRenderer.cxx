@@ -578,6 +578,9 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
       layout,
       cameras);
   }
+  // Without a proxy a ring lookup samples every line at its focal cylinder:
+  // runs of a moved part's intervals are looked up from their focal piece.
+  settings.FocalBeforeLookup = plane.Empty() && !sampler.Depth.Data;
   settings.WidenedSearch = this->WidenedSearch > 0;
   settings.AntiAliasing = this->AntiAliasing;
   settings.Owned = lfd::OwnedLabels(boxes);
