@@ -206,9 +206,19 @@ inline int BracketAzimuth(const RingRow& row, double azimuth, double rowWeight, 
     return 1;
   }
   // First view with an azimuth greater than the query; the one before it
-  // (cyclically) is the lower neighbour.
-  const std::size_t upper =
-    std::upper_bound(row.Azimuth.begin(), row.Azimuth.end(), azimuth) - row.Azimuth.begin();
+  // (cyclically) is the lower neighbour. Rings are about evenly spaced: the
+  // search starts where an even ring would have it and walks from there
+  // (the result is std::upper_bound's, with a step or two instead of a
+  // binary search's unpredictable branches).
+  std::size_t upper = std::min(static_cast<std::size_t>(azimuth * (n / TwoPi)), n);
+  while (upper < n && row.Azimuth[upper] <= azimuth)
+  {
+    ++upper;
+  }
+  while (upper > 0 && row.Azimuth[upper - 1] > azimuth)
+  {
+    --upper;
+  }
   const std::size_t hi = upper % n;
   const std::size_t lo = (upper + n - 1) % n;
   double span = row.Azimuth[hi] - row.Azimuth[lo];
@@ -282,8 +292,15 @@ struct ViewStack
     {
       return static_cast<const T*>(this->Source->Texel(view, x, y));
     }
+    return this->Data + this->Index(view, x, y) * this->Components;
+  }
+
+  /// Index of the pixel at OpenCV coordinates (x, y) of `view` in Data
+  /// (in pixels: times Components for its first value).
+  std::size_t Index(int view, int x, int y) const
+  {
     const std::size_t row = static_cast<std::size_t>(view) * this->Height + (this->Height - 1 - y);
-    return this->Data + (row * this->Width + x) * this->Components;
+    return row * this->Width + x;
   }
 };
 
@@ -1002,6 +1019,26 @@ struct LightFieldSampler
     glm::dvec2 uv;
     if (!this->Cameras[view].Project(x, uv))
     {
+      return;
+    }
+    if (this->Radiance.Data && (this->Labels.Data || !this->Labels.Present()))
+    {
+      // In memory: the texels' addresses from locals, without Pixel()'s
+      // test of Source per texel (which `out` might alias, for the compiler).
+      const ViewStack<std::uint8_t> radiance = this->Radiance;
+      const std::uint8_t* labels = this->Labels.Data;
+      ForEachBilinearPixel(uv,
+        radiance.Width,
+        radiance.Height,
+        [&](int px, int py, double bw)
+        {
+          const std::size_t index = radiance.Index(view, px, py);
+          const std::uint8_t* rgb = radiance.Data + 3 * index;
+          RaySample& sample = out.Samples[out.Count++];
+          sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+          sample.Weight = weight * bw;
+          sample.Label = labels ? labels[index] : 0;
+        });
       return;
     }
     ForEachBilinearPixel(uv,
