@@ -206,19 +206,9 @@ inline int BracketAzimuth(const RingRow& row, double azimuth, double rowWeight, 
     return 1;
   }
   // First view with an azimuth greater than the query; the one before it
-  // (cyclically) is the lower neighbour. Rings are about evenly spaced: the
-  // search starts where an even ring would have it and walks from there
-  // (the result is std::upper_bound's, with a step or two instead of a
-  // binary search's unpredictable branches).
-  std::size_t upper = std::min(static_cast<std::size_t>(azimuth * (n / TwoPi)), n);
-  while (upper < n && row.Azimuth[upper] <= azimuth)
-  {
-    ++upper;
-  }
-  while (upper > 0 && row.Azimuth[upper - 1] > azimuth)
-  {
-    --upper;
-  }
+  // (cyclically) is the lower neighbour.
+  const std::size_t upper =
+    std::upper_bound(row.Azimuth.begin(), row.Azimuth.end(), azimuth) - row.Azimuth.begin();
   const std::size_t hi = upper % n;
   const std::size_t lo = (upper + n - 1) % n;
   double span = row.Azimuth[hi] - row.Azimuth[lo];
