@@ -282,8 +282,15 @@ struct ViewStack
     {
       return static_cast<const T*>(this->Source->Texel(view, x, y));
     }
+    return this->Data + this->Index(view, x, y) * this->Components;
+  }
+
+  /// Index of the pixel at OpenCV coordinates (x, y) of `view` in Data
+  /// (in pixels: times Components for its first value).
+  std::size_t Index(int view, int x, int y) const
+  {
     const std::size_t row = static_cast<std::size_t>(view) * this->Height + (this->Height - 1 - y);
-    return this->Data + (row * this->Width + x) * this->Components;
+    return row * this->Width + x;
   }
 };
 
@@ -536,6 +543,53 @@ struct LabelHull
              static_cast<std::size_t>(cell)] != 0;
   }
 
+  /**
+   * The screen-tile mask of a frame: per tile of `tileSize` x `tileSize`
+   * pixels of a width x height frame (row-major, top tile row first), whose
+   * ray through pixel (x, y) (OpenCV) is eye + t pixelToDirection (x, y, 1),
+   * 0 when the focal point (FocalPoint(), `focalDistance`) of every ray of
+   * the tile falls in a voxel unmarked in Union: Gather skips every one of
+   * them, so with labels the whole tile is background and its rays need not
+   * be generated. 1 when a ray of the tile may be looked up. Empty without
+   * Union. The bound is rigorous (FocalBox()), so a 0 never hides a pixel.
+   */
+  std::vector<std::uint8_t> ScreenTiles(const RingLayout& layout,
+    const glm::dvec3& eye,
+    const glm::dmat3& pixelToDirection,
+    int width,
+    int height,
+    double focalDistance,
+    int tileSize) const
+  {
+    if (this->Union.empty())
+    {
+      return {};
+    }
+    const int columns = (width + tileSize - 1) / tileSize;
+    const int rows = (height + tileSize - 1) / tileSize;
+    std::vector<std::uint8_t> tiles(static_cast<std::size_t>(columns) * rows, 1);
+    for (int ty = 0; ty < rows; ++ty)
+    {
+      for (int tx = 0; tx < columns; ++tx)
+      {
+        const double x0 = tx * tileSize;
+        const double y0 = ty * tileSize;
+        const double x1 = std::min(x0 + tileSize - 1, width - 1.0);
+        const double y1 = std::min(y0 + tileSize - 1, height - 1.0);
+        // Corners in order around the pixel rectangle.
+        const glm::dvec3 corners[4] = { pixelToDirection * glm::dvec3(x0, y0, 1.0),
+          pixelToDirection * glm::dvec3(x1, y0, 1.0),
+          pixelToDirection * glm::dvec3(x1, y1, 1.0),
+          pixelToDirection * glm::dvec3(x0, y1, 1.0) };
+        glm::dvec3 low, high;
+        tiles[static_cast<std::size_t>(ty) * columns + tx] =
+          !(this->FocalBox(layout, eye, corners, focalDistance, low, high) &&
+            this->Unmarked(low, high));
+      }
+    }
+    return tiles;
+  }
+
 private:
   /// Side, in voxels, of the blocks MarkCone tests first.
   static constexpr int Block = 4;
@@ -548,6 +602,133 @@ private:
     glm::dvec3 Origin;
     glm::ivec4 Rect;
   };
+
+  /// The rig-frame coordinates (RefX, RefY, Axis) of the vector `v`.
+  static glm::dvec3 ToRig(const RingLayout& layout, const glm::dvec3& v)
+  {
+    return glm::dvec3(
+      glm::dot(v, layout.RefX), glm::dot(v, layout.RefY), glm::dot(v, layout.Cyl.Axis));
+  }
+
+  /**
+   * Rig-frame bounds [low, high] of the focal points of the rays eye + s d,
+   * d in the parallelogram of directions spanned by `corners` (the affine
+   * image of a pixel rectangle, corners in order around it). In the rig
+   * frame the focal point is w + t r (w: the eye, r: the direction), with
+   * t = s - f / |r| and s = N / D, N = -(w_xy . r_xy) affine in the pixel
+   * (extremes at corners), D = |r_xy|^2 convex (maximum at a corner, minimum
+   * the squared distance of the origin to the parallelogram of the r_xy), and
+   * sqrt(D) <= |r| <= the largest corner's. Every point w + t r, t in
+   * [t0, t1], is a convex combination of w + t0 r and w + t1 r, so the
+   * corners at t0 and t1 bound them all. False for rays too near the axis's
+   * direction (no bounded focal point, and FocalPoint's rounding grows).
+   */
+  bool FocalBox(const RingLayout& layout,
+    const glm::dvec3& eye,
+    const glm::dvec3 corners[4],
+    double focalDistance,
+    glm::dvec3& low,
+    glm::dvec3& high) const
+  {
+    const glm::dvec3 w = ToRig(layout, eye - layout.Cyl.Center);
+    glm::dvec3 r[4];
+    double nLow = std::numeric_limits<double>::infinity(), nHigh = -nLow;
+    double dHigh = 0.0, lengthHigh = 0.0;
+    for (int k = 0; k < 4; ++k)
+    {
+      r[k] = ToRig(layout, corners[k]);
+      const double n = -(w.x * r[k].x + w.y * r[k].y);
+      nLow = std::min(nLow, n);
+      nHigh = std::max(nHigh, n);
+      dHigh = std::max(dHigh, r[k].x * r[k].x + r[k].y * r[k].y);
+      lengthHigh = std::max(lengthHigh, glm::dot(r[k], r[k]));
+    }
+    // The squared distance of the origin to the parallelogram of the r_xy:
+    // 0 inside it, else the nearest of its edges.
+    double dLow = std::numeric_limits<double>::infinity();
+    int positive = 0;
+    for (int k = 0; k < 4; ++k)
+    {
+      const glm::dvec2 a(r[k]);
+      const glm::dvec2 edge = glm::dvec2(r[(k + 1) % 4]) - a;
+      positive += edge.x * -a.y - edge.y * -a.x > 0.0 ? 1 : 0;
+      const double along = glm::dot(edge, edge) > 0.0
+        ? std::clamp(-glm::dot(a, edge) / glm::dot(edge, edge), 0.0, 1.0)
+        : 0.0;
+      const glm::dvec2 nearest = a + along * edge;
+      dLow = std::min(dLow, glm::dot(nearest, nearest));
+    }
+    if (positive == 0 || positive == 4 || !(dLow > 1e-3 * lengthHigh))
+    {
+      return false;
+    }
+    double sLow = std::numeric_limits<double>::infinity(), sHigh = -sLow;
+    for (double n : { nLow, nHigh })
+    {
+      for (double d : { dLow, dHigh })
+      {
+        sLow = std::min(sLow, n / d);
+        sHigh = std::max(sHigh, n / d);
+      }
+    }
+    const double g0 = focalDistance / std::sqrt(lengthHigh);
+    const double g1 = focalDistance / std::sqrt(dLow);
+    const double t0 = sLow - std::max(g0, g1);
+    const double t1 = sHigh - std::min(g0, g1);
+    low = glm::dvec3(std::numeric_limits<double>::infinity());
+    high = -low;
+    for (int k = 0; k < 4; ++k)
+    {
+      for (double t : { t0, t1 })
+      {
+        low = glm::min(low, w + t * r[k]);
+        high = glm::max(high, w + t * r[k]);
+      }
+    }
+    // Margin for the rounding of FocalPoint() and Cell().
+    const glm::dvec3 margin =
+      1e-6 * this->CellSize + 1e-9 * (glm::length(w) + std::max(std::abs(t0), std::abs(t1)));
+    low -= margin;
+    high += margin;
+    return true;
+  }
+
+  /**
+   * Whether the rig-frame box [low, high] lies inside the grid and meets
+   * only voxels unmarked in Union (false, too, for a box over more than
+   * 4096 voxels: not worth reading).
+   */
+  bool Unmarked(const glm::dvec3& low, const glm::dvec3& high) const
+  {
+    const glm::dvec3 q0 = (low - this->Low) / this->CellSize;
+    const glm::dvec3 q1 = (high - this->Low) / this->CellSize;
+    if (!(q0.x >= 0.0 && q0.y >= 0.0 && q0.z >= 0.0 && q1.x < Cells && q1.y < Cells &&
+          q1.z < Cells))
+    {
+      return false;
+    }
+    const glm::ivec3 c0(q0);
+    const glm::ivec3 c1(q1);
+    const glm::ivec3 span = c1 - c0 + 1;
+    if (span.x * span.y * span.z > 4096)
+    {
+      return false;
+    }
+    for (int z = c0.z; z <= c1.z; ++z)
+    {
+      for (int y = c0.y; y <= c1.y; ++y)
+      {
+        for (int x = c0.x; x <= c1.x; ++x)
+        {
+          if (this->Union[(static_cast<std::size_t>(z) * Cells + y) * Cells + x])
+          {
+            return false;
+          }
+        }
+      }
+    }
+    return true;
+  }
 
   /**
    * Whether the sphere of radius `radius` around the rig-frame point `q` may
@@ -828,6 +1009,26 @@ struct LightFieldSampler
     glm::dvec2 uv;
     if (!this->Cameras[view].Project(x, uv))
     {
+      return;
+    }
+    if (this->Radiance.Data && (this->Labels.Data || !this->Labels.Present()))
+    {
+      // In memory: the texels' addresses from locals, without Pixel()'s
+      // test of Source per texel (which `out` might alias, for the compiler).
+      const ViewStack<std::uint8_t> radiance = this->Radiance;
+      const std::uint8_t* labels = this->Labels.Data;
+      ForEachBilinearPixel(uv,
+        radiance.Width,
+        radiance.Height,
+        [&](int px, int py, double bw)
+        {
+          const std::size_t index = radiance.Index(view, px, py);
+          const std::uint8_t* rgb = radiance.Data + 3 * index;
+          RaySample& sample = out.Samples[out.Count++];
+          sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+          sample.Weight = weight * bw;
+          sample.Label = labels ? labels[index] : 0;
+        });
       return;
     }
     ForEachBilinearPixel(uv,

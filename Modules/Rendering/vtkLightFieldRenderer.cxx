@@ -34,6 +34,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkLightFieldRenderer);
 vtkCxxSetObjectMacro(vtkLightFieldRenderer, Camera, vtkCamera);
@@ -180,17 +182,33 @@ struct RenderRows
   float* Depths;
   // The scratch space of a ray, reused from ray to ray by each thread.
   mutable vtkSMPThreadLocal<lfd::FrameRayScratch> Scratch;
+  // The screen-tile mask (lfd::LabelHull::ScreenTiles, tiles of TileSize
+  // pixels): a tile marked 0 is background without generating its rays.
+  // Empty: every ray is generated.
+  std::vector<std::uint8_t> Tiles;
+  int TileSize = 1;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
     lfd::FrameRayScratch& scratch = this->Scratch.Local();
+    const int columns = (this->Width + this->TileSize - 1) / this->TileSize;
     for (vtkIdType j = begin; j < end; ++j)
     {
       const int y = static_cast<int>(this->Height - 1 - j); // OpenCV row
+      const std::uint8_t* tiles =
+        this->Tiles.empty() ? nullptr : this->Tiles.data() + (y / this->TileSize) * columns;
       for (int x = 0; x < this->Width; ++x)
       {
         const vtkIdType id = j * this->Width + x;
         std::uint8_t* rgb = this->Radiance + 3 * id;
+        if (tiles && !tiles[x / this->TileSize])
+        {
+          // What a ray whose lookup the hull skips shows (label -1).
+          this->Labels[id] = 0;
+          this->Depths[id] = 0.0f;
+          std::copy(this->Background, this->Background + 3, rgb);
+          continue;
+        }
         // A ray's camera z is 1, so the ray parameter of the seen point is its depth.
         const lfd::ViewSample seen = this->Accelerated
           ? lfd::RenderView(this->Cage, x, y, this->Light, this->Settings, scratch)
@@ -340,7 +358,8 @@ void RenderFrame(const Lookup& lookup,
   const lfd::FrameCage& cage,
   const lfd::RenderViewSettings& settings,
   const FrameSettings& frame,
-  vtkImageData* output)
+  vtkImageData* output,
+  std::vector<std::uint8_t> tiles = {})
 {
   RenderRows<Lookup> functor{ lookup,
     cage,
@@ -352,7 +371,9 @@ void RenderFrame(const Lookup& lookup,
     nullptr,
     nullptr,
     nullptr,
-    {} };
+    {},
+    std::move(tiles),
+    lfd::FrameCage::DefaultTileSize };
   AllocateImage(output, frame.Width, frame.Height, functor);
   vtkSMPTools::For(0, frame.Height, functor);
 }
@@ -613,11 +634,25 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   }
   else
   {
+    // Undeformed, every ray is the view ray itself: the tiles whose rays the
+    // hull skips all are background.
+    std::vector<std::uint8_t> tiles;
+    if (boxes.empty() && sampler.Hull)
+    {
+      tiles = sampler.Hull->ScreenTiles(layout,
+        eye.Center(),
+        eye.PixelToDirection(),
+        this->Width,
+        this->Height,
+        sampler.FocalDistance,
+        lfd::FrameCage::DefaultTileSize);
+    }
     RenderFrame(lfd::SamplerLookup{ sampler, this->WidenedSearch, eye.Forward() },
       cage,
       settings,
       frame,
-      output);
+      output,
+      std::move(tiles));
   }
   return 1;
 }

@@ -260,6 +260,38 @@ void LabelHullSkips()
   Expect("rays unmarked in every sector (skipped before the cylinder entry)", unmarked, 869.0);
   Expect("skipped rays with a labelled sample", wrong, 0.0);
   Expect("looked-up rays whose samples differ", differing, 0.0);
+
+  // The screen-tile mask of a 96 x 80 frame (tiles of 8) looking at the top
+  // of the grid, above the labelled heights, and past it: every ray of a tile marked 0
+  // is one that Gather skips (focal point in a voxel unmarked everywhere).
+  const glm::dmat3 k(
+    glm::dvec3(300.0, 0.0, 0.0), glm::dvec3(0.0, 300.0, 0.0), glm::dvec3(47.5, 39.5, 1.0));
+  const lfd::PinholeCamera eye = lfd::PinholeCamera::LookAt(
+    k, glm::dvec3(0.5, 1.4, 6.0), glm::dvec3(0.0, 0.0, -1.0), glm::dvec3(0.0, 1.0, 0.0));
+  const int tile = 8, width = 96, height = 80;
+  const std::vector<std::uint8_t> tiles = hull.ScreenTiles(
+    layout, eye.Center(), eye.PixelToDirection(), width, height, sampler.FocalDistance, tile);
+  Expect("screen tiles", static_cast<double>(tiles.size()), 12.0 * 10.0);
+  int skippedTiles = 0, leaks = 0, lookedUp = 0;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const glm::dvec3 d = eye.PixelToDirection() * glm::dvec3(x, y, 1.0);
+      const long cell =
+        hull.Cell(lfd::FocalPoint(layout.Cyl, eye.Center(), d, sampler.FocalDistance), layout);
+      const bool skippedRay = cell >= 0 && !hull.Union[cell];
+      lookedUp += skippedRay ? 0 : 1;
+      leaks += !tiles[(y / tile) * 12 + x / tile] && !skippedRay ? 1 : 0;
+    }
+  }
+  for (std::uint8_t t : tiles)
+  {
+    skippedTiles += t ? 0 : 1;
+  }
+  Expect("tiles skipped whole (3392 of the 4387 rays the union skips)", skippedTiles, 53.0);
+  Expect("rays the union does not skip", lookedUp, 3293.0);
+  Expect("rays of skipped tiles that Gather would look up", leaks, 0.0);
   sampler.Hull = nullptr;
 }
 
