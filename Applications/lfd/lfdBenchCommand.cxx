@@ -1,7 +1,7 @@
-// `lfd bench`: rays/s, ms/frame and peak memory of the renderer at several
-// frame sizes, against a reference loop, against light-field size and
-// against cage size, as tables and as JSON; with --studio, the frame times of
-// the editing view (vtkLightFieldEditor) during a drag.
+// `lfd bench`: rays/s, ms/frame (wall clock and process CPU time) and peak
+// memory of the renderer at several frame sizes, against a reference loop, against light-field size
+// and against cage size, as tables and as JSON; with --studio, the frame times of the editing view
+// (vtkLightFieldEditor) during a drag.
 #include "lfdCommands.h"
 
 #include "vtkCagePoseFilter.h"
@@ -89,29 +89,52 @@ private:
   bool Resettable = false;
 };
 
-/// A configuration's median time per frame (s) and peak memory (bytes).
+/**
+ * A configuration's median time per frame on the wall clock and in the
+ * process's CPU time (s), and its peak memory (bytes). The CPU time is that
+ * of every thread of the process (vtkTimerLog::GetCPUTime(): clock()), the
+ * work a frame costs: on a shared machine the wall clock of the same
+ * configuration swings 2-3x with the load, its CPU time much less.
+ */
 struct Measure
 {
   double Seconds = 0.0;
+  double CpuSeconds = 0.0;
   long long PeakBytes = 0;
 };
 
-/// Median time (s) of `repeat` updates of the renderer after a warm-up, and
+/// The median wall and CPU times of `repeat` calls of `work`.
+template<typename Work>
+Measure MedianTimes(int repeat, Work&& work)
+{
+  std::vector<double> wall, cpu;
+  for (int i = 0; i < repeat; ++i)
+  {
+    const double start = vtkTimerLog::GetUniversalTime();
+    const double cpuStart = vtkTimerLog::GetCPUTime();
+    work();
+    wall.push_back(Seconds(start));
+    cpu.push_back(vtkTimerLog::GetCPUTime() - cpuStart);
+  }
+  std::sort(wall.begin(), wall.end());
+  std::sort(cpu.begin(), cpu.end());
+  return { wall[wall.size() / 2], cpu[cpu.size() / 2], 0 };
+}
+
+/// Median times of `repeat` updates of the renderer after a warm-up, and
 /// the peak memory over them.
 Measure MeasureRender(vtkLightFieldRenderer* renderer, int repeat, PeakMemory& peak)
 {
   peak.Reset();
   Run(renderer, "rendering"); // warm-up (rig layout, threads)
-  std::vector<double> times;
-  for (int i = 0; i < repeat; ++i)
-  {
-    renderer->Modified();
-    const double start = vtkTimerLog::GetUniversalTime();
-    renderer->Update();
-    times.push_back(Seconds(start));
-  }
-  std::sort(times.begin(), times.end());
-  return { times[times.size() / 2], peak.Read() };
+  Measure figures = MedianTimes(repeat,
+    [renderer]
+    {
+      renderer->Modified();
+      renderer->Update();
+    });
+  figures.PeakBytes = peak.Read();
+  return figures;
 }
 
 /// A renderer of `lightField` at `size` x `size` from the bench's orbit camera.
@@ -426,9 +449,11 @@ struct ReferenceLoop
   }
 };
 
-/// Median time (s) of `repeat` runs of the reference loop over `lightField`, after a warm-up.
-double ReferenceTime(vtkLightField* lightField, int size, int repeat)
+/// Median times of `repeat` runs of the reference loop over `lightField`, after a
+/// warm-up, and the peak memory over them.
+Measure ReferenceTime(vtkLightField* lightField, int size, int repeat, PeakMemory& peak)
 {
+  peak.Reset();
   auto* radiance = vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::COAXIAL));
   std::vector<std::uint8_t> out(3 * static_cast<std::size_t>(size) * size);
   const ReferenceLoop loop{ radiance->GetPointer(0),
@@ -438,15 +463,9 @@ double ReferenceTime(vtkLightField* lightField, int size, int repeat)
     size,
     out.data() };
   vtkSMPTools::For(0, size, loop);
-  std::vector<double> times;
-  for (int i = 0; i < repeat; ++i)
-  {
-    const double start = vtkTimerLog::GetUniversalTime();
-    vtkSMPTools::For(0, size, loop);
-    times.push_back(Seconds(start));
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
+  Measure figures = MedianTimes(repeat, [size, &loop] { vtkSMPTools::For(0, size, loop); });
+  figures.PeakBytes = peak.Read();
+  return figures;
 }
 
 /**
@@ -501,6 +520,14 @@ struct BenchRow
   Measure Figures;
   /// Further figures of the row's table, by name (e.g. "vs_rest": a ratio).
   std::vector<std::pair<std::string, double>> Extra;
+
+  /// Adds the ratio of this row's times to `other`'s as `name` (wall
+  /// clock) and "cpu_" `name` (CPU time).
+  void AddRatio(const std::string& name, const Measure& other)
+  {
+    this->Extra.emplace_back(name, this->Figures.Seconds / other.Seconds);
+    this->Extra.emplace_back("cpu_" + name, this->Figures.CpuSeconds / other.CpuSeconds);
+  }
 };
 
 /// The light field of the bench's fish (or figure): `views` x `rows` views
@@ -607,11 +634,11 @@ void CageSizeRows(vtkLightField* fish,
     settings.Quick ? std::vector<int>{ 1, 3 } : std::vector<int>{ 1, 3, 10, 30, 100 };
   const int size = TableSize(settings);
   const std::size_t first = rows.size();
-  double three = 0.0;
+  Measure three;
   for (int boxes : counts)
   {
     const Measure figures = CageRenderTime(fish, boxes, size, settings.Repeat, true, peak);
-    three = boxes == 3 ? figures.Seconds : three;
+    three = boxes == 3 ? figures : three;
     const std::string name = std::to_string(boxes) + (boxes == 1 ? " box" : " boxes") +
       (boxes == 3      ? " (its parts)"
           : boxes == 1 ? " (one slab)"
@@ -621,8 +648,9 @@ void CageSizeRows(vtkLightField* fish,
   for (std::size_t r = first; r < rows.size(); ++r)
   {
     const Measure plain = CageRenderTime(fish, rows[r].Boxes, size, settings.Repeat, false, peak);
-    rows[r].Extra = { { "vs_3_boxes", rows[r].Figures.Seconds / three },
-      { "no_accel_ms", 1000.0 * plain.Seconds } };
+    rows[r].AddRatio("vs_3_boxes", three);
+    rows[r].Extra.emplace_back("no_accel_ms", 1000.0 * plain.Seconds);
+    rows[r].Extra.emplace_back("no_accel_cpu_ms", 1000.0 * plain.CpuSeconds);
   }
 }
 
@@ -646,9 +674,9 @@ void ProxyRows(const BenchSettings& settings,
     RenderTimes(fish, "fish", size, settings.Repeat, peak, vtkLightFieldRenderer::FOCAL_PLANE);
   const auto [rest, deformed] = RenderTimes(fish, "fish", size, settings.Repeat, peak);
   rows.push_back(Row("proxy", "undeformed fish, proxy", size, fish, 0, rest));
-  rows.back().Extra = { { "vs_plane", rest.Seconds / restPlane.Seconds } };
+  rows.back().AddRatio("vs_plane", restPlane);
   rows.push_back(Row("proxy", "deformed fish (swim, 3 boxes), proxy", size, fish, 3, deformed));
-  rows.back().Extra = { { "vs_plane", deformed.Seconds / deformedPlane.Seconds } };
+  rows.back().AddRatio("vs_plane", deformedPlane);
 }
 
 /**
@@ -740,16 +768,16 @@ void OutOfCoreRows(vtkLightField* fish,
         expected->GetVoidPointer(0),
         static_cast<std::size_t>(frame->GetNumberOfValues())) == 0;
     rows.push_back(Row("out of core", name, size, fish, 0, figures));
-    rows.back().Extra = { { "vs_in_memory", figures.Seconds / inMemory.Seconds },
-      { "cache_mb", cache->GetCacheSize() / 1048576.0 },
-      { "tiles_read", static_cast<double>(cache->GetTilesRead()) },
-      { "identical", identical ? 1.0 : 0.0 } };
+    rows.back().AddRatio("vs_in_memory", inMemory);
+    rows.back().Extra.emplace_back("cache_mb", cache->GetCacheSize() / 1048576.0);
+    rows.back().Extra.emplace_back("tiles_read", static_cast<double>(cache->GetTilesRead()));
+    rows.back().Extra.emplace_back("identical", identical ? 1.0 : 0.0);
   }
   lfd::io::RemoveQuietly(folder);
 }
 
-/// The reference loop's time at each size (s).
-using ReferenceTimes = std::map<int, double>;
+/// The reference loop's times at each size.
+using ReferenceTimes = std::map<int, Measure>;
 
 /// Prints the rows of `table` as one table, each figure also as a ratio to
 /// the reference loop at the row's frame size.
@@ -779,12 +807,14 @@ void PrintTable(const std::string& title,
   {
     return;
   }
-  std::printf("\n%-44s %8s %10s %12s %8s %8s",
+  std::printf("\n%-44s %8s %10s %12s %8s %8s %8s %8s",
     title.c_str(),
     "pixels",
     "ms/frame",
     "rays/s",
     "vs ref",
+    "cpu ms",
+    "cpu/ref",
     "peak MB");
   for (const std::string& column : columns)
   {
@@ -795,12 +825,15 @@ void PrintTable(const std::string& title,
   {
     const double pixels = static_cast<double>(row->Size) * row->Size;
     const double seconds = row->Figures.Seconds;
-    std::printf("%-44s %8.0f %10.2f %12.3g %7.2fx %8.0f",
+    const Measure& floor = reference.at(row->Size);
+    std::printf("%-44s %8.0f %10.2f %12.3g %7.2fx %8.2f %7.2fx %8.0f",
       row->Name.c_str(),
       pixels,
       1000.0 * seconds,
       pixels / seconds,
-      seconds / reference.at(row->Size),
+      seconds / floor.Seconds,
+      1000.0 * row->Figures.CpuSeconds,
+      row->Figures.CpuSeconds / floor.CpuSeconds,
       row->Figures.PeakBytes / 1048576.0);
     for (const std::string& column : columns)
     {
@@ -853,7 +886,9 @@ nlohmann::json BenchJson(const BenchSettings& settings,
       { "boxes", row.Boxes },
       { "ms_per_frame", 1000.0 * row.Figures.Seconds },
       { "rays_per_second", pixels / row.Figures.Seconds },
-      { "vs_reference", row.Figures.Seconds / reference.at(row.Size) },
+      { "vs_reference", row.Figures.Seconds / reference.at(row.Size).Seconds },
+      { "cpu_ms_per_frame", 1000.0 * row.Figures.CpuSeconds },
+      { "cpu_vs_reference", row.Figures.CpuSeconds / reference.at(row.Size).CpuSeconds },
       { "peak_rss_bytes", row.Figures.PeakBytes } };
     for (const auto& [name, value] : row.Extra)
     {
@@ -891,14 +926,9 @@ void Bench(const BenchSettings& settings)
   auto fish = BenchLightField("fish", views, rowsOfViews, image);
   for (int size : settings.Sizes)
   {
-    peak.Reset();
-    reference[size] = ReferenceTime(fish, size, settings.Repeat);
-    rows.push_back(Row("reference",
-      "reference loop (16 texel reads, no geometry)",
-      size,
-      fish,
-      0,
-      { reference[size], peak.Read() }));
+    reference[size] = ReferenceTime(fish, size, settings.Repeat, peak);
+    rows.push_back(Row(
+      "reference", "reference loop (16 texel reads, no geometry)", size, fish, 0, reference[size]));
   }
   for (const char* object : { "fish", "figure" })
   {
@@ -911,7 +941,7 @@ void Bench(const BenchSettings& settings)
       const auto [rest, deformed] = RenderTimes(lightField, object, size, settings.Repeat, peak);
       rows.push_back(Row("render", std::string("undeformed ") + object, size, lightField, 0, rest));
       rows.push_back(Row("render", deformedName, size, lightField, 3, deformed));
-      rows.back().Extra = { { "vs_rest", deformed.Seconds / rest.Seconds } };
+      rows.back().AddRatio("vs_rest", rest);
     }
   }
   LightFieldSizeRows(settings, peak, rows);
@@ -933,8 +963,11 @@ void Bench(const BenchSettings& settings)
   PrintTable(
     "undeformed fish out of core (lfd tile, --cache-size)", "out of core", rows, reference);
   std::printf("(median of %d renders each; vs ref: against the reference loop at the same "
-              "frame size, timed in the same run; peak MB: the process's peak resident memory "
-              "during the configuration (its light fields included); vs_rest: against the "
+              "frame size, timed in the same run; cpu ms: the process's CPU time per frame, "
+              "all threads, and cpu/ref its ratio to the reference loop's: on a loaded machine "
+              "the wall clock swings, CPU time much less; peak MB: the process's peak resident "
+              "memory during the configuration (its light fields included); cpu_ columns: the "
+              "ratio before them in CPU time; vs_rest: against the "
               "undeformed render; vs_plane: against the same render through the focal plane, "
               "timed just before; "
               "vs_3_boxes: against the 3 boxes of the same table; "
@@ -1031,7 +1064,8 @@ void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
   auto studio = std::make_shared<bool>(false);
   vtkNew<vtkLightFieldCapture> captureLimits;
   auto* benchCommand = app.add_subcommand("bench",
-    "print rays/s, ms/frame and peak memory of the renderer on fixed scenes (median of "
+    "print rays/s, ms/frame (wall clock, and the process's CPU time over all threads) and "
+    "peak memory of the renderer on fixed scenes (median of "
     "repeated renders; writes nothing unless --json), undeformed and deformed at each --size, "
     "each also as a ratio to a reference loop (16 texel reads per pixel, no geometry) timed in "
     "the same run, the cost against light-field size (views x resolution) and against cage "

@@ -352,7 +352,7 @@ enum class Passes
   RenderedOnPlane
 };
 
-/// With `cacheBytes` > 0 the Coaxial and Label passes stay on disk and are
+/// With `cacheBytes` > 0 the Coaxial, Label and Depth passes stay on disk and are
 /// read tile by tile through an image cache of that many bytes
 /// (vtkLightFieldReader::SetCacheSize; the dataset must be tiled, `lfd tile`).
 /// With `pieces` > 1, only the views of piece `piece` of the passes read into

@@ -2,11 +2,11 @@
 
 #include "lfdFileUtilities.h"
 
-#include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
+#include "vtkObject.h"
 #include "vtkOutputWindow.h"
 
 #include <cstdio>
@@ -190,9 +190,9 @@ void Observe(vtkObject* object, ProgressState* state)
 }
 }
 
-void ShowProgress(vtkAlgorithm* algorithm, const std::string& what)
+void ShowProgress(vtkObject* object, const std::string& what)
 {
-  Observe(algorithm, new ProgressState{ what, -1, isatty(fileno(stderr)) != 0 });
+  Observe(object, new ProgressState{ what, -1, isatty(fileno(stderr)) != 0 });
 }
 
 void ShowSteps(vtkObject* object,

@@ -12,7 +12,6 @@
 #include <functional>
 #include <string>
 
-class vtkAlgorithm;
 class vtkObject;
 
 namespace lfd
@@ -77,10 +76,11 @@ void PrintWarnings(vtkLightFieldErrorObserver* errors);
 bool DisplayAvailable();
 
 /**
- * Shows the algorithm's progress events on stderr, labelled `what`: a bar
+ * Shows the progress events of an algorithm (or of any object that sends
+ * them: vtkLightFieldTiler) on stderr, labelled `what`: a bar
  * redrawn in place on a terminal, one line per 10% otherwise (logs).
  */
-void ShowProgress(vtkAlgorithm* algorithm, const std::string& what);
+void ShowProgress(vtkObject* object, const std::string& what);
 
 /**
  * Shows the progress events of an object that says which step it is on

@@ -13,6 +13,7 @@
 #include "vtkLightFieldAnimationWriter.h"
 #include "vtkLightFieldRenderer.h"
 #include "vtkLightFieldScene.h"
+#include "vtkLightFieldTiler.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
@@ -362,7 +363,8 @@ void Lattice(const LatticeOptions& options)
 void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Command>& commands)
 {
   static const std::string CacheSizeHelp =
-    "read the light field's colours and labels out of core, tile by tile through an image cache "
+    "read the light field's colours, labels and depth (the proxy) out of core, tile by tile "
+    "through an image cache "
     "of SIZE bytes (K, M or G; e.g. 512M) instead of into memory (the default); the dataset must "
     "be tiled (lfd tile)";
   struct RenderOptions
@@ -489,8 +491,8 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
   auto tile = std::make_shared<TileOptions>();
   auto* tileCommand = app.add_subcommand("tile",
     "rewrite the light-field dataset LF as OUT with tiled, MIP-mapped TIFF images (same manifest, "
-    "rig and passes), which lfd render and lfd animate --cache-size read tile by tile; replaces "
-    "OUT when complete");
+    "rig and passes), which lfd render and lfd animate --cache-size read tile by tile; one image "
+    "in memory at a time, so LF may be larger than memory; replaces OUT when complete");
   tileCommand->add_option("LF", tile->In, "light-field dataset")->required();
   tileCommand->add_option("--out", tile->Out, "output dataset")->required();
   numbers.Add(tileCommand,
@@ -503,7 +505,15 @@ void AddRenderCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comma
     [tile]
     {
       const double start = vtkTimerLog::GetUniversalTime();
-      WriteLightField(ReadLightField(tile->In), tile->Out, tile->TileSize);
+      vtkNew<vtkLightFieldTiler> tiler;
+      tiler->SetFileName(tile->In.c_str());
+      tiler->SetDirectory(tile->Out.c_str());
+      tiler->SetTileSize(tile->TileSize);
+      lfd::ShowProgress(tiler, "tiling");
+      StepErrors errors;
+      errors->Observe(tiler);
+      tiler->Write();
+      errors.FailOnError();
       std::cout << "wrote " << tile->Out << " (" << tile->TileSize << "x" << tile->TileSize
                 << " tiles) in " << Seconds(start) << " s\n";
     },

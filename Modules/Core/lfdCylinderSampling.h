@@ -329,18 +329,21 @@ struct RaySamples
 inline std::vector<double> DepthRanges(const ViewStack<float>& depth, int views)
 {
   std::vector<double> ranges(2 * static_cast<std::size_t>(views), 0.0);
-  const std::size_t pixels = static_cast<std::size_t>(depth.Width) * depth.Height;
   for (int v = 0; v < views; ++v)
   {
     double low = std::numeric_limits<double>::infinity();
     double high = 0.0;
-    for (std::size_t p = 0; p < pixels; ++p)
+    // Texel by texel (ViewStack::Pixel): the stack may be out of core.
+    for (int y = 0; y < depth.Height; ++y)
     {
-      const double z = depth.Data[v * pixels + p];
-      if (z > 0.0)
+      for (int x = 0; x < depth.Width; ++x)
       {
-        low = std::min(low, z);
-        high = std::max(high, z);
+        const double z = *depth.Pixel(v, x, y);
+        if (z > 0.0)
+        {
+          low = std::min(low, z);
+          high = std::max(high, z);
+        }
       }
     }
     if (high > 0.0)
@@ -865,11 +868,12 @@ struct NearestDepthTiles
       float* nearest = this->Depth.data() + v * tiles;
       for (int y = 0; y < depth.Height; ++y)
       {
-        const float* row = depth.Pixel(v, 0, y);
         for (int x = 0; x < depth.Width; ++x)
         {
+          // Texel by texel: an out-of-core stack's pointer is one texel's.
+          const float z = *depth.Pixel(v, x, y);
           float& tile = nearest[(y / Size) * this->Columns + x / Size];
-          tile = row[x] > 0.0f ? std::min(tile, row[x]) : tile;
+          tile = z > 0.0f ? std::min(tile, z) : tile;
         }
       }
     }
@@ -919,7 +923,7 @@ struct LightFieldSampler
   ViewStack<std::uint8_t> Labels;         // 1 component, may be absent (Present())
   double FocalDistance = 0.0;
   /// The proxy: per-view depth maps (camera z, 0 = no surface), 1 component;
-  /// Data null = the paper's focal plane at FocalDistance.
+  /// not Present() = the paper's focal plane at FocalDistance.
   ViewStack<float> Depth;
   /// Per view v, the smallest and largest depth of its map at 2 v and
   /// 2 v + 1 (DepthRanges()).
@@ -950,7 +954,7 @@ struct LightFieldSampler
    * be unit). Pixels projecting outside a view contribute nothing.
    * Returns false when the ray misses the rig cylinder.
    *
-   * With a proxy (Depth.Data set) the ray is focused on the surface it meets
+   * With a proxy (Depth.Present()) the ray is focused on the surface it meets
    * first (s >= 0) and blended from the nearest views by angle
    * (GatherOnSurface); a ray that meets no surface, or whose focused samples
    * see background, falls back to the focal plane, as without a proxy.
@@ -963,7 +967,7 @@ struct LightFieldSampler
     out.Count = 0;
     out.Surface = std::numeric_limits<double>::quiet_NaN();
     const glm::dvec3 x = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
-    const bool hull = !this->Depth.Data && this->Hull && !this->Hull->Marks.empty();
+    const bool hull = !this->Depth.Present() && this->Hull && !this->Hull->Marks.empty();
     const long cell = hull ? this->Hull->Cell(x, *this->Layout) : -1;
     // Most skipped rays are unmarked in every sector: they skip the cylinder
     // entry and the atan2 of the azimuth too (a ray that misses the cylinder
@@ -985,7 +989,7 @@ struct LightFieldSampler
     }
     WeightedView views[4];
     const int nviews = ChooseViews(*this->Layout, azimuth, height, views);
-    if (this->Depth.Data && this->GatherOnSurface(o, d, azimuth, height, views, nviews, out))
+    if (this->Depth.Present() && this->GatherOnSurface(o, d, azimuth, height, views, nviews, out))
     {
       return true;
     }

@@ -173,7 +173,7 @@ public:
   /**
    * Where the pixels of the passes that are not in memory are read from
    * (nullptr: every pass is an array). A light field read out of core
-   * (vtkLightFieldReader::SetCacheSize) has no Coaxial and Label arrays;
+   * (vtkLightFieldReader::SetCacheSize) has no Coaxial, Label and Depth arrays;
    * vtkLightFieldRenderer samples them through this source. Copies, deep
    * or shallow, share it (it is read-only).
    */

@@ -9,8 +9,15 @@
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "lfdFileUtilities.h"
+#include "lfdImageFiles.h"
+#include "vtkErrorCode.h"
+
 #include <cctype>
 #include <cstdio>
+#include <filesystem>
+
+namespace fs = std::filesystem;
 
 namespace lfd
 {
@@ -227,6 +234,104 @@ Json BuildLightFieldManifest(vtkLightField* input,
       lfd::io::ParseJsonText(provenance, parsed, notJson) ? parsed : Json(provenance);
   }
   return manifest;
+}
+
+//------------------------------------------------------------------------------
+WriteFailure WriteLightFieldDataset(const std::string& directory,
+  const Json& manifest,
+  const std::vector<ImageFile>& files,
+  int tileSize,
+  const std::function<void(double)>& progress)
+{
+  if (tileSize != 0 && (tileSize < 16 || tileSize > 4096 || tileSize % 16 != 0))
+  {
+    return { vtkErrorCode::UnknownError,
+      directory + ": tile size " + std::to_string(tileSize) +
+        ": expected a multiple of 16 from 16 to 4096" };
+  }
+  std::error_code ec;
+  if (fs::exists(directory, ec))
+  {
+    const bool isDataset = fs::is_directory(directory, ec) &&
+      (fs::is_empty(directory, ec) || fs::exists(fs::path(directory) / "lightfield.json", ec));
+    if (!isDataset)
+    {
+      return {
+        vtkErrorCode::CannotOpenFileError,
+        directory +
+          ": exists and is not a light-field dataset (no lightfield.json); refusing to replace it"
+      };
+    }
+  }
+  const std::string temporary = lfd::io::TemporaryDirectoryName(directory);
+  lfd::io::RemoveQuietly(temporary);
+  fs::create_directories(temporary, ec);
+  if (ec)
+  {
+    return { vtkErrorCode::CannotOpenFileError,
+      directory + ": cannot create the directory: " + ec.message() };
+  }
+  for (const ImageFile& file : files)
+  {
+    fs::create_directories((fs::path(temporary) / file.Name).parent_path(), ec);
+    if (ec)
+    {
+      lfd::io::RemoveQuietly(temporary);
+      return { vtkErrorCode::CannotOpenFileError,
+        directory + ": cannot create a pass directory: " + ec.message() };
+    }
+  }
+  progress(0.0);
+  std::string error;
+  for (size_t done = 0; done < files.size(); ++done)
+  {
+    const ImageFile& file = files[done];
+    if (file.Read && !file.Read(error))
+    {
+      lfd::io::RemoveQuietly(temporary);
+      return { vtkErrorCode::FileFormatError, error };
+    }
+    const vtkIdType sliceValues =
+      static_cast<vtkIdType>(file.Width) * file.Height * file.Array->GetNumberOfComponents();
+    const std::string image = (fs::path(temporary) / file.Name).string();
+    const void* pixels = file.Array->GetVoidPointer(sliceValues * file.Slice);
+    const int components = file.Array->GetNumberOfComponents();
+    // Projector masks stay PNG: only the views' passes are read tile by tile.
+    const bool tiled = tileSize > 0 && file.Name.compare(0, 11, "projectors/") != 0;
+    if (!(tiled ? lfd::io::WriteTiledImagePixels(image,
+                    file.Width,
+                    file.Height,
+                    components,
+                    file.Array->GetDataType(),
+                    pixels,
+                    tileSize,
+                    error)
+                : lfd::io::WriteImagePixels(image,
+                    file.Width,
+                    file.Height,
+                    components,
+                    file.Array->GetDataType(),
+                    pixels,
+                    error)))
+    {
+      lfd::io::RemoveQuietly(temporary);
+      return { vtkErrorCode::OutOfDiskSpaceError, directory + ": " + file.Name + ": " + error };
+    }
+    progress((done + 1.0) / (files.size() + 1.0));
+  }
+  const std::string manifestPath = (fs::path(temporary) / "lightfield.json").string();
+  const std::string manifestText = manifest.dump(2) + "\n";
+  if (!lfd::io::WriteFileContents(manifestPath, manifestText.data(), manifestText.size(), error))
+  {
+    lfd::io::RemoveQuietly(temporary);
+    return { vtkErrorCode::OutOfDiskSpaceError, directory + ": lightfield.json: " + error };
+  }
+  if (!lfd::io::CommitDirectory(temporary, directory, error))
+  {
+    return { vtkErrorCode::CannotOpenFileError, directory + ": " + error };
+  }
+  progress(1.0);
+  return {};
 }
 }
 }

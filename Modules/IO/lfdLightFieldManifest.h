@@ -3,7 +3,8 @@
  * @brief  the light-field dataset format: image names and lightfield.json
  *
  * One definition of the dataset format (Data/README.md) for the writers
- * that produce it: vtkLightFieldWriter (a whole light field at once) and
+ * that produce it: vtkLightFieldWriter (a whole light field at once),
+ * vtkLightFieldTiler (a dataset rewritten tiled, image after image) and
  * vtkIncrementalLightFieldWriter (a capture, view after view). Private to
  * the IO module (nlohmann::json).
  */
@@ -12,6 +13,7 @@
 
 #include "lfdJsonFields.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,18 @@ struct ImageFile
   int Slice;
   int Width;
   int Height;
+  /// When set, fills the slice just before the file is written (false: the
+  /// failure, in one line, in its argument), so that a dataset can be
+  /// streamed through one slice held in memory (vtkLightFieldTiler).
+  std::function<bool(std::string&)> Read = {};
+};
+
+/// A failed write of a dataset: the vtkErrorCode and the one-line message
+/// (Code 0: no failure).
+struct WriteFailure
+{
+  unsigned long Code = 0;
+  std::string Message;
 };
 
 /// The file of a pass's view, relative to the dataset directory:
@@ -58,6 +72,22 @@ Json BuildLightFieldManifest(vtkLightField* input,
   int views,
   std::vector<ImageFile>& files,
   bool tiled = false);
+
+/**
+ * Writes a dataset: the images `files` (tiled, MIP-mapped TIFF with
+ * `tileSize` x `tileSize` tiles when `tileSize` > 0, except the projector
+ * masks; PNG and EXR otherwise) and `manifest` into a temporary sibling of
+ * `directory`, then puts it in place of `directory`, so nothing
+ * half-written is ever seen there; `progress` is told the fraction done.
+ * Refused before anything is written: a `tileSize` that is not 0 or a
+ * multiple of 16 from 16 to 4096, and a `directory` that exists and is
+ * neither empty nor a light-field dataset (no lightfield.json).
+ */
+WriteFailure WriteLightFieldDataset(const std::string& directory,
+  const Json& manifest,
+  const std::vector<ImageFile>& files,
+  int tileSize,
+  const std::function<void(double)>& progress);
 }
 }
 

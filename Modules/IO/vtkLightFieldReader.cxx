@@ -66,10 +66,11 @@ struct Manifest
 };
 
 // The passes an out-of-core reader serves through the image cache: the
-// ones the renderer samples per ray.
+// ones the renderer samples per ray (Depth: the proxy's walk).
 bool IsCachedPass(int pass)
 {
-  return pass == vtkLightField::COAXIAL || pass == vtkLightField::LABEL;
+  return pass == vtkLightField::COAXIAL || pass == vtkLightField::LABEL ||
+    pass == vtkLightField::DEPTH;
 }
 
 std::string LowerCase(const char* text)
@@ -80,6 +81,13 @@ std::string LowerCase(const char* text)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   }
   return lower;
+}
+
+// The manifest's field of view `view`'s image of `pass`: "passes.coaxial[3]".
+std::string ImageField(int pass, int view)
+{
+  return ElementPath(
+    MemberPath("passes", LowerCase(vtkLightField::GetPassName(pass)).c_str()), view);
 }
 
 std::string ManifestPath(const std::string& fileName)
@@ -486,11 +494,9 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
     {
       continue;
     }
-    const std::string passKey =
-      MemberPath("passes", LowerCase(vtkLightField::GetPassName(pass)).c_str());
     for (int i = piece[0]; i < piece[1]; ++i)
     {
-      images.push_back({ &manifest.Images[pass][i], ElementPath(passKey, i), pass, i, {} });
+      images.push_back({ &manifest.Images[pass][i], ImageField(pass, i), pass, i, {} });
     }
   }
   for (size_t i = 0; i < manifest.Masks.size(); ++i)
@@ -610,6 +616,49 @@ int vtkLightFieldReader::RequestData(vtkInformation*,
   output->SetProvenance(manifest.HasProvenance ? manifest.Provenance.c_str() : nullptr);
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkLightFieldReader::GetImageFileName(int pass, int view)
+{
+  const Manifest& manifest = this->Internal->Parsed;
+  return pass >= 0 && pass < vtkLightField::NUMBER_OF_PASSES && view >= 0 &&
+      view < static_cast<int>(manifest.Images[pass].size())
+    ? manifest.Images[pass][view].c_str()
+    : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldReader::ReadView(int pass, int view, vtkDataArray* pixels)
+{
+  const char* image = this->GetImageFileName(pass, view);
+  if (!image || !pixels || pixels->GetDataType() != vtkLightField::GetPassScalarType(pass))
+  {
+    this->Fail(nullptr,
+      vtkErrorCode::UnknownError,
+      "ReadView: " +
+        std::string(!image ? "the manifest lists no such image"
+                           : "expected an array of the pass's scalar type") +
+        " (pass " + std::to_string(pass) + ", view " + std::to_string(view) + ")");
+    return false;
+  }
+  const Manifest& manifest = this->Internal->Parsed;
+  const int components = vtkLightField::GetPassComponents(pass);
+  lfd::io::ImageHeader header;
+  if (!this->CheckImage(image,
+        ImageField(pass, view),
+        manifest.Width,
+        manifest.Height,
+        vtkLightField::GetPassScalarType(pass),
+        components,
+        header,
+        nullptr))
+  {
+    return false;
+  }
+  pixels->SetNumberOfComponents(components);
+  pixels->SetNumberOfTuples(static_cast<vtkIdType>(manifest.Width) * manifest.Height);
+  return this->ReadImageInto(image, ImageField(pass, view), header, pixels, 0, nullptr);
 }
 
 //------------------------------------------------------------------------------

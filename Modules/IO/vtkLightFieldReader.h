@@ -31,8 +31,9 @@
  * vtkLightFieldErrorObserver observing the reader records both quietly and
  * gives back the reader's one line.
  *
- * **Out of core.** With a CacheSize (bytes, > 0) the Coaxial and Label
- * passes are not read into memory: the output has no arrays for them but a
+ * **Out of core.** With a CacheSize (bytes, > 0) the Coaxial, Label and
+ * Depth passes (what the renderer reads per ray; Depth: the proxy) are not
+ * read into memory: the output has no arrays for them but a
  * vtkLightFieldImageCache of that budget (vtkLightField::GetTexelSource())
  * that the renderer reads tile by tile; the other selected passes are read
  * as usual. Their images must then be tiled (`lfd tile`,
@@ -115,8 +116,24 @@ public:
 
   ///@{
   /**
-   * 0 (default): every selected pass is read into memory. > 0: the Coaxial
-   * and Label passes are served out of core by an image cache of this many
+   * One image at a time, after UpdateInformation(), for streaming a
+   * dataset larger than memory view by view (vtkLightFieldTiler):
+   * GetImageFileName() is the image of view `view` of `pass` (a
+   * vtkLightField::Pass) as the manifest names it, resolved against its
+   * folder, or nullptr when the manifest lists none; ReadView() reads that
+   * image alone into `pixels` (an array of the pass's scalar type, given
+   * the pass's components and one view's width x height tuples), checked
+   * as Update() checks every image, and returns false after reporting the
+   * error.
+   */
+  const char* GetImageFileName(int pass, int view);
+  bool ReadView(int pass, int view, vtkDataArray* pixels);
+  ///@}
+
+  ///@{
+  /**
+   * 0 (default): every selected pass is read into memory. > 0: the Coaxial,
+   * Label and Depth passes are served out of core by an image cache of this many
    * bytes (see Out of core above).
    */
   vtkSetClampMacro(CacheSize, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);

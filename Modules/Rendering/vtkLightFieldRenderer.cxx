@@ -235,15 +235,15 @@ struct RenderRows
   }
 };
 
-/// The uint8 pass `pass` of `lightField` with `components` components as the
-/// samplers read it: its array, or else its texels through the light
-/// field's texel source (out of core); not Present() when it has neither.
-lfd::ViewStack<std::uint8_t> BytePass(vtkLightField* lightField, int pass, int components)
+/// The pass `pass` of `lightField` (values of type T, `components`
+/// components) as the samplers read it: its array, or else its texels
+/// through the light field's texel source (out of core); not Present() when
+/// it has neither.
+template<typename T>
+lfd::ViewStack<T> PassStack(vtkLightField* lightField, int pass, int components)
 {
-  lfd::ViewStack<std::uint8_t> stack{
-    nullptr, lightField->GetWidth(), lightField->GetHeight(), components
-  };
-  auto* array = vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(pass));
+  lfd::ViewStack<T> stack{ nullptr, lightField->GetWidth(), lightField->GetHeight(), components };
+  auto* array = vtkAOSDataArrayTemplate<T>::FastDownCast(lightField->GetPass(pass));
   if (array && array->GetNumberOfComponents() == components)
   {
     stack.Data = array->GetPointer(0);
@@ -264,7 +264,8 @@ lfd::ViewStack<std::uint8_t> RenderableRadiance(vtkObject* self, vtkLightField* 
     vtkErrorWithObjectMacro(self, "The input is not a vtkLightField.");
     return {};
   }
-  const lfd::ViewStack<std::uint8_t> radiance = BytePass(input, vtkLightField::COAXIAL, 3);
+  const lfd::ViewStack<std::uint8_t> radiance =
+    PassStack<std::uint8_t>(input, vtkLightField::COAXIAL, 3);
   if (!radiance.Present())
   {
     vtkErrorWithObjectMacro(
@@ -561,7 +562,8 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   sampler.Layout = &layout;
   sampler.Cameras = cameras.data();
   sampler.Radiance = radiance;
-  const lfd::ViewStack<std::uint8_t> labels = BytePass(lightField, vtkLightField::LABEL, 1);
+  const lfd::ViewStack<std::uint8_t> labels =
+    PassStack<std::uint8_t>(lightField, vtkLightField::LABEL, 1);
   lfd::RenderViewSettings settings;
   settings.UseLabels = this->UseLabels && labels.Present();
   if (settings.UseLabels)
@@ -569,20 +571,20 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.Labels = labels;
   }
   sampler.FocalDistance = this->FocalDistance;
-  vtkDataArray* depth = input->GetPass(vtkLightField::DEPTH);
-  if (this->FocalSurface == FOCAL_PROXY && !vtkFloatArray::SafeDownCast(depth))
+  const lfd::ViewStack<float> depth = PassStack<float>(input, vtkLightField::DEPTH, 1);
+  if (this->FocalSurface == FOCAL_PROXY && !depth.Present())
   {
     vtkErrorMacro("The focal surface is the proxy (render.focal: proxy) but the light field has "
                   "no float Depth pass: compute one with `lfd proxy`.");
     return 0;
   }
-  if (this->FocalSurface != FOCAL_PLANE && vtkFloatArray::SafeDownCast(depth))
+  if (this->FocalSurface != FOCAL_PLANE && depth.Present())
   {
-    sampler.Depth = {
-      vtkFloatArray::SafeDownCast(depth)->GetPointer(0), input->GetWidth(), input->GetHeight(), 1
-    };
+    sampler.Depth = depth;
+    // Keyed by what holds the pass: its array, or the image cache serving it.
+    vtkObject* holder = input->GetPass(vtkLightField::DEPTH);
     const std::vector<double>& extent =
-      this->GetProxyExtent(depth, input->GetWidth(), input->GetHeight(), rig, cameras);
+      this->GetProxyExtent(holder ? holder : input->GetTexelSource(), depth, rig, cameras);
     sampler.DepthRange = extent.data() + 6;
     sampler.SurfaceLow = glm::dvec3(extent[0], extent[1], extent[2]);
     sampler.SurfaceHigh = glm::dvec3(extent[3], extent[4], extent[5]);
@@ -590,7 +592,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.ProxyViews = this->ProxyViews;
   }
   // The hull reads the Label pass whole: not for labels served by an image cache.
-  if (settings.UseLabels && plane.Empty() && !sampler.Depth.Data && labels.Data)
+  if (settings.UseLabels && plane.Empty() && !sampler.Depth.Present() && labels.Data)
   {
     sampler.Hull = &this->GetLabelHull(lightField->GetPass(vtkLightField::LABEL),
       input->GetWidth(),
@@ -687,19 +689,15 @@ void vtkLightFieldRenderer::GetEyePinhole(double K[9], double R[9], double t[3])
 }
 
 //------------------------------------------------------------------------------
-const std::vector<double>& vtkLightFieldRenderer::GetProxyExtent(vtkDataArray* depth,
-  int width,
-  int height,
+const std::vector<double>& vtkLightFieldRenderer::GetProxyExtent(vtkObject* holder,
+  const lfd::ViewStack<float>& stack,
   vtkCameraRig* rig,
   const std::vector<lfd::PinholeCamera>& cameras)
 {
-  if (depth != this->ProxyExtentArray || depth->GetMTime() > this->ProxyExtentTime ||
+  if (holder != this->ProxyExtentArray || holder->GetMTime() > this->ProxyExtentTime ||
     rig->GetMTime() > this->ProxyExtentTime)
   {
     const int views = static_cast<int>(cameras.size());
-    const lfd::ViewStack<float> stack{
-      vtkFloatArray::SafeDownCast(depth)->GetPointer(0), width, height, 1
-    };
     glm::dvec3 low, high;
     if (!lfd::DepthBounds(stack, cameras.data(), views, low, high))
     {
@@ -710,7 +708,7 @@ const std::vector<double>& vtkLightFieldRenderer::GetProxyExtent(vtkDataArray* d
     this->ProxyExtent.insert(this->ProxyExtent.end(), ranges.begin(), ranges.end());
     this->ProxyTiles = std::make_unique<lfd::NearestDepthTiles>();
     this->ProxyTiles->Build(stack, views);
-    this->ProxyExtentArray = depth;
+    this->ProxyExtentArray = holder;
     this->ProxyExtentTime.Modified();
   }
   return this->ProxyExtent;

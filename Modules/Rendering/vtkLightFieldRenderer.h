@@ -68,6 +68,8 @@ struct NearestDepthTiles;
 struct PinholeCamera;
 struct LabelHull;
 struct RingLayout;
+template<typename T>
+struct ViewStack;
 }
 
 class vtkCamera;
@@ -402,12 +404,12 @@ private:
    * The proxy's extent: the bounds of its surface points (6 values, low
    * then high, lfd::DepthBounds), then per view the smallest and largest
    * depth (lfd::DepthRanges); with ProxyTiles, the coarse level of the
-   * depth walk (lfd::NearestDepthTiles); cached while the Depth pass and
-   * the rig are unchanged.
+   * depth walk (lfd::NearestDepthTiles); cached while `holder` (the Depth
+   * pass's array, or the image cache that serves `depth`) and the rig are
+   * unchanged.
    */
-  const std::vector<double>& GetProxyExtent(vtkDataArray* depth,
-    int width,
-    int height,
+  const std::vector<double>& GetProxyExtent(vtkObject* holder,
+    const lfd::ViewStack<float>& depth,
     vtkCameraRig* rig,
     const std::vector<lfd::PinholeCamera>& cameras);
 #endif
@@ -434,7 +436,7 @@ private:
 
   std::vector<double> ProxyExtent;
   std::unique_ptr<lfd::NearestDepthTiles> ProxyTiles;
-  vtkDataArray* ProxyExtentArray = nullptr; // compared, never dereferenced
+  vtkObject* ProxyExtentArray = nullptr; // compared, never dereferenced
   vtkTimeStamp ProxyExtentTime;
 
   vtkSmartPointer<vtkLightField> Parts; // the derived light field of OnePart()

@@ -6,15 +6,23 @@
 // read more bytes than it holds and read tiles again on a second orbit,
 // where a cache as large as the data reads none. Errors: an untiled dataset
 // and a missing tile file are one message naming the image.
+//
+// `lfd tile` (vtkLightFieldTiler) streams: it writes the files
+// vtkLightFieldWriter writes from the light field read whole, byte for
+// byte, while its peak memory does not grow with the number of views. The
+// proxy out of core: a Depth pass served by the cache too renders the same
+// frames, through the proxy, as from memory.
 #include "lfdIOTestUtilities.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLightField.h"
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldImageCache.h"
 #include "vtkLightFieldReader.h"
 #include "vtkLightFieldRenderer.h"
+#include "vtkLightFieldTiler.h"
 #include "vtkLightFieldWriter.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -23,6 +31,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
+#include <malloc.h> // malloc_trim
 
 namespace
 {
@@ -85,10 +96,100 @@ vtkSmartPointer<vtkLightField> Read(const std::string& directory,
 
 bool SameArray(vtkDataArray* a, vtkDataArray* b)
 {
-  auto* x = vtkUnsignedCharArray::SafeDownCast(a);
-  auto* y = vtkUnsignedCharArray::SafeDownCast(b);
-  return x && y && x->GetNumberOfValues() == y->GetNumberOfValues() &&
-    std::memcmp(x->GetPointer(0), y->GetPointer(0), x->GetNumberOfValues()) == 0;
+  return a && b && a->GetDataType() == b->GetDataType() &&
+    a->GetNumberOfValues() == b->GetNumberOfValues() &&
+    std::memcmp(a->GetVoidPointer(0),
+      b->GetVoidPointer(0),
+      static_cast<size_t>(a->GetNumberOfValues()) * a->GetDataTypeSize()) == 0;
+}
+
+// A Depth pass for MakeLightField's ring: the depth (camera z) of a sphere
+// of radius 1 at the rig's centre, about, as each camera sees it (0: no
+// surface): a proxy that rays meet.
+void AddSphereDepth(vtkLightField* lightField)
+{
+  auto* depth = vtkFloatArray::SafeDownCast(lightField->AllocatePass(vtkLightField::DEPTH));
+  const int size = lightField->GetWidth();
+  for (int v = 0; v < lightField->GetNumberOfViews(); ++v)
+  {
+    double K[9];
+    lightField->GetRig()->GetIntrinsics(v, K);
+    for (int y = 0; y < size; ++y)
+    {
+      for (int x = 0; x < size; ++x)
+      {
+        // Offsets from the axis at the sphere's centre, 4 in front of the camera.
+        const double u = 4.0 * (x - K[2]) / K[0];
+        const double w = 4.0 * (y - K[5]) / K[4];
+        const double r2 = u * u + w * w;
+        depth->SetValue(lightField->GetPointIndex(v, x, y),
+          r2 < 1.0 ? static_cast<float>(4.0 - std::sqrt(1.0 - r2)) : 0.0f);
+      }
+    }
+  }
+}
+
+// The process's resident memory now and its peak since the last ResetPeak(),
+// in bytes (/proc/self/status: VmRSS and VmHWM).
+long long ResidentBytes(const char* key)
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.rfind(key, 0) == 0)
+    {
+      return 1024LL * std::atoll(line.c_str() + std::strlen(key));
+    }
+  }
+  return -1;
+}
+
+void ResetPeak()
+{
+  std::ofstream("/proc/self/clear_refs") << "5";
+}
+
+// How far the process's peak resident memory rises above its resident
+// memory while `work` runs, in bytes; freed heap memory is given back to
+// the system first, so that reusing it counts.
+template<typename Work>
+long long PeakGrowth(Work&& work)
+{
+  malloc_trim(0);
+  ResetPeak();
+  const long long before = ResidentBytes("VmRSS:");
+  work();
+  return ResidentBytes("VmHWM:") - before;
+}
+
+// Tiles `source` into `target`; the error message, empty on success.
+std::string Tile(const std::string& source, const std::string& target)
+{
+  vtkNew<vtkLightFieldTiler> tiler;
+  vtkNew<vtkLightFieldErrorObserver> catcher;
+  catcher->Observe(tiler);
+  tiler->SetFileName(source.c_str());
+  tiler->SetDirectory(target.c_str());
+  tiler->SetTileSize(64);
+  tiler->Write();
+  return catcher->GetErrorMessage();
+}
+
+std::string FileContents(const std::string& path)
+{
+  std::ifstream file(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+}
+
+size_t CountFiles(const std::string& directory)
+{
+  size_t count = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(directory))
+  {
+    count += entry.is_regular_file() ? 1 : 0;
+  }
+  return count;
 }
 
 // Renders `frames` views on an orbit around the ring from both light fields;
@@ -97,12 +198,15 @@ bool SameArray(vtkDataArray* a, vtkDataArray* b)
 int CompareOrbit(vtkLightField* inMemory,
   vtkLightField* outOfCore,
   int frames,
-  vtkIdType* lit = nullptr)
+  vtkIdType* lit = nullptr,
+  int focal = vtkLightFieldRenderer::FOCAL_AUTOMATIC)
 {
   vtkNew<vtkLightFieldRenderer> memory;
   vtkNew<vtkLightFieldRenderer> cached;
   memory->SetInputData(inMemory);
   cached->SetInputData(outOfCore);
+  memory->SetFocalSurface(focal);
+  cached->SetFocalSurface(focal);
   vtkNew<vtkCamera> camera;
   camera->SetFocalPoint(0.0, 0.0, 0.0);
   camera->SetViewUp(0.0, 1.0, 0.0);
@@ -125,12 +229,111 @@ int CompareOrbit(vtkLightField* inMemory,
     {
       *lit += pixels->GetValue(3 * p) || pixels->GetValue(3 * p + 1) || pixels->GetValue(3 * p + 2);
     }
-    different += SameArray(memory->GetOutput()->GetPointData()->GetScalars(),
-                   cached->GetOutput()->GetPointData()->GetScalars())
+    vtkPointData* expected = memory->GetOutput()->GetPointData();
+    vtkPointData* actual = cached->GetOutput()->GetPointData();
+    different += SameArray(expected->GetScalars(), actual->GetScalars()) &&
+        SameArray(expected->GetArray("Depth"), actual->GetArray("Depth"))
       ? 0
       : 1;
   }
   return different;
+}
+
+// `lfd tile` streams (vtkLightFieldTiler), with every pass; the proxy's
+// Depth pass out of core renders as from memory.
+void TestTilingAndProxy(const std::string& folder)
+{
+  // Two untiled datasets of 8 and 32 views of 128^2 (RGB, label, depth):
+  // tiling the larger must not hold more of it in memory.
+  constexpr int Image = 128;
+  const vtkTypeInt64 viewBytes = vtkTypeInt64(Image) * Image * (3 + 1 + 4);
+  long long peak[2] = { 0, 0 };
+  const int counts[2] = { 8, 32 };
+  std::string message;
+  for (int i = 0; i < 2; ++i)
+  {
+    const std::string name = folder + "/views" + std::to_string(counts[i]);
+    {
+      vtkSmartPointer<vtkLightField> lightField = MakeLightField(Image, counts[i]);
+      AddSphereDepth(lightField);
+      lfdtest::Check(Write(lightField, name + ".lf", 0), "written untiled: " + name + ".lf");
+    }
+    peak[i] = PeakGrowth([&] { message = Tile(name + ".lf", name + "-tiled.lf"); });
+    lfdtest::CheckEqual(message, std::string(), "vtkLightFieldTiler error, " + name);
+  }
+  // The measure sees a light field read whole: the way `lfd tile` did it.
+  const std::string whole = folder + "/views32-whole.lf";
+  vtkSmartPointer<vtkLightField> source;
+  const long long wholePeak = PeakGrowth(
+    [&]
+    {
+      source = Read(folder + "/views32.lf", 0, message);
+      Write(source, whole, 64);
+    });
+  std::cout << "     peak memory while tiling: 8 views +" << peak[0] / 1024 << " KiB, 32 views +"
+            << peak[1] / 1024 << " KiB; 32 views read whole and written +" << wholePeak / 1024
+            << " KiB (one view: " << viewBytes / 1024 << " KiB)\n";
+  lfdtest::CheckRange(static_cast<double>(wholePeak),
+    static_cast<double>(16 * viewBytes),
+    1e300,
+    "peak memory of 32 views read whole, then written tiled (bytes)");
+  lfdtest::CheckRange(static_cast<double>(peak[1] - peak[0]),
+    -1e300,
+    static_cast<double>(4 * viewBytes),
+    "peak memory of tiling 32 views over that of 8 views (bytes; reading the dataset whole: +" +
+      std::to_string(24 * viewBytes) + ")");
+
+  // The dataset vtkLightFieldWriter writes from the light field read whole:
+  // the same manifest and files, the same pixels. (Not the same bytes: a
+  // TIFF holds the time it was written, and OpenImageIO leaves the padding
+  // of partial tiles of the coarser levels unset; every level's pixels are
+  // computed from the same first level by the same code.)
+  const std::string streamed = folder + "/views32-tiled.lf";
+  lfdtest::CheckEqual(CountFiles(streamed),
+    CountFiles(whole),
+    "files of the streamed tiling (manifest, 3 passes x 32 views: 97)");
+  lfdtest::Check(
+    FileContents(streamed + "/lightfield.json") == FileContents(whole + "/lightfield.json"),
+    "the streamed tiling's manifest equals the whole one's");
+  vtkSmartPointer<vtkLightField> inMemory = Read(streamed, 0, message);
+  for (int pass : { vtkLightField::COAXIAL, vtkLightField::LABEL, vtkLightField::DEPTH })
+  {
+    lfdtest::Check(SameArray(inMemory->GetPass(pass), source->GetPass(pass)),
+      std::string("the streamed tiling's ") + vtkLightField::GetPassName(pass) +
+        " read back equals the source's");
+  }
+
+  // The proxy through the cache: Depth is served by it too.
+  vtkSmartPointer<vtkLightField> outOfCore = Read(streamed, 16 << 20, message);
+  auto* cache = vtkLightFieldImageCache::SafeDownCast(outOfCore->GetTexelSource());
+  lfdtest::Check(cache && cache->HasPass(vtkLightField::DEPTH) &&
+      !outOfCore->GetPass(vtkLightField::DEPTH) && inMemory->GetPass(vtkLightField::DEPTH),
+    "out of core: the Depth pass served by the image cache, no Depth array");
+  lfdtest::CheckEqual(
+    CompareOrbit(inMemory, outOfCore, 6, nullptr, vtkLightFieldRenderer::FOCAL_PROXY),
+    0,
+    "frames through the proxy (Radiance and Depth) that differ");
+  // The proxy is used: its frames are not the plane's.
+  vtkNew<vtkLightFieldRenderer> plane;
+  vtkNew<vtkLightFieldRenderer> proxy;
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0.0, 0.4, 6.0);
+  camera->SetViewAngle(35.0);
+  for (vtkLightFieldRenderer* renderer : { plane.Get(), proxy.Get() })
+  {
+    renderer->SetInputData(outOfCore);
+    renderer->SetCamera(camera);
+    renderer->SetWidth(96);
+    renderer->SetHeight(96);
+  }
+  plane->SetFocalSurfaceToPlane();
+  proxy->SetFocalSurfaceToProxy();
+  plane->Update();
+  proxy->Update();
+  lfdtest::Check(!SameArray(plane->GetOutput()->GetPointData()->GetArray("Depth"),
+                   proxy->GetOutput()->GetPointData()->GetArray("Depth")),
+    "the proxy's frame has the surface's depth, not the plane's");
+  lfdtest::CheckEqual(std::string(cache->GetError()), std::string(), "no Depth tile failed");
 }
 }
 
@@ -200,6 +403,8 @@ int TestOutOfCoreLightField(int, char*[])
     true,
     message,
     { "passes.coaxial[0]", "coaxial/view_0000.png", "not tiled", "lfd tile" });
+
+  TestTilingAndProxy(folder);
 
   // A missing tile file is named before anything is read.
   std::filesystem::remove(tiled + "/label/view_0005.tif");
