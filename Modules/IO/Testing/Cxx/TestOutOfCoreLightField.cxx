@@ -24,7 +24,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace
+namespace TestOutOfCoreLightFieldHelpers
 {
 // OpenImageIO's release builds hold at least 10 MiB of tiles whatever the
 // budget: the light field is 4 x that, 72 views of 384^2 (RGB + label).
@@ -136,6 +136,7 @@ int CompareOrbit(vtkLightField* inMemory,
 
 int TestOutOfCoreLightField(int, char*[])
 {
+  using namespace TestOutOfCoreLightFieldHelpers;
   const std::string folder = lfdtest::ScratchFolder("TestOutOfCoreLightField");
   const std::string tiled = folder + "/tiled.lf";
   vtkSmartPointer<vtkLightField> original = MakeLightField(Size, Views);
