@@ -29,7 +29,7 @@ inline bool Check(bool ok, const std::string& what)
 }
 
 /// Prints the measured `value` next to its `limit`; counts a failure.
-inline void Check(bool ok, const char* what, double value, double limit)
+inline void Check(bool ok, const std::string& what, double value, double limit)
 {
   std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (limit " << limit << ")\n";
   Failures() += ok ? 0 : 1;
