@@ -44,6 +44,17 @@ bool Expect(bool ok, const std::string& what, const T& value)
   return ok;
 }
 
+/// `actual` must equal `expected`.
+template<typename T>
+bool CheckEqual(const T& actual, const T& expected, const std::string& what)
+{
+  const bool ok = actual == expected;
+  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << actual << " (expected " << expected
+            << ")\n";
+  Failures() += ok ? 0 : 1;
+  return ok;
+}
+
 /// `value` must be within `tolerance` of `expected`.
 inline bool Expect(const std::string& what, double value, double expected, double tolerance = 1e-9)
 {

@@ -20,16 +20,6 @@
 
 namespace lfdtest
 {
-template<typename T>
-bool CheckEqual(const T& actual, const T& expected, const std::string& what)
-{
-  const bool ok = actual == expected;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << actual << " (expected " << expected
-            << ")\n";
-  Failures() += ok ? 0 : 1;
-  return ok;
-}
-
 inline bool CheckRange(double value, double low, double high, const std::string& what)
 {
   const bool ok = value >= low && value <= high;
