@@ -6,6 +6,7 @@
 #define lfdCameraTestScene_h
 
 #include "lfdPixelFormat.h"
+#include "lfdTestChecks.h"
 #include "vtkCameraRig.h"
 #include "vtkImageData.h"
 #include "vtkLightField.h"
@@ -28,18 +29,6 @@ namespace lfdtest
 {
 constexpr int FrameSize = 96;
 constexpr int RingViews = 36;
-
-inline int& Failures()
-{
-  static int failures = 0;
-  return failures;
-}
-
-inline void Check(bool ok, const std::string& what, double value, double limit)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (limit " << limit << ")\n";
-  Failures() += ok ? 0 : 1;
-}
 
 struct CameraScene
 {

@@ -4,6 +4,7 @@
 #define lfdCalibrationTestUtilities_h
 
 #include "lfdPinholeCamera.h"
+#include "lfdTestChecks.h"
 #include "vtkCalibrationImageSource.h"
 #include "vtkCharucoBoard.h"
 #include "vtkImageData.h"
@@ -16,18 +17,6 @@
 
 namespace lfdtest
 {
-inline int& Failures()
-{
-  static int failures = 0;
-  return failures;
-}
-
-inline void Check(bool ok, const char* what, double value, double limit)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (limit " << limit << ")\n";
-  Failures() += ok ? 0 : 1;
-}
-
 /// A camera of the tests: row-major K, R, t and distortion (k1, k2, p1, p2, k3).
 struct Camera
 {

@@ -5,24 +5,17 @@
 // displaced by an affine map reproduces it, and points outside the region
 // do not move.
 #include "lfdBernstein.h"
+#include "lfdTestChecks.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <random>
 
+using lfdtest::Expect;
+
 namespace
 {
-int failures = 0;
-
-void Expect(const char* what, double value, double expected, double tolerance)
-{
-  const bool ok = std::abs(value - expected) <= tolerance;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (expected " << expected
-            << ")\n";
-  failures += ok ? 0 : 1;
-}
-
 double Binomial(int n, int i)
 {
   double c = 1.0;
@@ -103,5 +96,5 @@ int TestBernstein(int, char*[])
     glm::length(lfd::FreeFormDeformation(lattice, outside) - outside),
     0.0,
     0.0);
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

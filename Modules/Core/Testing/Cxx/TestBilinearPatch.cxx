@@ -3,24 +3,17 @@
 // parallelogram and collapsed patches hit them at the known (s,t) and T; a
 // saddle is crossed twice; parallel, coplanar and missing rays get no hit.
 #include "lfdRayWarp.h"
+#include "lfdTestChecks.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <random>
 
+using lfdtest::Expect;
+
 namespace
 {
-int failures = 0;
-
-void Expect(const char* what, double value, double expected, double tolerance = 1e-9)
-{
-  const bool ok = std::abs(value - expected) <= tolerance;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (expected " << expected
-            << ")\n";
-  failures += ok ? 0 : 1;
-}
-
 glm::dvec3 Patch(const glm::dvec3 p[4], double s, double t)
 {
   return (1 - s) * (1 - t) * p[0] + s * (1 - t) * p[1] + (1 - s) * t * p[2] + s * t * p[3];
@@ -127,5 +120,5 @@ int TestBilinearPatch(int, char*[])
     CountHits(saddle, { -1, 0.5, -0.5 }, { 1, 0, 0.5 }),
     0);
 
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

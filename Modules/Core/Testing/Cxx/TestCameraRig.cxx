@@ -4,6 +4,7 @@
 // made once and cached by the rig's modification time (reading the layout
 // neither fits nor modifies the rig), and the refusal of a degenerate rig.
 #include "lfdCylinderSampling.h"
+#include "lfdTestChecks.h"
 #include "vtkCameraRig.h"
 #include "vtkIdList.h"
 #include "vtkLightFieldErrorObserver.h"
@@ -17,16 +18,10 @@
 #include <string>
 #include <vector>
 
+using lfdtest::Check;
+
 namespace
 {
-int failures = 0;
-
-void Check(bool ok, const char* what, double value, double limit)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (limit " << limit << ")\n";
-  failures += ok ? 0 : 1;
-}
-
 // A camera at `position` looking at `target`, image up along `up`.
 void SetLookAt(vtkCameraRig* rig,
   int view,
@@ -328,5 +323,5 @@ int TestCameraRig(int, char*[])
   TestRows();
   TestRowCounts();
   TestDegenerate();
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

@@ -3,6 +3,7 @@
 // ring and two rows), and label-aware blending, on a light field whose views
 // are flat colours so that every expected value is exact.
 #include "lfdCylinderSampling.h"
+#include "lfdTestChecks.h"
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkLightField.h"
@@ -16,18 +17,10 @@
 #include <iostream>
 #include <vector>
 
+using lfdtest::Expect;
+
 namespace
 {
-int failures = 0;
-
-void Expect(const char* what, double value, double expected, double tolerance = 1e-9)
-{
-  const bool ok = std::abs(value - expected) <= tolerance;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (expected " << expected
-            << ")\n";
-  failures += ok ? 0 : 1;
-}
-
 // The ray from far outside the ring at azimuth `phi` (radians, measured like
 // the rig: from +Z towards +X for a +Y axis) and height `h`, aimed at the axis.
 void RayAt(double phi, double h, glm::dvec3& o, glm::dvec3& d)
@@ -386,5 +379,5 @@ int TestCylinderSampling(int, char*[])
 
   ProxySurface();
   LabelHullSkips();
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

@@ -5,6 +5,7 @@
 // forgets, ObservePipeline() hears what is upstream, StopObserving() lets
 // messages through again, and StripLocation()
 // removes VTK's prefix from both kinds of text.
+#include "lfdTestChecks.h"
 #include "vtkErrorCode.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -19,16 +20,10 @@
 #include <iostream>
 #include <string>
 
+using lfdtest::Expect;
+
 namespace
 {
-int failures = 0;
-
-void Expect(bool ok, const std::string& what, const std::string& value)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": '" << value << "'\n";
-  failures += ok ? 0 : 1;
-}
-
 /// A source that fails with a message (Fail), fails silently, or warns.
 class FailingSource : public vtkLightFieldAlgorithm
 {
@@ -138,5 +133,5 @@ int TestErrorObserver(int, char*[])
   Expect(warning == "careful", "StripLocation of a warning", warning);
   const std::string plain = vtkLightFieldErrorObserver::StripLocation("no prefix (0x1): here\n");
   Expect(plain == "no prefix (0x1): here", "StripLocation of text without the prefix", plain);
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

@@ -14,6 +14,7 @@
 //     distortion gives 41.9 dB for the realistic lens, 33.4 for a strong one).
 #include "lfdCylinderSampling.h"
 #include "lfdPinholeCamera.h"
+#include "lfdTestChecks.h"
 #include "vtkCameraRig.h"
 #include "vtkNew.h"
 
@@ -22,16 +23,10 @@
 #include <string>
 #include <vector>
 
+using lfdtest::Expect;
+
 namespace
 {
-int failures = 0;
-
-void Expect(bool ok, const char* what, double value)
-{
-  std::printf("%s %s: %.12g\n", ok ? "ok  " : "FAIL", what, value);
-  failures += ok ? 0 : 1;
-}
-
 // The realistic lens of the brief: barrel distortion with a little
 // decentring.
 const double Realistic[5] = { -0.2, 0.05, 1e-3, -5e-4, 0.0 };
@@ -336,5 +331,5 @@ int TestLensDistortion(int, char*[])
   CheckRoundTrip();
   CheckValidation();
   CheckEndToEnd();
-  return failures == 0 ? 0 : 1;
+  return lfdtest::Result();
 }

@@ -5,24 +5,17 @@
 // number of segments and no NaN; a twisted box is entered twice; a ray
 // leaving one box enters its face neighbour at the same point.
 #include "lfdRayWarp.h"
+#include "lfdTestChecks.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <random>
 
-namespace
-{
-int failures = 0;
+using lfdtest::Expect;
 
-void Expect(const char* what, double value, double expected, double tolerance = 1e-9)
+namespace TestRayWarpHelpers
 {
-  const bool ok = std::abs(value - expected) <= tolerance;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (expected " << expected
-            << ")\n";
-  failures += ok ? 0 : 1;
-}
-
 lfd::Hexahedron UnitCube(double scale = 1.0)
 {
   lfd::Hexahedron box;
@@ -398,9 +391,10 @@ void SharedFace()
 
 int TestRayWarp(int, char*[])
 {
+  using namespace TestRayWarpHelpers;
   RandomBoxes();
   EdgesCornersAndGrazing();
   TwistedBox();
   SharedFace();
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

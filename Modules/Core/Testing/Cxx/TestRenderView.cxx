@@ -7,6 +7,7 @@
 // boxes through the per-frame culling (lfd::FrameCage) renders every pixel
 // exactly as testing every box does, trying and warping far fewer boxes.
 #include "lfdRenderView.h"
+#include "lfdTestChecks.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -14,18 +15,10 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-int failures = 0;
+using lfdtest::Expect;
 
-void Expect(const std::string& what, double value, double expected, double tolerance = 0.0)
+namespace TestRenderViewHelpers
 {
-  const bool ok = std::abs(value - expected) <= tolerance;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (expected " << expected
-            << ")\n";
-  failures += ok ? 0 : 1;
-}
-
 /// A part of the light field: the rays whose line meets the sphere see it.
 struct Part
 {
@@ -130,10 +123,12 @@ void IdentityCage()
       ++rays;
     }
   }
-  Expect("identity cage: rays", rays, 33 * 33);
-  Expect("identity cage: rays seeing a part", parts, 276);
-  Expect(
-    "identity cage: rays whose label or colour differs from the undeformed lookup", different, 0);
+  Expect("identity cage: rays", rays, 33 * 33, 0.0);
+  Expect("identity cage: rays seeing a part", parts, 276, 0.0);
+  Expect("identity cage: rays whose label or colour differs from the undeformed lookup",
+    different,
+    0,
+    0.0);
 }
 
 void OcclusionOrder()
@@ -184,7 +179,7 @@ void TwistedBox()
   lfd::PlaceEye(boxes, eye);
   std::vector<lfd::BoxSegment> segments;
   lfd::CollectSegments(boxes, eye, d, segments);
-  Expect("twisted box: intervals", static_cast<double>(segments.size()), 2);
+  Expect("twisted box: intervals", static_cast<double>(segments.size()), 2, 0.0);
   if (segments.size() != 2)
   {
     return;
@@ -197,13 +192,13 @@ void TwistedBox()
   SphereLookup lookup;
   lookup.Parts = { { { 0.05, 0.5 * (w1 + 0.9), 0.5 * (w1 + 1) }, 0.05, 1, { 0, 0, 200 } } };
   lfd::ViewSample seen = lfd::RenderView(eye, d, boxes, lookup, SettingsFor(boxes), segments);
-  Expect("  part behind the fold: label", seen.Label, 1);
-  Expect("  part behind the fold: blue", std::round(seen.Color.b), 200);
+  Expect("  part behind the fold: label", seen.Label, 1, 0.0);
+  Expect("  part behind the fold: blue", std::round(seen.Color.b), 200, 0.0);
   Expect("  part behind the fold: depth", seen.Depth, 1.5 + 0.5 * w1, 1e-12);
-  Expect("  part behind the fold: lookups (2 intervals)", lookup.Gathers, 2);
+  Expect("  part behind the fold: lookups (2 intervals)", lookup.Gathers, 2, 0.0);
   lookup.Parts.push_back({ { 0.05, 0.5 * (0.1 + w0), 0.5 * w0 }, 0.05, 1, { 200, 200, 0 } });
   seen = lfd::RenderView(eye, d, boxes, lookup, SettingsFor(boxes), segments);
-  Expect("  parts on both intervals: red", std::round(seen.Color.r), 200);
+  Expect("  parts on both intervals: red", std::round(seen.Color.r), 200, 0.0);
   Expect("  parts on both intervals: depth", seen.Depth, 1 + 0.5 * w0, 1e-12);
 }
 
@@ -226,7 +221,7 @@ void TwoHundredBoxes()
   lfd::PlaceEye(boxes, eye);
   std::vector<lfd::BoxSegment> segments;
   lfd::CollectSegments(boxes, eye, d, segments);
-  Expect("200 boxes: segments", static_cast<double>(segments.size()), count);
+  Expect("200 boxes: segments", static_cast<double>(segments.size()), count, 0.0);
   int misplaced = 0;
   for (std::size_t k = 0; k < segments.size(); ++k)
   {
@@ -234,12 +229,12 @@ void TwoHundredBoxes()
     misplaced += s.Box != count - 1 - static_cast<int>(k) || s.Segment.TEnter != 2.0 * k + 1 ||
       s.Segment.TExit != 2.0 * k + 2;
   }
-  Expect("  segments out of distance order or off their box", misplaced, 0);
+  Expect("  segments out of distance order or off their box", misplaced, 0, 0.0);
 
   lfd::ViewSample seen = lfd::RenderView(eye, d, boxes, lookup, SettingsFor(boxes), segments);
-  Expect("  every part visible: label of the nearest", seen.Label, 1);
-  Expect("  every part visible: depth", seen.Depth, 1.5);
-  Expect("  every part visible: lookups", lookup.Gathers, 1);
+  Expect("  every part visible: label of the nearest", seen.Label, 1, 0.0);
+  Expect("  every part visible: depth", seen.Depth, 1.5, 0.0);
+  Expect("  every part visible: lookups", lookup.Gathers, 1, 0.0);
   // The same ray as the one pixel of a frame: walked front to back, it warps
   // only the boxes up to the one whose interval gives the pixel.
   lfd::FrameCage frame;
@@ -247,23 +242,24 @@ void TwoHundredBoxes()
   lfd::FrameRayScratch scratch;
   lookup.Gathers = 0;
   seen = lfd::RenderView(frame, 0, 0, lookup, SettingsFor(boxes), scratch);
-  Expect("  one-pixel frame: label", seen.Label, 1);
-  Expect("  one-pixel frame: depth", seen.Depth, 1.5);
-  Expect("  one-pixel frame: lookups", lookup.Gathers, 1);
-  Expect("  one-pixel frame: boxes warped", static_cast<double>(scratch.NextEntry), 1);
+  Expect("  one-pixel frame: label", seen.Label, 1, 0.0);
+  Expect("  one-pixel frame: depth", seen.Depth, 1.5, 0.0);
+  Expect("  one-pixel frame: lookups", lookup.Gathers, 1, 0.0);
+  Expect("  one-pixel frame: boxes warped", static_cast<double>(scratch.NextEntry), 1, 0.0);
   lookup.Parts.erase(lookup.Parts.begin() + 1, lookup.Parts.end());
   lookup.Gathers = 0;
   seen = lfd::RenderView(eye, d, boxes, lookup, SettingsFor(boxes), segments);
-  Expect("  only the farthest part: label", seen.Label, 200);
-  Expect("  only the farthest part: depth", seen.Depth, 399.5);
-  Expect("  only the farthest part: lookups", lookup.Gathers, 200);
+  Expect("  only the farthest part: label", seen.Label, 200, 0.0);
+  Expect("  only the farthest part: depth", seen.Depth, 399.5, 0.0);
+  Expect("  only the farthest part: lookups", lookup.Gathers, 200, 0.0);
   lookup.Gathers = 0;
   seen = lfd::RenderView(frame, 0, 0, lookup, SettingsFor(boxes), scratch);
-  Expect("  one-pixel frame, only the farthest part: label", seen.Label, 200);
-  Expect("  one-pixel frame, only the farthest part: depth", seen.Depth, 399.5);
+  Expect("  one-pixel frame, only the farthest part: label", seen.Label, 200, 0.0);
+  Expect("  one-pixel frame, only the farthest part: depth", seen.Depth, 399.5, 0.0);
   Expect("  one-pixel frame, only the farthest part: boxes warped",
     static_cast<double>(scratch.NextEntry),
-    200);
+    200,
+    0.0);
 }
 /// The twisted copy of `box`: its top face (corners 4-7) turned by `angle` about its centre.
 lfd::Hexahedron TurnTop(const lfd::Hexahedron& box, double angle)
@@ -363,15 +359,17 @@ void HundredBoxFrame()
       warped += static_cast<long long>(scratch.NextEntry);
     }
   }
-  Expect("100-box frame: pixels seeing a part", parts, 767);
-  Expect("  pixels (culled or not) unlike testing every box", different, 0);
-  Expect("  pixels whose lookups differ", lookupsDiffer, 0);
-  Expect("  boxes tried without culling", static_cast<double>(triedUnculled), 64 * 64 * 102);
-  Expect("  boxes tried with culling", static_cast<double>(tried), 29888);
-  Expect("  boxes whose projected hull and bounds a ray meets", static_cast<double>(met), 5753);
+  Expect("100-box frame: pixels seeing a part", parts, 767, 0.0);
+  Expect("  pixels (culled or not) unlike testing every box", different, 0, 0.0);
+  Expect("  pixels whose lookups differ", lookupsDiffer, 0, 0.0);
+  Expect("  boxes tried without culling", static_cast<double>(triedUnculled), 64 * 64 * 102, 0.0);
+  Expect("  boxes tried with culling", static_cast<double>(tried), 29888, 0.0);
   Expect(
-    "  boxes warped, front to back up to the pixel's interval", static_cast<double>(warped), 5753);
-}
+    "  boxes whose projected hull and bounds a ray meets", static_cast<double>(met), 5753, 0.0);
+  Expect("  boxes warped, front to back up to the pixel's interval",
+    static_cast<double>(warped),
+    5753,
+    0.0);
 }
 
 /**
@@ -419,13 +417,16 @@ void RunOfSlabs()
   }
 }
 
+}
+
 int TestRenderView(int, char*[])
 {
+  using namespace TestRenderViewHelpers;
   IdentityCage();
   OcclusionOrder();
   TwistedBox();
   TwoHundredBoxes();
   HundredBoxFrame();
   RunOfSlabs();
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

@@ -7,6 +7,7 @@
 // the tolerance.
 #include "lfdRayWarp.h"
 #include "lfdTessellation.h"
+#include "lfdTestChecks.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -14,18 +15,10 @@
 #include <random>
 #include <vector>
 
-namespace
-{
-int failures = 0;
+using lfdtest::Expect;
 
-void Expect(const char* what, double value, double expected, double tolerance = 0.0)
+namespace TestTessellationHelpers
 {
-  const bool ok = std::abs(value - expected) <= tolerance;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (expected " << expected
-            << " +- " << tolerance << ")\n";
-  failures += ok ? 0 : 1;
-}
-
 lfd::Hexahedron UnitCube()
 {
   lfd::Hexahedron box;
@@ -100,6 +93,7 @@ double MeasuredStray(const lfd::Hexahedron& rest, const lfd::Hexahedron& deforme
 
 int TestTessellation(int, char*[])
 {
+  using namespace TestTessellationHelpers;
   const lfd::Hexahedron cube = UnitCube();
   Expect("deviation of a box at rest", lfd::WarpDeviation(cube, cube, 1), 0.0, 1e-12);
   lfd::Hexahedron affine;
@@ -109,8 +103,8 @@ int TestTessellation(int, char*[])
     affine.Corners[c] = linear * cube.Corners[c] + glm::dvec3(3.0, -1.0, 2.0);
   }
   Expect("deviation of an affine move", lfd::WarpDeviation(cube, affine, 1), 0.0, 1e-9);
-  Expect("automatic k at rest", lfd::AutomaticSubdivision(cube, cube, 1e-6), 1);
-  Expect("automatic k of an affine move", lfd::AutomaticSubdivision(cube, affine, 1e-6), 1);
+  Expect("automatic k at rest", lfd::AutomaticSubdivision(cube, cube, 1e-6), 1, 0.0);
+  Expect("automatic k of an affine move", lfd::AutomaticSubdivision(cube, affine, 1e-6), 1, 0.0);
 
   // A twist of 40 degrees: the deviation falls as 1 / k^2.
   const lfd::Hexahedron twist = Twisted(40.0);
@@ -139,14 +133,17 @@ int TestTessellation(int, char*[])
   const int k90 = lfd::AutomaticSubdivision(cube, Twisted(90.0), tolerance);
   std::cout << "automatic k at tolerance " << tolerance << ": twist 40 " << k40 << ", twist 90 "
             << k90 << "\n";
-  Expect("twist 40: automatic k", k40, 4);
-  Expect("twist 90: automatic k", k90, 6);
+  Expect("twist 40: automatic k", k40, 4, 0.0);
+  Expect("twist 90: automatic k", k90, 6, 0.0);
   Expect("twist 40: the automatic k meets the tolerance",
     lfd::WarpDeviation(cube, twist, k40) <= tolerance,
-    1);
-  Expect("twist 40: one less does not", lfd::WarpDeviation(cube, twist, k40 - 1) > tolerance, 1);
+    1,
+    0.0);
+  Expect(
+    "twist 40: one less does not", lfd::WarpDeviation(cube, twist, k40 - 1) > tolerance, 1, 0.0);
   Expect("a tolerance no k meets: the largest k",
     lfd::AutomaticSubdivision(cube, twist, 1e-12),
-    lfd::MaximumAutomaticSubdivision);
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+    lfd::MaximumAutomaticSubdivision,
+    0.0);
+  return lfdtest::Result();
 }

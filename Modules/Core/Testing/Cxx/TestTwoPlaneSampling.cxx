@@ -4,6 +4,7 @@
 // weights, the focal plane (finite and at infinity) and the per-label
 // merging of samples, on 3 x 3 views whose pixels are known colours so that
 // every expected value is exact.
+#include "lfdTestChecks.h"
 #include "lfdTwoPlaneSampling.h"
 #include "vtkCameraRig.h"
 #include "vtkNew.h"
@@ -15,19 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-int failures = 0;
-
-void Expect(const char* what, double value, double expected, double tolerance = 1e-9)
-{
-  const bool ok = std::abs(value - expected) <= tolerance;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (expected " << expected
-            << ")\n";
-  failures += ok ? 0 : 1;
-}
-
-}
+using lfdtest::Expect;
 
 int TestTwoPlaneSampling(int, char*[])
 {
@@ -161,5 +150,5 @@ int TestTwoPlaneSampling(int, char*[])
   weight = lfd::BlendLabel(samples, 1, color);
   Expect("uneven grid: the two columns around the ray only", weight, 1.0);
   Expect("uneven grid: their red (30 + 40) / 2", color.r, 35.0);
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-namespace
+namespace TestCageTransformHelpers
 {
 double Distance(const double a[3], const double b[3])
 {
@@ -284,6 +284,7 @@ bool TestSharedFace(vtkMinimalStandardRandomSequence* random)
 
 int TestCageTransform(int, char*[])
 {
+  using namespace TestCageTransformHelpers;
   vtkNew<vtkMinimalStandardRandomSequence> random;
   random->SetSeed(2005);
   bool ok = TestIdentity(random);

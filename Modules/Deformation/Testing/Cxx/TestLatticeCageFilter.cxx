@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace
+namespace TestLatticeCageFilterHelpers
 {
 using lfdtest::Check;
 using lfdtest::Near;
@@ -294,6 +294,7 @@ bool TestRegionAndErrors()
 
 int TestLatticeCageFilter(int, char*[])
 {
+  using namespace TestLatticeCageFilterHelpers;
   bool ok = TestIdentity();
   ok &= TestTrilinear();
   ok &= TestLinearPrecision();

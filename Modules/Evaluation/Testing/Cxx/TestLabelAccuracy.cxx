@@ -1,6 +1,7 @@
 // vtkLabelAccuracy (the figures of `lfd split --truth`): accuracy and
 // confusion counted exactly on a 4 x 2 x 2 light field, background pixels
 // of the truth ignored, and the refusals said as one line.
+#include "lfdTestChecks.h"
 #include "vtkLabelAccuracy.h"
 #include "vtkLightField.h"
 #include "vtkNew.h"
@@ -9,19 +10,10 @@
 #include <iostream>
 #include <string>
 
+using lfdtest::CheckEqual;
+
 namespace
 {
-int failures = 0;
-
-template<typename T>
-void CheckEqual(const T& actual, const T& expected, const std::string& what)
-{
-  const bool ok = actual == expected;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << actual << " (expected " << expected
-            << ")\n";
-  failures += ok ? 0 : 1;
-}
-
 void FillLabels(vtkLightField* lightField, const unsigned char* labels)
 {
   lightField->SetLayout(4, 2, 2);
@@ -64,6 +56,5 @@ int TestLabelAccuracy(int, char*[])
   CheckEqual(accuracy->Compute(split, small),
     std::string("its Label pass has another size than the split light field's"),
     "a truth of another size");
-  std::cout << (failures ? "FAILED" : "PASSED") << "\n";
-  return failures ? 1 : 0;
+  return lfdtest::Result();
 }

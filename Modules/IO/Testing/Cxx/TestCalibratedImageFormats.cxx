@@ -13,8 +13,6 @@
 #include "vtkLightField.h"
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
-#include "vtkPointData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransformsExporter.h"
 #include "vtkTransformsImporter.h"
@@ -24,7 +22,7 @@
 #include <cstdint>
 #include <functional>
 
-namespace
+namespace TestCalibratedImageFormatsHelpers
 {
 // A ring of 6 views of 16x12 pixels; with `perView`, every view has its own
 // focal lengths, principal point and distortion (k3 on one view).
@@ -142,18 +140,6 @@ void RoundTrip(const std::string& format,
     format + ": view 0's name");
 }
 
-void WritePng(const std::string& path, int width, int height)
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  image->GetPointData()->GetScalars()->Fill(80);
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-}
-
 template<typename Importer>
 void ExpectFailure(const std::string& name,
   const std::string& fileName,
@@ -181,8 +167,8 @@ void MalformedColmap(const std::string& root)
   {
     const std::string folder = root + "/colmap" + std::to_string(++number);
     std::filesystem::create_directories(folder);
-    WritePng(folder + "/a.png", 8, 6);
-    WritePng(folder + "/b.png", 8, 6);
+    lfdtest::WriteUniformPng(folder + "/a.png", 8, 6, 3, 80);
+    lfdtest::WriteUniformPng(folder + "/b.png", 8, 6, 3, 80);
     lfdtest::WriteText(folder + "/cameras.txt", "# comment\n" + cameras);
     lfdtest::WriteText(folder + "/images.txt", "# comment\n" + images);
     return folder;
@@ -368,7 +354,7 @@ void MalformedBinaryColmap(const std::string& root, const std::string& exported)
 
 void MalformedTransforms(const std::string& root)
 {
-  WritePng(root + "/a.png", 8, 6);
+  lfdtest::WriteUniformPng(root + "/a.png", 8, 6, 3, 80);
   int number = 0;
   auto file = [&](const std::string& text)
   {
@@ -440,6 +426,7 @@ void MalformedTransforms(const std::string& root)
 
 int TestCalibratedImageFormats(int, char*[])
 {
+  using namespace TestCalibratedImageFormatsHelpers;
   const std::string folder = lfdtest::ScratchFolder("TestCalibratedImageFormats");
   for (bool perView : { false, true })
   {

@@ -15,7 +15,7 @@
 using lfdtest::Check;
 using lfdtest::CheckEqual;
 
-namespace
+namespace TestImageFileIOHelpers
 {
 constexpr int W = 9;
 constexpr int H = 4;
@@ -88,6 +88,7 @@ void RoundTrip(const std::string& file, int type, int components)
 
 int TestImageFileIO(int, char*[])
 {
+  using namespace TestImageFileIOHelpers;
   const std::string folder = lfdtest::ScratchFolder("TestImageFileIO");
   RoundTrip(folder + "/rgb.png", VTK_UNSIGNED_CHAR, 3);
   RoundTrip(folder + "/grey.png", VTK_UNSIGNED_CHAR, 1);

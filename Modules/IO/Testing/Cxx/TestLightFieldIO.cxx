@@ -26,7 +26,7 @@
 #include <filesystem>
 #include <utility>
 
-namespace
+namespace TestLightFieldIOHelpers
 {
 using lfdtest::Check;
 using lfdtest::CheckEqual;
@@ -334,7 +334,6 @@ void CheckPassSelection(vtkLightField* original, const std::string& dataset)
     "label mismatches (Label only)");
   CheckEqual(labelsOnly->GetOutput()->GetRig()->GetNumberOfViews(), Views, "rig (Label only)");
 }
-}
 
 // Pieces of the views (the processes of `mpirun lfd animate`): the piece's
 // views as written, every other view zero, every pass allocated whole.
@@ -382,9 +381,11 @@ void CheckPieces(vtkLightField* original, const std::string& dataset)
     CheckEqual(mismatches, 0, name + ": values differing from the piece's views and zeros");
   }
 }
+}
 
 int TestLightFieldIO(int, char*[])
 {
+  using namespace TestLightFieldIOHelpers;
   const std::string folder = lfdtest::ScratchFolder("TestLightFieldIO");
   const std::string dataset = folder + "/fish.lf";
   vtkSmartPointer<vtkLightField> original = MakeLightField();

@@ -11,7 +11,6 @@
 #include "vtkLightFieldReader.h"
 #include "vtkLightFieldWriter.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 
 #include <nlohmann/json.hpp>
@@ -25,7 +24,7 @@
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-namespace
+namespace TestLightFieldIOErrorsHelpers
 {
 constexpr int Width = 6;
 constexpr int Height = 4;
@@ -81,17 +80,6 @@ bool Read(const std::string& path, std::string& message, int* views = nullptr)
   return reader->GetErrorCode() == 0;
 }
 
-void WritePng(const std::string& path, int width, int height, int components)
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
-  image->GetPointData()->GetScalars()->Fill(7);
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-}
 // Copies of a valid dataset whose manifest is edited, and the check that
 // each fails to read with one line naming the manifest and the field.
 struct Cases
@@ -239,14 +227,14 @@ void CheckPassErrors(Cases& cases)
   }
   {
     const std::string directory = cases.Variant(nullptr);
-    WritePng(directory + "/coaxial/view_0001.png", Width + 1, Height, 3);
+    lfdtest::WriteUniformPng(directory + "/coaxial/view_0001.png", Width + 1, Height, 3, 7);
     cases.ExpectFailure("image of the wrong size",
       directory,
       { "\"passes.coaxial[1]\"", "view_0001.png", "7x4", "6x4" });
   }
   {
     const std::string directory = cases.Variant(nullptr);
-    WritePng(directory + "/label/view_0000.png", Width, Height, 3);
+    lfdtest::WriteUniformPng(directory + "/label/view_0000.png", Width, Height, 3, 7);
     cases.ExpectFailure("label image with 3 channels",
       directory,
       { "\"passes.label[0]\"", "view_0000.png", "3 channels" });
@@ -326,6 +314,7 @@ void CheckStagedNames(const std::string& folder)
 
 int TestLightFieldIOErrors(int, char*[])
 {
+  using namespace TestLightFieldIOErrorsHelpers;
   Cases cases;
   cases.Folder = lfdtest::ScratchFolder("TestLightFieldIOErrors");
   cases.Valid = cases.Folder + "/valid.lf";

@@ -9,22 +9,9 @@
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkMiddleburyImporter.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
-#include "vtkPointData.h"
 
-namespace
+namespace TestMiddleburyImporterErrorsHelpers
 {
-void WritePng(const std::string& path, int width, int height, int components, int value)
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
-  image->GetPointData()->GetScalars()->Fill(value);
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-}
 
 const std::string Calibration = " 100 0 4 0 100 3 0 0 1  1 0 0 0 1 0 0 0 1  0 0 1\n";
 // A second camera: every view of a rig must be a distinct camera.
@@ -33,10 +20,11 @@ const std::string Calibration2 = " 100 0 4 0 100 3 0 0 1  1 0 0 0 1 0 0 0 1  0 0
 
 int TestMiddleburyImporterErrors(int, char*[])
 {
+  using namespace TestMiddleburyImporterErrorsHelpers;
   const std::string folder = lfdtest::ScratchFolder("TestMiddleburyImporterErrors");
-  WritePng(folder + "/a.png", 8, 6, 3, 50);
-  WritePng(folder + "/b.png", 8, 6, 1, 90);
-  WritePng(folder + "/small.png", 4, 4, 3, 10);
+  lfdtest::WriteUniformPng(folder + "/a.png", 8, 6, 3, 50);
+  lfdtest::WriteUniformPng(folder + "/b.png", 8, 6, 1, 90);
+  lfdtest::WriteUniformPng(folder + "/small.png", 4, 4, 3, 10);
 
   int caseNumber = 0;
   std::string message;

@@ -35,7 +35,7 @@
 #include <iterator>
 #include <malloc.h> // malloc_trim
 
-namespace
+namespace TestOutOfCoreLightFieldHelpers
 {
 // OpenImageIO's release builds hold at least 10 MiB of tiles whatever the
 // budget: the light field is 4 x that, 72 views of 384^2 (RGB + label).
@@ -339,6 +339,7 @@ void TestTilingAndProxy(const std::string& folder)
 
 int TestOutOfCoreLightField(int, char*[])
 {
+  using namespace TestOutOfCoreLightFieldHelpers;
   const std::string folder = lfdtest::ScratchFolder("TestOutOfCoreLightField");
   const std::string tiled = folder + "/tiled.lf";
   vtkSmartPointer<vtkLightField> original = MakeLightField(Size, Views);

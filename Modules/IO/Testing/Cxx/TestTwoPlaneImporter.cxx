@@ -11,25 +11,12 @@
 #include "vtkLightField.h"
 #include "vtkLightFieldErrorObserver.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
-#include "vtkPointData.h"
 #include "vtkTwoPlaneImporter.h"
 
 #include <filesystem>
 
-namespace
+namespace TestTwoPlaneImporterHelpers
 {
-void WritePng(const std::string& path, int width, int height, int value)
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  image->GetPointData()->GetScalars()->Fill(value);
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-}
 
 /// Imports `folder`; the output, or null with the error in `message`.
 vtkSmartPointer<vtkLightField> Import(const std::string& folder,
@@ -64,10 +51,11 @@ std::string GridFolder(const std::string& name)
   {
     for (int c = 0; c < 3; ++c)
     {
-      WritePng(folder + "/out_0" + std::to_string(r) + "_0" + std::to_string(c) + "_-381.6_" +
-          std::to_string(100 * c) + ".5_.png",
+      lfdtest::WriteUniformPng(folder + "/out_0" + std::to_string(r) + "_0" + std::to_string(c) +
+          "_-381.6_" + std::to_string(100 * c) + ".5_.png",
         5,
         4,
+        3,
         10 * (3 * r + c));
     }
   }
@@ -78,6 +66,7 @@ std::string GridFolder(const std::string& name)
 
 int TestTwoPlaneImporter(int, char*[])
 {
+  using namespace TestTwoPlaneImporterHelpers;
   std::string message;
   const std::string folder = GridFolder("valid");
   vtkSmartPointer<vtkLightField> lightField = Import(folder, 40.0, message);
@@ -175,14 +164,14 @@ int TestTwoPlaneImporter(int, char*[])
     "no images", Import(empty, 40.0, message) == nullptr, message, { empty, "no images" });
 
   const std::string unnamed = GridFolder("unnamed");
-  WritePng(unnamed + "/view_a_b.png", 5, 4, 0);
+  lfdtest::WriteUniformPng(unnamed + "/view_a_b.png", 5, 4, 3, 0);
   lfdtest::CheckFailure("a name without row and column",
     Import(unnamed, 40.0, message) == nullptr,
     message,
     { unnamed + "/view_a_b.png", "no row and column" });
 
   const std::string twice = GridFolder("twice");
-  WritePng(twice + "/1_2.png", 5, 4, 0);
+  lfdtest::WriteUniformPng(twice + "/1_2.png", 5, 4, 3, 0);
   lfdtest::CheckFailure("two files for one cell",
     Import(twice, 40.0, message) == nullptr,
     message,
@@ -196,7 +185,7 @@ int TestTwoPlaneImporter(int, char*[])
     { hole, "no image for row 1, column 1", "rows 0..1 and columns 0..2" });
 
   const std::string sizes = GridFolder("sizes");
-  WritePng(sizes + "/out_01_00_-381.6_0.5_.png", 6, 4, 0);
+  lfdtest::WriteUniformPng(sizes + "/out_01_00_-381.6_0.5_.png", 6, 4, 3, 0);
   lfdtest::CheckFailure("an image of another size",
     Import(sizes, 40.0, message) == nullptr,
     message,

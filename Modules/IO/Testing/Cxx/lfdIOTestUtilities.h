@@ -1,7 +1,15 @@
 // Helpers shared by the LFD::IO tests: checks that print what they compare,
-// expected-failure checks on one-line error messages, and scratch folders.
+// expected-failure checks on one-line error messages, scratch folders and
+// uniform PNG images.
 #ifndef lfdIOTestUtilities_h
 #define lfdIOTestUtilities_h
+
+#include "lfdTestChecks.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -12,29 +20,6 @@
 
 namespace lfdtest
 {
-inline int& Failures()
-{
-  static int failures = 0;
-  return failures;
-}
-
-inline bool Check(bool ok, const std::string& what)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << "\n";
-  Failures() += ok ? 0 : 1;
-  return ok;
-}
-
-template<typename T>
-bool CheckEqual(const T& actual, const T& expected, const std::string& what)
-{
-  const bool ok = actual == expected;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << actual << " (expected " << expected
-            << ")\n";
-  Failures() += ok ? 0 : 1;
-  return ok;
-}
-
 inline bool CheckRange(double value, double low, double high, const std::string& what)
 {
   const bool ok = value >= low && value <= high;
@@ -72,6 +57,23 @@ inline void CheckFailure(const std::string& name,
   Failures() += ok ? 0 : 1;
 }
 
+/// Writes a `width` x `height` PNG of `components` 8-bit channels, all `value`.
+inline void WriteUniformPng(const std::string& path,
+  int width,
+  int height,
+  int components,
+  int value)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, components);
+  image->GetPointData()->GetScalars()->Fill(value);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
+
 /**
  * A fresh, empty scratch folder under the test temporary directory.
  */
@@ -106,13 +108,6 @@ inline int CountEntries(const std::string& folder, const std::string& prefix)
     count += entry.path().filename().string().rfind(prefix, 0) == 0 ? 1 : 0;
   }
   return count;
-}
-
-inline int Result()
-{
-  std::cout << (Failures() ? "FAILED: " : "PASSED")
-            << (Failures() ? std::to_string(Failures()) + " check(s)" : std::string()) << "\n";
-  return Failures() ? EXIT_FAILURE : EXIT_SUCCESS;
 }
 }
 

@@ -5,6 +5,7 @@
 // between the captured ones matches the analytic image of the square.
 // (3) Leaving views out and label-aware background behave as documented.
 #include "lfdPinholeCamera.h"
+#include "lfdTestChecks.h"
 #include "vtkCamera.h"
 #include "vtkCameraRig.h"
 #include "vtkImageData.h"
@@ -21,16 +22,10 @@
 #include <iostream>
 #include <vector>
 
-namespace
-{
-int failures = 0;
+using lfdtest::Expect;
 
-void Expect(bool ok, const char* what, double value)
+namespace TestLightFieldRendererHelpers
 {
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << "\n";
-  failures += ok ? 0 : 1;
-}
-
 // The square |x|, |y| < 1 in the plane z = 0, with a smooth colour texture.
 bool Square(const lfd::PinholeCamera& camera, double x, double y, unsigned char rgb[3])
 {
@@ -79,6 +74,7 @@ void Paint(const lfd::PinholeCamera& camera,
 
 int TestLightFieldRenderer(int, char*[])
 {
+  using namespace TestLightFieldRendererHelpers;
   const int size = 64;
   const int views = 72;
   const double center[3] = { 0.0, 0.0, 0.0 };
@@ -155,5 +151,5 @@ int TestLightFieldRenderer(int, char*[])
   const unsigned char* corner = image->GetPointer(0);
   Expect(
     corner[0] == 0 && corner[1] == 255 && corner[2] == 0, "background pixel is green", corner[1]);
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

@@ -4,6 +4,7 @@
 // the setting, the number of boxes and the cost; "auto" (subdivision 0)
 // lowers its largest k until the cage fits the budget instead.
 #include "lfdLimits.h"
+#include "lfdTestChecks.h"
 #include "vtkCameraRig.h"
 #include "vtkCommand.h"
 #include "vtkDeformationCage.h"
@@ -22,16 +23,10 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-int failures = 0;
+using lfdtest::Expect;
 
-void Expect(bool ok, const std::string& what, const std::string& value)
+namespace TestLightFieldRendererLimitsHelpers
 {
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << "\n";
-  failures += ok ? 0 : 1;
-}
-
 /// `columns` x `columns` boxes of side 0.4 side by side in the plane y = 0,
 /// each with its own corners, the top face turned by `degrees` about y.
 vtkSmartPointer<vtkDeformationCage> Boxes(int columns, double degrees)
@@ -98,6 +93,7 @@ std::vector<unsigned char> Image(vtkLightFieldRenderer* renderer)
 
 int TestLightFieldRendererLimits(int, char*[])
 {
+  using namespace TestLightFieldRendererLimitsHelpers;
   // A ring of 36 views of 32 x 32 pixels seeing a uniform grey object.
   const int size = 32, views = 36;
   const double center[3] = { 0.0, 0.0, 0.0 }, axis[3] = { 0.0, 1.0, 0.0 }, height = 0.0;
@@ -158,5 +154,5 @@ int TestLightFieldRendererLimits(int, char*[])
     "Subdivision auto (render.subdivision) splits the cage's 4225 boxes into 4225 sub-boxes, above "
     "the budget of 4096 (every ray tests every sub-box): use fewer boxes.");
 
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

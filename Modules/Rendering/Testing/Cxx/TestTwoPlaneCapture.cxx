@@ -8,6 +8,7 @@
 // parts swimming, against the mesh moved by the same map (vtkCageTransform):
 // the two-plane lookup runs through the same RENDER_VIEW as a ring. Needs
 // OpenGL (xvfb-run).
+#include "lfdTestChecks.h"
 #include "vtkCagePoseFilter.h"
 #include "vtkCageTransform.h"
 #include "vtkCameraRig.h"
@@ -29,16 +30,10 @@
 #include <iostream>
 #include <vector>
 
-namespace
-{
-int failures = 0;
+using lfdtest::Expect;
 
-void Expect(bool ok, const char* what, double value)
+namespace TestTwoPlaneCaptureHelpers
 {
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << "\n";
-  failures += ok ? 0 : 1;
-}
-
 constexpr int Size = 64;
 const double Forward[3] = { 0.0, 0.0, -1.0 };
 const double Up[3] = { 0.0, 1.0, 0.0 };
@@ -99,6 +94,7 @@ double ObjectPSNR(vtkImageData* render, vtkLightField* truth)
 
 int TestTwoPlaneCapture(int, char*[])
 {
+  using namespace TestTwoPlaneCaptureHelpers;
   vtkNew<vtkProceduralObjectSource> source;
   source->SetObjectToFish();
   source->SetResolution(24);
@@ -148,5 +144,5 @@ int TestTwoPlaneCapture(int, char*[])
     "swimming parts vs the mesh swum by the same map, object PSNR dB (> 20)",
     deformed);
   Expect(unmoved < deformed - 3.0, "without the cage vs the swum mesh (3 dB lower)", unmoved);
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

@@ -10,6 +10,7 @@
 //     its column profile grows by exactly the tent-weighted spread of the
 //     cameras' offsets du (measured against predicted, pixels).
 #include "lfdPinholeCamera.h"
+#include "lfdTestChecks.h"
 #include "vtkCameraRig.h"
 #include "vtkImageData.h"
 #include "vtkLeaveOneOutEvaluator.h"
@@ -28,16 +29,10 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-int failures = 0;
+using lfdtest::Expect;
 
-void Expect(bool ok, const char* what, double value)
+namespace TestTwoPlaneRefocusHelpers
 {
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << "\n";
-  failures += ok ? 0 : 1;
-}
-
 constexpr int Size = 64;
 constexpr double Focal = 64.0;
 constexpr double Spacing = 0.25;
@@ -174,6 +169,7 @@ double ProfileSpread(vtkImageData* image)
 
 int TestTwoPlaneRefocus(int, char*[])
 {
+  using namespace TestTwoPlaneRefocusHelpers;
   // (1) A novel view between the cameras, focused on the square.
   vtkSmartPointer<vtkLightField> square = Capture(Square);
   const lfd::PinholeCamera novel = Eye({ 0.1, 0.07, 0.0 });
@@ -240,5 +236,5 @@ int TestTwoPlaneRefocus(int, char*[])
       std::string(errors->GetErrorMessage()) == "Every view of the two-plane grid is excluded.",
     "every view excluded: one error",
     errors->GetNumberOfErrors());
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

@@ -26,17 +26,11 @@ using lfdtest::Check;
 using lfdtest::CheckEqual;
 using lfdtest::CheckFailure;
 using lfdtest::EventCounter;
+using lfdtest::LastError;
 
 namespace
 {
 using Logic = vtkLightFieldSceneLogic;
-
-/// The last error's own line.
-std::string LastError(vtkLightFieldErrorObserver* errors)
-{
-  const int count = errors->GetNumberOfErrors();
-  return count > 0 ? std::string(errors->GetError(count - 1)) : std::string();
-}
 
 /// An edit that must be refused (`applied` false) with an error line
 /// holding every string of `mustContain`.

@@ -19,6 +19,7 @@
 using lfdtest::Check;
 using lfdtest::CheckEqual;
 using lfdtest::CheckFailure;
+using lfdtest::LastError;
 
 namespace
 {
@@ -48,11 +49,6 @@ std::vector<unsigned char> Bytes(vtkImageData* image)
     rgb->GetPointer(0), rgb->GetPointer(0) + rgb->GetNumberOfValues());
 }
 
-std::string LastError(vtkLightFieldErrorObserver* errors)
-{
-  const int count = errors->GetNumberOfErrors();
-  return count > 0 ? std::string(errors->GetError(count - 1)) : std::string();
-}
 }
 
 int TestSceneLogicProjectorMask(int, char*[])

@@ -1,9 +1,11 @@
-// What the scene logic's tests share: counting the events an object invokes.
+// What the scene logic's tests share: counting the events an object invokes,
+// the last error heard.
 #ifndef lfdSceneTestUtilities_h
 #define lfdSceneTestUtilities_h
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkLightFieldErrorObserver.h"
 #include "vtkLightFieldSceneLogic.h"
 #include "vtkNew.h"
 
@@ -48,6 +50,13 @@ struct EventCounter
       std::to_string(this->Counts[vtkCommand::ErrorEvent]);
   }
 };
+
+/// The last error's own line ("" when there is none).
+inline std::string LastError(vtkLightFieldErrorObserver* errors)
+{
+  const int count = errors->GetNumberOfErrors();
+  return count > 0 ? std::string(errors->GetError(count - 1)) : std::string();
+}
 }
 
 #endif

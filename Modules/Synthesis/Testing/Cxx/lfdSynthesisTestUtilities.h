@@ -4,6 +4,7 @@
 #ifndef lfdSynthesisTestUtilities_h
 #define lfdSynthesisTestUtilities_h
 
+#include "lfdTestChecks.h"
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -22,18 +23,6 @@
 
 namespace lfdtest
 {
-inline int& Failures()
-{
-  static int failures = 0;
-  return failures;
-}
-
-inline void Check(bool ok, const char* what, double value, double limit)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (limit " << limit << ")\n";
-  Failures() += ok ? 0 : 1;
-}
-
 // A capture of the source's object from one ring of 8 views of
 // `size` x `size` pixels.
 inline vtkSmartPointer<vtkLightFieldCapture> RingCapture(vtkProceduralObjectSource* source,

@@ -9,19 +9,10 @@
 
 #include <vector>
 
+using lfdtest::Check;
+
 namespace
 {
-int Failures = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << "\n";
-    ++Failures;
-  }
-}
-
 /// Points of `ids` must be `expected` (3 per id), the others at `others`.
 void CheckPoints(vtkDeformationCage* cage,
   const std::vector<vtkIdType>& ids,
@@ -232,5 +223,5 @@ int TestCageWidgetEdits(int, char*[])
   Check(printed.str().find("NumberOfSelectedPoints: 1") != std::string::npos &&
       printed.str().find("KeyboardBindings: 1") != std::string::npos,
     "PrintSelf");
-  return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return lfdtest::Result();
 }

@@ -8,21 +8,10 @@
 #include <algorithm>
 #include <vector>
 
+using lfdtest::Check;
+
 namespace
 {
-struct Check
-{
-  int Failures = 0;
-  void operator()(bool ok, const std::string& what)
-  {
-    if (!ok)
-    {
-      std::cerr << "FAILED: " << what << "\n";
-      ++this->Failures;
-    }
-  }
-};
-
 std::vector<double> Points(vtkDeformationCage* cage)
 {
   std::vector<double> p(3 * cage->GetNumberOfPoints());
@@ -44,7 +33,6 @@ int TestCageWidgetSelection(int, char*[])
   lfdtest::WidgetScene scene(cage, focal, position, up);
   vtkCageRepresentation* rep = scene.Representation;
   lfdtest::InteractionCounter events(scene.Widget);
-  Check check;
 
   // Rubber band around the top face (points 4 5 6 7; box face 5).
   double lo[2] = { 1e9, 1e9 }, hi[2] = { -1e9, -1e9 };
@@ -67,18 +55,18 @@ int TestCageWidgetSelection(int, char*[])
   const int x1 = static_cast<int>(hi[0]) + 4, y1 = static_cast<int>(hi[1]) + 4;
   for (vtkIdType id = 0; id < 4; ++id)
   {
-    check(display[id][0] < x0 || display[id][0] > x1 || display[id][1] < y0 || display[id][1] > y1,
+    Check(display[id][0] < x0 || display[id][0] > x1 || display[id][1] < y0 || display[id][1] > y1,
       "the bottom corner " + std::to_string(id) + " lies outside the rectangle");
   }
   scene.Play(lfdtest::Key('b', x0, y0) + lfdtest::Drag(x0, y0, x1, y1, 4));
-  check(lfdtest::SelectedIds(rep) == "4 5 6 7",
+  Check(lfdtest::SelectedIds(rep) == "4 5 6 7",
     "rubber band selects the top face: got " + lfdtest::SelectedIds(rep));
-  check(events.Summary() == "0 0 0", "a selection is no interaction: " + events.Summary());
+  Check(events.Summary() == "0 0 0", "a selection is no interaction: " + events.Summary());
 
   // Twist the selected face by 30 degrees about the box axis (+Z) through
   // its centre (0.5, 0.5, 1).
-  check(rep->TwistFace(0, 5, 30.0), "TwistFace accepted");
-  check(events.Summary() == "1 1 1", "TwistFace is one interaction: " + events.Summary());
+  Check(rep->TwistFace(0, 5, 30.0), "TwistFace accepted");
+  Check(events.Summary() == "1 1 1", "TwistFace is one interaction: " + events.Summary());
   const double c30 = std::cos(vtkMath::RadiansFromDegrees(30.0));
   const double s30 = std::sin(vtkMath::RadiansFromDegrees(30.0));
   for (vtkIdType id = 4; id < 8; ++id)
@@ -87,7 +75,7 @@ int TestCageWidgetSelection(int, char*[])
     cage->GetRestPoint(id, rest);
     const double dx = rest[0] - 0.5, dy = rest[1] - 0.5;
     const double expected[3] = { 0.5 + c30 * dx - s30 * dy, 0.5 + s30 * dx + c30 * dy, 1.0 };
-    check(lfdtest::CheckPoint(cage, id, expected, 1e-12, "twisted top corner"), "twist");
+    Check(lfdtest::CheckPoint(cage, id, expected, 1e-12, "twisted top corner"), "twist");
   }
 
   // A selects all; S, X scales along X about the centroid (0.5, 0.5, 0.5).
@@ -104,16 +92,16 @@ int TestCageWidgetSelection(int, char*[])
     "MouseMoveEvent " + std::to_string(sx0 + 10) + " " + std::to_string(sy) + " 0 0 0 0 0\n" +
     "MouseMoveEvent " + std::to_string(sx1) + " " + std::to_string(sy) + " 0 0 0 0 0\n" +
     lfdtest::Click(sx1, sy));
-  check(lfdtest::SelectedIds(rep) == "0 1 2 3 4 5 6 7", "A selects all");
-  check(rep->GetConstraint() == vtkCageRepresentation::ConstraintX, "X constrains to the X axis");
+  Check(lfdtest::SelectedIds(rep) == "0 1 2 3 4 5 6 7", "A selects all");
+  Check(rep->GetConstraint() == vtkCageRepresentation::ConstraintX, "X constrains to the X axis");
   // X, 2 motions and the click's own motion.
-  check(events.Summary() == "1 4 1", "S ... click is one interaction: " + events.Summary());
+  Check(events.Summary() == "1 4 1", "S ... click is one interaction: " + events.Summary());
   for (vtkIdType id = 0; id < 8; ++id)
   {
     const double expected[3] = { pivot[0] + factor * (beforeScale[3 * id] - pivot[0]),
       beforeScale[3 * id + 1],
       beforeScale[3 * id + 2] };
-    check(lfdtest::CheckPoint(cage, id, expected, 1e-9, "scaled along X"), "scale");
+    Check(lfdtest::CheckPoint(cage, id, expected, 1e-9, "scaled along X"), "scale");
   }
   std::cout << "scale factor along X: " << factor << "\n";
 
@@ -124,8 +112,8 @@ int TestCageWidgetSelection(int, char*[])
     std::to_string(sy + 60) + " 0 0 0 0 0\n" + "KeyPressEvent " + std::to_string(sx0) + " " +
     std::to_string(sy + 60) + " 0 0 27 1 Escape\nCharEvent " + std::to_string(sx0) + " " +
     std::to_string(sy + 60) + " 0 0 27 1 Escape\n");
-  check(Points(cage) == beforeRotate, "Esc cancels the rotation exactly");
-  check(events.Summary() == "1 2 1", "R ... Esc is one interaction: " + events.Summary());
+  Check(Points(cage) == beforeRotate, "Esc cancels the rotation exactly");
+  Check(events.Summary() == "1 2 1", "R ... Esc is one interaction: " + events.Summary());
 
   // G, shift + Z: the selection follows the cursor in the plane
   // perpendicular to Z (the view-plane motion without its Z part); Enter.
@@ -137,19 +125,19 @@ int TestCageWidgetSelection(int, char*[])
     std::to_string(sx0 - 30) + " " + std::to_string(sy + 20) + " 0 0 0 0 0\n" + "KeyPressEvent " +
     std::to_string(sx0 - 30) + " " + std::to_string(sy + 20) + " 0 0 13 1 Return\nCharEvent " +
     std::to_string(sx0 - 30) + " " + std::to_string(sy + 20) + " 0 0 13 1 Return\n");
-  check(rep->GetConstraint() == vtkCageRepresentation::ConstraintPlaneZ,
+  Check(rep->GetConstraint() == vtkCageRepresentation::ConstraintPlaneZ,
     "shift + Z constrains to the plane perpendicular to Z");
   for (vtkIdType id = 0; id < 8; ++id)
   {
     const double expected[3] = { beforeGrab[3 * id] + w1[0] - w0[0],
       beforeGrab[3 * id + 1] + w1[1] - w0[1],
       beforeGrab[3 * id + 2] };
-    check(lfdtest::CheckPoint(cage, id, expected, 1e-9, "grabbed in the XY plane"), "grab");
+    Check(lfdtest::CheckPoint(cage, id, expected, 1e-9, "grabbed in the XY plane"), "grab");
   }
 
   // A click on empty space clears; shift-clicks toggle handles.
   scene.Play(lfdtest::Click(5, 5));
-  check(lfdtest::SelectedIds(rep).empty(), "a click on empty space clears the selection");
+  Check(lfdtest::SelectedIds(rep).empty(), "a click on empty space clears the selection");
   double p4[3], p5[3], d4[3], d5[3];
   cage->GetDeformedPoint(4, p4);
   cage->GetDeformedPoint(5, p5);
@@ -159,9 +147,9 @@ int TestCageWidgetSelection(int, char*[])
   const int x5 = static_cast<int>(std::lround(d5[0])), y5 = static_cast<int>(std::lround(d5[1]));
   std::cout << "points 4 and 5 at (" << x4 << ", " << y4 << ") and (" << x5 << ", " << y5 << ")\n";
   scene.Play(lfdtest::Click(x4, y4) + lfdtest::Click(x5, y5, true));
-  check(lfdtest::SelectedIds(rep) == "4 5", "click + shift-click: " + lfdtest::SelectedIds(rep));
+  Check(lfdtest::SelectedIds(rep) == "4 5", "click + shift-click: " + lfdtest::SelectedIds(rep));
   scene.Play(lfdtest::Click(x4, y4, true));
-  check(lfdtest::SelectedIds(rep) == "5", "shift-click toggles: " + lfdtest::SelectedIds(rep));
-  check(cage->Validate().empty(), "the cage stays valid: " + cage->Validate());
-  return check.Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  Check(lfdtest::SelectedIds(rep) == "5", "shift-click toggles: " + lfdtest::SelectedIds(rep));
+  Check(cage->Validate().empty(), "the cage stays valid: " + cage->Validate());
+  return lfdtest::Result();
 }

@@ -4,6 +4,7 @@
 #ifndef lfdCageWidgetTestUtilities_h
 #define lfdCageWidgetTestUtilities_h
 
+#include "lfdTestChecks.h"
 #include "vtkCageRepresentation.h"
 #include "vtkCageWidget.h"
 #include "vtkCallbackCommand.h"
