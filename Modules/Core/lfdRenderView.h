@@ -736,6 +736,21 @@ inline void AcceptMatch(const DeferredMatch& match,
 }
 
 /**
+ * The part an interval of `box` shows when its lookup saw part `seen` on a
+ * surface at `surface` (the proxy's crossing, in units of the rest segment;
+ * NaN on the focal plane): its own label (Sec. 6's test), or, beyond the
+ * paper, the part seen when the proxy puts that surface inside this moved
+ * box (0 <= surface <= 1): the cage map moves whatever a box holds, so a
+ * slice of a neighbouring part that the box's slab cut off (the figure's
+ * torso above its slab face, inside the head's box) moves with this box, as
+ * in the ground truth, instead of vanishing under the label test.
+ */
+inline int ShownPart(const RenderBox& box, int seen, double surface)
+{
+  return box.Moved && seen > 0 && surface >= 0.0 && surface <= 1.0 ? seen : box.Label;
+}
+
+/**
  * The intervals, front to back (`next(view)` hands them out, nullptr after
  * the last), composited by label coverage (RenderViewSettings::AntiAliasing)
  * into `composite`; the first whose warped ray shows its box's label
@@ -795,17 +810,18 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
       }
       entry.Seen = VoteLabel(samples);
     }
-    const bool match = entry.Seen == box.Label;
-    const double alpha = box.Moved && settings.AntiAliasing ? LabelCoverage(*seenSamples, box.Label)
+    const int shown = ShownPart(box, entry.Seen, seenSamples->Surface);
+    const bool match = entry.Seen == shown;
+    const double alpha = box.Moved && settings.AntiAliasing ? LabelCoverage(*seenSamples, shown)
                                                             : (match ? 1.0 : 0.0);
     if (alpha <= 0.0)
     {
       continue;
     }
     DeferredMatch candidate{
-      box.Label, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
+      shown, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
     };
-    BlendLabel(*seenSamples, box.Label, candidate.Color);
+    BlendLabel(*seenSamples, shown, candidate.Color);
     if (!match)
     {
       composite.Add(alpha, candidate.Color);
