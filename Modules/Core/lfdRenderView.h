@@ -812,8 +812,8 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
     }
     const int shown = ShownPart(box, entry.Seen, seenSamples->Surface);
     const bool match = entry.Seen == shown;
-    const double alpha = box.Moved && settings.AntiAliasing ? LabelCoverage(*seenSamples, shown)
-                                                            : (match ? 1.0 : 0.0);
+    const double alpha =
+      box.Moved && settings.AntiAliasing ? LabelCoverage(*seenSamples, shown) : (match ? 1.0 : 0.0);
     if (alpha <= 0.0)
     {
       continue;
