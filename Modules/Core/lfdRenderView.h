@@ -818,8 +818,11 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
     {
       continue;
     }
+    // The pixel's label is the box's part even where it shows a slice of
+    // another: the part that moves it (as lfd eval groundtruth labels the
+    // mesh by the rest boxes).
     DeferredMatch candidate{
-      shown, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
+      box.Label, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
     };
     BlendLabel(*seenSamples, shown, candidate.Color);
     if (!match)
