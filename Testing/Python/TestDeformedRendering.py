@@ -36,7 +36,7 @@ PREFILTER = 2
 SWIM = (30.4, 0.969, 0.987)
 # Proxy focal surface (the fish's Depth pass): swim 33.11 / 0.985 / 0.991
 # (32.89 before a moved box showed the slices of neighbouring parts the
-# proxy puts inside it, lfd::ShownPart; issue 11's target: 30 dB;
+# proxy puts inside it, lfd::detail::ShownPart; issue 11's target: 30 dB;
 # prefiltered from the default 3 rows 29.23, point-sampled 28.05); undeformed
 # from between two rows 32.64 / 0.991 / 0.991 (point-sampled, 3 rows: 30.43 /
 # 0.986).
@@ -48,7 +48,7 @@ PLANE, PROXY = 1, 2
 # 0.865 / 0.964, bend 30 24.58 / 0.919 / 0.973 (through the plane, without
 # the Depth pass: 18.36 / 0.820 / 0.944 and 20.34 / 0.884 / 0.958). The
 # figure's torso reaches 3 cm above its slab face, into the head's box:
-# before lfd::ShownPart the label test hid that slice once the head moved
+# before lfd::detail::ShownPart the label test hid that slice once the head moved
 # (twist 45 at 512 x 512: 21.23 -> 29.68 dB, see the README).
 TWIST = (21.0, 0.86, 0.96)
 BEND = (24.3, 0.91, 0.97)
