@@ -852,6 +852,21 @@ inline void AcceptMatch(const DeferredMatch& match,
 }
 
 /**
+ * The part an interval of `box` shows when its lookup saw part `seen` on a
+ * surface at `surface` (the proxy's crossing, in units of the rest segment;
+ * NaN on the focal plane): its own label (Sec. 6's test), or, beyond the
+ * paper, the part seen when the proxy puts that surface inside this moved
+ * box (0 <= surface <= 1): the cage map moves whatever a box holds, so a
+ * slice of a neighbouring part that the box's slab cut off (the figure's
+ * torso above its slab face, inside the head's box) moves with this box, as
+ * in the ground truth, instead of vanishing under the label test.
+ */
+inline int ShownPart(const RenderBox& box, int seen, double surface)
+{
+  return box.Moved && seen > 0 && surface >= 0.0 && surface <= 1.0 ? seen : box.Label;
+}
+
+/**
  * One ray's walk through its intervals, front to back (ShadeSegments):
  * composited by label coverage (RenderViewSettings::AntiAliasing) into
  * Composite; the first interval whose warped ray shows its box's label
@@ -937,18 +952,22 @@ struct SegmentWalk
       }
       entry.Seen = VoteLabel(this->Samples);
     }
-    const bool match = entry.Seen == box.Label;
+    const int shown = ShownPart(box, entry.Seen, seenSamples->Surface);
+    const bool match = entry.Seen == shown;
     const double alpha = box.Moved && this->Settings.AntiAliasing
-      ? LabelCoverage(*seenSamples, box.Label)
+      ? LabelCoverage(*seenSamples, shown)
       : (match ? 1.0 : 0.0);
     if (alpha <= 0.0)
     {
       return;
     }
+    // The pixel's label is the box's part even where it shows a slice of
+    // another: the part that moves it (as lfd eval groundtruth labels the
+    // mesh by the rest boxes).
     DeferredMatch candidate{
       box.Label, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
     };
-    BlendLabel(*seenSamples, box.Label, candidate.Color);
+    BlendLabel(*seenSamples, shown, candidate.Color);
     if (!match)
     {
       this->Composite.Add(alpha, candidate.Color);

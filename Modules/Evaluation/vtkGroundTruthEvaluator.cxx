@@ -1,6 +1,7 @@
 #include "vtkGroundTruthEvaluator.h"
 
 #include "lfdJsonFields.h"
+#include "lfdPinholeCamera.h"
 #include "lfdRequestGuard.h"
 
 #include "vtkAdaptiveSubdivisionFilter.h"
@@ -240,7 +241,7 @@ int vtkGroundTruthEvaluator::RequestData(vtkInformation*,
   capture->CaptureDepthOff();
   capture->SetAmbient(this->Ambient);
   capture->SetSupersample(
-    this->Supersample > 0 ? this->Supersample : GetCaptureSupersample(lightField));
+    this->Supersample > 0 ? this->Supersample : GetTruthSupersample(lightField, K[4]));
   errors->Observe(capture);
   capture->Update();
   vtkLightField* truth = capture->GetOutput();
@@ -298,6 +299,23 @@ int vtkGroundTruthEvaluator::GetCaptureSupersample(vtkLightField* lightField)
     return std::max(1, document["supersample"].get<int>());
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkGroundTruthEvaluator::GetTruthSupersample(vtkLightField* lightField, double focalPixels)
+{
+  const int captured = GetCaptureSupersample(lightField);
+  vtkCameraRig* rig = lightField ? lightField->GetRig() : nullptr;
+  if (!rig || rig->GetNumberOfViews() < 1 || !(focalPixels > 0.0))
+  {
+    return captured;
+  }
+  // A capture at a finer pixel pitch than the evaluated camera's holds more
+  // samples per evaluated pixel than its own supersampling: a truth at only
+  // that supersampling would be the coarser (more aliased) image of the two.
+  const double density = rig->GetCamera(0).K[1][1] / focalPixels;
+  const double samples = std::ceil(captured * density - 1e-6);
+  return static_cast<int>(std::clamp(samples, 1.0, 8.0));
 }
 
 //------------------------------------------------------------------------------

@@ -7,11 +7,14 @@
  * (vtkCageTransform), renders it with the same coaxial light from the same
  * camera (vtkLightFieldCapture from a one-view rig), renders the light field
  * through the cage (vtkLightFieldRenderer) and compares the two images:
- * The truth is prefiltered as the light field was captured: Supersample 0
- * (default) reads the capture's "supersample" from the light field's
- * provenance (vtkLightFieldCapture::SetSupersample; 1 when absent), so a
- * prefiltered capture is compared with a prefiltered truth and a
- * point-sampled one with a point-sampled truth.
+ * The truth is prefiltered at least as densely as the light field was
+ * captured: Supersample 0 (default) reads the capture's "supersample" from
+ * the light field's provenance (vtkLightFieldCapture::SetSupersample; 1
+ * when absent) and scales it by the capture's pixel density over the
+ * evaluated camera's (focal lengths in pixels; rounded up), so a prefiltered
+ * capture is compared with a prefiltered truth, a point-sampled one with a
+ * point-sampled truth, and a capture at twice the evaluated resolution (2 x
+ * 2 samples per pixel: 4 x 4 per evaluated pixel) with a truth of 4 x 4.
  * PSNR and SSIM over the object pixels (where either image shows a part),
  * the IoU of the two silhouettes and the fraction of object pixels whose
  * part label agrees.
@@ -118,7 +121,8 @@ public:
   /**
    * Samples per pixel along each axis of the ground truth's colour
    * (vtkLightFieldCapture::SetSupersample); 0 (default): the light field's
-   * own, from its provenance (1 when it records none).
+   * own, from its provenance (1 when it records none), times the capture's
+   * pixel density over the camera's (GetTruthSupersample()).
    */
   vtkSetClampMacro(Supersample, int, 0, 8);
   vtkGetMacro(Supersample, int);
@@ -130,6 +134,16 @@ public:
    * of its provenance (vtkLightFieldCapture), 1 when it records none.
    */
   static int GetCaptureSupersample(vtkLightField* lightField);
+  ///@}
+
+  ///@{
+  /**
+   * The truth's samples per pixel along each axis when Supersample is 0:
+   * GetCaptureSupersample() times the focal length in pixels of the light
+   * field's view 0 over `focalPixels` (the evaluated camera's), rounded up,
+   * at least 1: the truth is never sampled more coarsely than the capture.
+   */
+  static int GetTruthSupersample(vtkLightField* lightField, double focalPixels);
   ///@}
 
   ///@{

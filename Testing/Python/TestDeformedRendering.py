@@ -34,16 +34,24 @@ PREFILTER = 2
 # bend 20.34 / 0.884 / 0.958 (point-sampled: 16.81 / 0.748 / 0.944, 18.37 /
 # 0.809 / 0.958); head turns: label agreement 0.943 and 0.959.
 SWIM = (30.4, 0.969, 0.987)
-# Proxy focal surface (the fish's Depth pass): swim 32.89 / 0.984 / 0.991
-# (issue 11's target: 30 dB; prefiltered from the default 3 rows 29.23,
-# point-sampled 28.05); undeformed from between two rows 32.64 / 0.991 /
-# 0.991 (point-sampled, 3 rows: 30.43 / 0.986).
-SWIM_PROXY = (32.6, 0.981, 0.988)
+# Proxy focal surface (the fish's Depth pass): swim 33.11 / 0.985 / 0.991
+# (32.89 before a moved box showed the slices of neighbouring parts the
+# proxy puts inside it, lfd::detail::ShownPart; issue 11's target: 30 dB;
+# prefiltered from the default 3 rows 29.23, point-sampled 28.05); undeformed
+# from between two rows 32.64 / 0.991 / 0.991 (point-sampled, 3 rows: 30.43 /
+# 0.986).
+SWIM_PROXY = (32.9, 0.982, 0.988)
 BETWEEN_ROWS_PROXY = (32.4, 0.988, 0.989)
 ROW_HEIGHTS = [-0.109, -0.054, 0.0, 0.054, 0.109]
 PLANE, PROXY = 1, 2
-TWIST = (18.1, 0.81, 0.94)
-BEND = (20.0, 0.87, 0.95)
+# The figure, captured with its Depth pass (k = 1, proxy): twist 45 21.32 /
+# 0.865 / 0.964, bend 30 24.58 / 0.919 / 0.973 (through the plane, without
+# the Depth pass: 18.36 / 0.820 / 0.944 and 20.34 / 0.884 / 0.958). The
+# figure's torso reaches 3 cm above its slab face, into the head's box:
+# before lfd::detail::ShownPart the label test hid that slice once the head moved
+# (twist 45 at 512 x 512: 21.23 -> 29.68 dB, see the README).
+TWIST = (21.0, 0.86, 0.96)
+BEND = (24.3, 0.91, 0.97)
 OCCLUSION_AGREEMENT = 0.93
 
 
@@ -95,6 +103,14 @@ t.check(difference.max() == 0, "a cage at rest renders the undeformed light fiel
 t.check(lfd.vtkGroundTruthEvaluator.GetCaptureSupersample(fish_lf) == PREFILTER,
         "the evaluator reads the capture's supersampling",
         lfd.vtkGroundTruthEvaluator.GetCaptureSupersample(fish_lf))
+# The truth is sampled at least as densely as the capture: a camera with
+# half view 0's focal length in pixels gets 4 x 4 samples, one with view
+# 0's (or the side camera's, 22 degrees against the capture's 30) 2 x 2.
+focal0 = 0.5 * SIZE / math.tan(math.radians(0.5 * fish_lf.GetRig().GetViewAngle(0)))
+truth_samples = [lfd.vtkGroundTruthEvaluator.GetTruthSupersample(fish_lf, f)
+                 for f in (0.5 * focal0, focal0, 0.5 * SIZE / math.tan(math.radians(11.0)))]
+t.check(truth_samples == [4, 2, 2], "truth samples per pixel from the capture's density",
+        truth_samples)
 at_view = vtkCamera()
 fish_lf.GetRig().ApplyToCamera(0, at_view)
 same = t.evaluate("view 0", fish, fish_lf, None, at_view, focal=PLANE)
@@ -155,8 +171,8 @@ t.check((head_pixels[-55.0][0] > head_pixels[55.0][0]) ==
         "the turn showing more head in the ground truth shows more head here",
         head_pixels)
 
-# The figure: twisted and bent.
-figure, figure_lf = t.capture(lfd.vtkProceduralObjectSource.FIGURE, Supersample=PREFILTER)
+# The figure (with its Depth pass: the proxy): twisted and bent.
+figure, figure_lf = t.capture(lfd.vtkProceduralObjectSource.FIGURE, depth=True, Supersample=PREFILTER)
 figure_parts = lfd.vtkPartCageSource()
 figure_parts.SetInputConnection(figure.GetOutputPort())
 figure_parts.Update()
@@ -166,17 +182,17 @@ t.expect("figure twist", t.evaluate("figure twist", figure, figure_lf, twist, ca
 # Tessellation (beyond the paper): a 90-degree twist bends the inverse images
 # of view rays; splitting the boxes into 2^3 sub-boxes (or the automatic
 # choice, from the measured warp deviation) follows them better (measured,
-# prefiltered: 16.42 -> 19.62 dB, SSIM 0.723 -> 0.865 at k = 2; 19.79 dB,
-# SSIM 0.870 automatic; point-sampled 15.41 -> 18.02, auto 18.21 dB).
+# on the proxy: 17.56 -> 23.58 dB, SSIM 0.751 -> 0.916 at k = 2; 23.73 dB,
+# SSIM 0.920 automatic; through the plane 16.42 -> 19.62, auto 19.79 dB).
 strong = t.pose(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 90.0).GetOutput()
 plain = t.evaluate("twist 90 k=1", figure, figure_lf, strong, camera, 1)
 split = t.evaluate("twist 90 k=2", figure, figure_lf, strong, camera, 2)
 automatic = t.evaluate("twist 90 auto", figure, figure_lf, strong, camera, 0)
-t.check(split.GetPSNR() > plain.GetPSNR() + 1.5, "subdivision 2 gains > 1.5 dB on a 90-degree twist",
+t.check(split.GetPSNR() > plain.GetPSNR() + 5.5, "subdivision 2 gains > 5.5 dB on a 90-degree twist",
         split.GetPSNR() - plain.GetPSNR())
-t.check(split.GetSSIM() > plain.GetSSIM() + 0.05, "subdivision 2 gains > 0.05 SSIM",
+t.check(split.GetSSIM() > plain.GetSSIM() + 0.15, "subdivision 2 gains > 0.15 SSIM",
         split.GetSSIM() - plain.GetSSIM())
-t.check(automatic.GetPSNR() > plain.GetPSNR() + 2.5, "automatic subdivision gains > 2.5 dB",
+t.check(automatic.GetPSNR() > plain.GetPSNR() + 5.5, "automatic subdivision gains > 5.5 dB",
         automatic.GetPSNR() - plain.GetPSNR())
 bend = t.pose(figure_parts.GetOutputPort(), lfd.vtkCagePoseFilter.BEND, 30.0, (0, 0, 1)).GetOutput()
 t.expect("figure bend", t.evaluate("figure bend", figure, figure_lf, bend, camera), *BEND)

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -417,6 +418,21 @@ void RunOfSlabs()
   }
 }
 
+/// lfd::detail::ShownPart: a moved box shows a neighbouring part only where the
+/// proxy puts its surface inside the box's interval.
+void ShownPartInsideBox()
+{
+  lfd::RenderBox box;
+  box.Label = 1;
+  box.Moved = true;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Expect("slice of part 2 inside a moved box of part 1", lfd::detail::ShownPart(box, 2, 0.4), 2);
+  Expect("part 2 beyond the box's exit", lfd::detail::ShownPart(box, 2, 1.5), 1);
+  Expect("part 2 on the focal plane (no surface point)", lfd::detail::ShownPart(box, 2, nan), 1);
+  Expect("background inside the box", lfd::detail::ShownPart(box, 0, 0.4), 1);
+  box.Moved = false;
+  Expect("a box at rest keeps Sec. 6's test", lfd::detail::ShownPart(box, 2, 0.4), 1);
+}
 }
 
 int TestRenderView(int, char*[])
@@ -428,5 +444,6 @@ int TestRenderView(int, char*[])
   TwoHundredBoxes();
   HundredBoxFrame();
   RunOfSlabs();
+  ShownPartInsideBox();
   return lfdtest::Result();
 }
