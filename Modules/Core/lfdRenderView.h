@@ -251,7 +251,7 @@ inline void CollectSegments(const std::vector<RenderBox>& boxes,
 }
 
 /**
- * The convex hull of a deformed box's projection into a frame's image, as
+ * The convex hull of a deformed box's (or face's) projection into a frame's image, as
  * the inward edge lines of a counter-clockwise polygon (n.x x + n.y y + c,
  * |n| = 1: the signed distance in pixels). A trilinear box lies in the
  * convex hull of its 8 corners (Eq. 2 is a convex combination of them), so
@@ -391,6 +391,7 @@ struct FrameRayScratch
   /// their index; sorted from NextEntry.
   std::vector<std::pair<double, int>> Entries;
   std::size_t NextEntry = 0;
+  glm::dvec2 Pixel{ 0.0 }; ///< the pixel of the ray (StartWalk)
 };
 
 /**
@@ -403,6 +404,10 @@ struct FrameRayScratch
  *   and the convex hull of its projection (ScreenHull): a ray outside it
  *   misses the box, which is then neither bounds-tested nor warped (the
  *   bounds of a rotated thin slab are far wider than the slab);
+ * - the convex hull of each face's projection: a bilinear face lies in the
+ *   convex hull of its 4 corners, so a ray outside that hull misses the
+ *   face, which the warp then does not intersect (a ray across a thin slab
+ *   meets its 2 wide faces, and is outside the slivers of its 4 sides);
  * - a culling structure: the image is cut into square tiles and each box is
  *   listed in the tiles its screen-space bounding rectangle overlaps (the
  *   projection of its bounds' 8 corners, one pixel wider on every side; a
@@ -433,6 +438,8 @@ struct FrameCage
   std::vector<AxisBounds> Widened;      ///< per box, its bounds widened (see above)
   std::vector<ScreenHull> Hulls;        ///< per box, its projection's convex hull
   std::vector<OrientedBounds> Oriented; ///< per box, along its axes, widened (see above)
+  /// Per box, the projected hull of each face (HexFacePatch order).
+  std::vector<std::array<ScreenHull, 6>> FaceHulls;
   glm::dvec3 Eye{ 0.0 };
   glm::dmat3 PixelToDirection{ 1.0 };
   int TileSize = 1;
@@ -466,10 +473,16 @@ struct FrameCage
     this->Widened.resize(boxes.size());
     this->Hulls.resize(boxes.size());
     this->Oriented.resize(boxes.size());
+    this->FaceHulls.resize(boxes.size());
     for (std::size_t b = 0; b < boxes.size(); ++b)
     {
       this->Seen[b] = BoxFromOrigin(boxes[b].Deformed, eye);
-      this->Hulls[b] = this->ProjectedHull(boxes[b].Deformed);
+      this->Hulls[b] = this->ProjectedHull(boxes[b].Deformed.Corners, HexCorners);
+      for (int face = 0; face < 6; ++face)
+      {
+        this->FaceHulls[b][face] =
+          this->ProjectedHull(boxes[b].Deformed.Corners, HexFacePatch[face]);
+      }
       const AxisBounds& bounds = boxes[b].Bounds;
       const glm::dvec3 margin(1e-6 * glm::distance(bounds.Min, bounds.Max));
       this->Widened[b] = { bounds.Min - margin, bounds.Max + margin };
@@ -522,6 +535,7 @@ struct FrameCage
     scratch.PendingHead = 0;
     scratch.Entries.clear();
     scratch.NextEntry = 0;
+    scratch.Pixel = glm::dvec2(x, y);
     const int tile = this->TileOf(x, y);
     for (int i = this->TileStart[tile]; i < this->TileStart[tile + 1]; ++i)
     {
@@ -562,9 +576,21 @@ struct FrameCage
         continue;
       }
       const RenderBox& box = (*this->Boxes)[b];
+      int faces = 0;
+      for (int face = 0; face < 6; ++face)
+      {
+        faces |= this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y) << face;
+      }
       WarpedSegment found[MaxWarpedSegments];
-      const int n = WarpRayThroughBox(
-        this->Seen[b], box.Rest, box.Deformed, d, 0.0, found, MaxWarpedSegments, box.EyeOutside);
+      const int n = WarpRayThroughBox(this->Seen[b],
+        box.Rest,
+        box.Deformed,
+        d,
+        0.0,
+        found,
+        MaxWarpedSegments,
+        box.EyeOutside,
+        faces);
       for (int k = 0; k < n; ++k)
       {
         const BoxSegment segment{ found[k], b, -1 };
@@ -601,20 +627,25 @@ private:
     return true;
   }
 
-  /// The ScreenHull of the deformed box `box` (no edges when a corner does not project).
-  ScreenHull ProjectedHull(const Hexahedron& box) const
+  /// The ScreenHull of the corners `points[N]` of a deformed box (a box: all 8; a face: its
+  /// 4, its bilinear patch lies in their convex hull); no edges when one does not project.
+  template<std::size_t N>
+  ScreenHull ProjectedHull(const glm::dvec3 (&corners)[8], const int (&points)[N]) const
   {
     const glm::dmat3 toPixel = glm::inverse(this->PixelToDirection);
-    glm::dvec2 corners[8];
-    for (int c = 0; c < 8; ++c)
+    glm::dvec2 projected[8];
+    for (std::size_t c = 0; c < N; ++c)
     {
-      if (!this->ProjectToPixel(toPixel, box.Corners[c], corners[c]))
+      if (!this->ProjectToPixel(toPixel, corners[points[c]], projected[c]))
       {
         return {};
       }
     }
-    return ScreenHull::Of(corners, 8);
+    return ScreenHull::Of(projected, static_cast<int>(N));
   }
+
+  /// The 8 corners of a box, for ProjectedHull.
+  static constexpr int HexCorners[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
 
   /// The tiles (inclusive range; x1 < x0 for none) that the projection of
   /// `bounds` may touch.
