@@ -285,6 +285,14 @@ lfd::Hexahedron TurnTop(const lfd::Hexahedron& box, double angle)
   return turned;
 }
 
+/// A frame's pixel to direction: d = ((x - centre) / focal, (y - centre) / focal, 1).
+glm::dmat3 PixelToDirection(double centre, double focal)
+{
+  return glm::dmat3(glm::dvec3(1.0 / focal, 0.0, 0.0),
+    glm::dvec3(0.0, 1.0 / focal, 0.0),
+    glm::dvec3(-centre / focal, -centre / focal, 1.0));
+}
+
 void HundredBoxFrame()
 {
   // 100 parts rest in a row along x; their boxes are moved, twisted, into a
@@ -305,9 +313,7 @@ void HundredBoxFrame()
   boxes.push_back(lfd::MakeRenderBox(Cube({ 403, 0, 0 }), Cube(eye - glm::dvec3(0, 0, 3)), 102));
   lfd::PlaceEye(boxes, eye);
   // d = ((x - 32) / 38.4, (y - 32) / 38.4, 1): the grid fills the frame.
-  const glm::dmat3 pixelToDirection(glm::dvec3(1 / 38.4, 0, 0),
-    glm::dvec3(0, 1 / 38.4, 0),
-    glm::dvec3(-32 / 38.4, -32 / 38.4, 1.0));
+  const glm::dmat3 pixelToDirection = PixelToDirection(32.0, 38.4);
   lfd::FrameCage culled, unculled;
   culled.Build(boxes, eye, pixelToDirection, 64, 64, 8);
   unculled.Build(boxes, eye, pixelToDirection, 64, 64, 0);
@@ -406,9 +412,7 @@ void TiltedSlabs()
   }
   const glm::dvec3 eye(0.5, 0.5, -3.0);
   lfd::PlaceEye(boxes, eye);
-  const glm::dmat3 pixelToDirection(glm::dvec3(1 / 64.0, 0, 0),
-    glm::dvec3(0, 1 / 64.0, 0),
-    glm::dvec3(-16 / 64.0, -16 / 64.0, 1.0));
+  const glm::dmat3 pixelToDirection = PixelToDirection(16.0, 64.0);
   // `unoriented` enters every box where its axis-aligned bounds begin.
   lfd::FrameCage oriented, unoriented;
   oriented.Build(boxes, eye, pixelToDirection, 32, 32, 8);
