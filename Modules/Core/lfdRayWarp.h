@@ -361,6 +361,8 @@ struct BoxFromOrigin
  * that stretch is skipped.
  *
  * `box` is the deformed box seen from the ray's origin o (box.Origin).
+ * Only the faces whose bit (1 << face) is set in `faces` are intersected:
+ * the caller's promise that the ray misses the others.
  */
 inline int WarpRayThroughBox(const BoxFromOrigin& box,
   const Hexahedron& rest,
@@ -369,7 +371,8 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   double tMin,
   WarpedSegment* out,
   int maxSegments,
-  bool startsOutside = false)
+  bool startsOutside = false,
+  int faces = 0x3f)
 {
   const glm::dvec3& o = box.Origin;
   const double size = box.Size;
@@ -391,6 +394,10 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   int n = 0;
   for (int face = 0; face < 6; ++face)
   {
+    if (!(faces & (1 << face)))
+    {
+      continue;
+    }
     PatchHit hits[2];
     const int nHits = box.Faces[face].Intersect(d, speed, hits);
     for (int k = 0; k < nHits; ++k)

@@ -251,7 +251,7 @@ inline void CollectSegments(const std::vector<RenderBox>& boxes,
 }
 
 /**
- * The convex hull of a deformed box's projection into a frame's image, as
+ * The convex hull of a deformed box's (or face's) projection into a frame's image, as
  * the inward edge lines of a counter-clockwise polygon (n.x x + n.y y + c,
  * |n| = 1: the signed distance in pixels). A trilinear box lies in the
  * convex hull of its 8 corners (Eq. 2 is a convex combination of them), so
@@ -322,6 +322,64 @@ struct ScreenHull
   }
 };
 
+/**
+ * Bounds of a deformed box along its own axes, seen from a fixed eye: a
+ * bent slab's axis-aligned bounds are far thicker than the slab, so a ray
+ * enters them far before the slab, while bounds along the slab's axes stay
+ * about as thin as the slab. The box lies in the convex hull of its 8
+ * corners (Eq. 2 is a convex combination of them), so in any bounds of the
+ * corners along any three orthonormal axes.
+ */
+struct OrientedBounds
+{
+  glm::dmat3 ToAxes{ 1.0 }; ///< world to the axes' frame (rows: the unit axes)
+  glm::dvec3 Eye{ 0.0 };    ///< the eye in the axes' frame
+  AxisBounds Bounds{ glm::dvec3(0.0), glm::dvec3(0.0) }; ///< the corners', in that frame
+
+  /**
+   * The bounds of `box` along its axes (its mean edges, orthonormalised from
+   * the shortest: a slab's thin axis is kept exactly), widened by `margin`
+   * on every side; a degenerate box gets the world axes.
+   */
+  static OrientedBounds Of(const Hexahedron& box, const glm::dvec3& eye, double margin)
+  {
+    const glm::dvec3* c = box.Corners;
+    glm::dvec3 edges[3] = { (c[1] - c[0]) + (c[2] - c[3]) + (c[5] - c[4]) + (c[6] - c[7]),
+      (c[3] - c[0]) + (c[2] - c[1]) + (c[7] - c[4]) + (c[6] - c[5]),
+      (c[4] - c[0]) + (c[5] - c[1]) + (c[6] - c[2]) + (c[7] - c[3]) };
+    std::sort(edges,
+      edges + 3,
+      [](const glm::dvec3& a, const glm::dvec3& b) { return glm::dot(a, a) < glm::dot(b, b); });
+    OrientedBounds oriented;
+    const double scale = glm::length(edges[2]);
+    const glm::dvec3 second =
+      edges[1] - glm::dot(edges[1], edges[0]) / glm::dot(edges[0], edges[0]) * edges[0];
+    if (glm::length(edges[0]) > 1e-9 * scale && glm::length(second) > 1e-9 * scale)
+    {
+      const glm::dvec3 a0 = glm::normalize(edges[0]);
+      const glm::dvec3 a1 = glm::normalize(second);
+      // glm matrices are column-major: the transpose has the axes as rows.
+      oriented.ToAxes = glm::transpose(glm::dmat3(a0, a1, glm::cross(a0, a1)));
+    }
+    oriented.Eye = oriented.ToAxes * eye;
+    Hexahedron local;
+    for (int k = 0; k < 8; ++k)
+    {
+      local.Corners[k] = oriented.ToAxes * c[k];
+    }
+    oriented.Bounds = BoxBounds(local);
+    oriented.Bounds.Min -= glm::dvec3(margin);
+    oriented.Bounds.Max += glm::dvec3(margin);
+    return oriented;
+  }
+
+  /// Where the ray from the eye in direction `d` enters the bounds (false: it misses them).
+  bool Entry(const glm::dvec3& d, double& tEnter) const
+  {
+    return RayEntersBounds(this->Eye, this->ToAxes * d, this->Bounds, tEnter);
+  }
+};
+
 /// One thread's scratch space for the rays of a frame (FrameCage::NextSegment),
 /// reused from ray to ray: a ray allocates nothing once it has grown.
 struct FrameRayScratch
@@ -333,6 +391,7 @@ struct FrameRayScratch
   /// their index; sorted from NextEntry.
   std::vector<std::pair<double, int>> Entries;
   std::size_t NextEntry = 0;
+  glm::dvec2 Pixel{ 0.0 }; ///< the pixel of the ray (StartWalk)
 };
 
 /**
@@ -345,6 +404,10 @@ struct FrameRayScratch
  *   and the convex hull of its projection (ScreenHull): a ray outside it
  *   misses the box, which is then neither bounds-tested nor warped (the
  *   bounds of a rotated thin slab are far wider than the slab);
+ * - the convex hull of each face's projection: a bilinear face lies in the
+ *   convex hull of its 4 corners, so a ray outside that hull misses the
+ *   face, which the warp then does not intersect (a ray across a thin slab
+ *   meets its 2 wide faces, and is outside the slivers of its 4 sides);
  * - a culling structure: the image is cut into square tiles and each box is
  *   listed in the tiles its screen-space bounding rectangle overlaps (the
  *   projection of its bounds' 8 corners, one pixel wider on every side; a
@@ -360,6 +423,10 @@ struct FrameRayScratch
  *   NextSegment hands the ray's intervals out front to back and warps a box
  *   only when it could hold the next one; RENDER_VIEW stops at the first
  *   interval that shows its label, so the boxes behind it are never warped.
+ *   A box's entry is the later of its widened bounds' and of its
+ *   OrientedBounds' (the same margin): the axis-aligned bounds of the bent
+ *   slabs of a 100-slab cage overlap so much that a ray would warp about 8%
+ *   more boxes, ahead of the interval it needs.
  *
  * Build with `tileSize` 0 to list every box in one tile covering the image
  * (no culling: every ray tries every box, as CollectSegments does).
@@ -367,9 +434,12 @@ struct FrameRayScratch
 struct FrameCage
 {
   const std::vector<RenderBox>* Boxes = nullptr;
-  std::vector<BoxFromOrigin> Seen; ///< per box, seen from Eye
-  std::vector<AxisBounds> Widened; ///< per box, its bounds widened (see above)
-  std::vector<ScreenHull> Hulls;   ///< per box, its projection's convex hull
+  std::vector<BoxFromOrigin> Seen;      ///< per box, seen from Eye
+  std::vector<AxisBounds> Widened;      ///< per box, its bounds widened (see above)
+  std::vector<ScreenHull> Hulls;        ///< per box, its projection's convex hull
+  std::vector<OrientedBounds> Oriented; ///< per box, along its axes, widened (see above)
+  /// Per box, the projected hull of each face (HexFacePatch order).
+  std::vector<std::array<ScreenHull, 6>> FaceHulls;
   glm::dvec3 Eye{ 0.0 };
   glm::dmat3 PixelToDirection{ 1.0 };
   int TileSize = 1;
@@ -402,13 +472,21 @@ struct FrameCage
     this->Seen.resize(boxes.size());
     this->Widened.resize(boxes.size());
     this->Hulls.resize(boxes.size());
+    this->Oriented.resize(boxes.size());
+    this->FaceHulls.resize(boxes.size());
     for (std::size_t b = 0; b < boxes.size(); ++b)
     {
       this->Seen[b] = BoxFromOrigin(boxes[b].Deformed, eye);
-      this->Hulls[b] = this->ProjectedHull(boxes[b].Deformed);
+      this->Hulls[b] = this->ProjectedHull(boxes[b].Deformed.Corners, HexCorners);
+      for (int face = 0; face < 6; ++face)
+      {
+        this->FaceHulls[b][face] =
+          this->ProjectedHull(boxes[b].Deformed.Corners, HexFacePatch[face]);
+      }
       const AxisBounds& bounds = boxes[b].Bounds;
       const glm::dvec3 margin(1e-6 * glm::distance(bounds.Min, bounds.Max));
       this->Widened[b] = { bounds.Min - margin, bounds.Max + margin };
+      this->Oriented[b] = OrientedBounds::Of(boxes[b].Deformed, eye, margin.x);
     }
     this->TileSize = tileSize > 0 ? tileSize : std::max(width, height);
     this->TilesX = (width + this->TileSize - 1) / this->TileSize;
@@ -457,15 +535,18 @@ struct FrameCage
     scratch.PendingHead = 0;
     scratch.Entries.clear();
     scratch.NextEntry = 0;
+    scratch.Pixel = glm::dvec2(x, y);
     const int tile = this->TileOf(x, y);
     for (int i = this->TileStart[tile]; i < this->TileStart[tile + 1]; ++i)
     {
       const int b = this->TileBoxes[i];
       double entry = 0.0; // (the widened bounds hold the bounds: a miss is rounding)
-      if (this->Hulls[b].MayHold(x, y) && RayHitsBounds(this->Eye, d, (*this->Boxes)[b].Bounds))
+      double oriented = 0.0;
+      if (this->Hulls[b].MayHold(x, y) && RayHitsBounds(this->Eye, d, (*this->Boxes)[b].Bounds) &&
+        this->Oriented[b].Entry(d, oriented))
       {
         RayEntersBounds(this->Eye, d, this->Widened[b], entry);
-        scratch.Entries.emplace_back(entry, b);
+        scratch.Entries.emplace_back(std::max(entry, oriented), b);
       }
     }
     std::sort(scratch.Entries.begin(), scratch.Entries.end());
@@ -495,9 +576,21 @@ struct FrameCage
         continue;
       }
       const RenderBox& box = (*this->Boxes)[b];
+      int faces = 0;
+      for (int face = 0; face < 6; ++face)
+      {
+        faces |= this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y) << face;
+      }
       WarpedSegment found[MaxWarpedSegments];
-      const int n = WarpRayThroughBox(
-        this->Seen[b], box.Rest, box.Deformed, d, 0.0, found, MaxWarpedSegments, box.EyeOutside);
+      const int n = WarpRayThroughBox(this->Seen[b],
+        box.Rest,
+        box.Deformed,
+        d,
+        0.0,
+        found,
+        MaxWarpedSegments,
+        box.EyeOutside,
+        faces);
       for (int k = 0; k < n; ++k)
       {
         const BoxSegment segment{ found[k], b, -1 };
@@ -534,20 +627,25 @@ private:
     return true;
   }
 
-  /// The ScreenHull of the deformed box `box` (no edges when a corner does not project).
-  ScreenHull ProjectedHull(const Hexahedron& box) const
+  /// The ScreenHull of the corners `points[N]` of a deformed box (a box: all 8; a face: its
+  /// 4, its bilinear patch lies in their convex hull); no edges when one does not project.
+  template<std::size_t N>
+  ScreenHull ProjectedHull(const glm::dvec3 (&corners)[8], const int (&points)[N]) const
   {
     const glm::dmat3 toPixel = glm::inverse(this->PixelToDirection);
-    glm::dvec2 corners[8];
-    for (int c = 0; c < 8; ++c)
+    glm::dvec2 projected[8];
+    for (std::size_t c = 0; c < N; ++c)
     {
-      if (!this->ProjectToPixel(toPixel, box.Corners[c], corners[c]))
+      if (!this->ProjectToPixel(toPixel, corners[points[c]], projected[c]))
       {
         return {};
       }
     }
-    return ScreenHull::Of(corners, 8);
+    return ScreenHull::Of(projected, static_cast<int>(N));
   }
+
+  /// The 8 corners of a box, for ProjectedHull.
+  static constexpr int HexCorners[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
 
   /// The tiles (inclusive range; x1 < x0 for none) that the projection of
   /// `bounds` may touch.

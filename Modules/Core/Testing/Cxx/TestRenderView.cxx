@@ -282,6 +282,14 @@ lfd::Hexahedron TurnTop(const lfd::Hexahedron& box, double angle)
   return turned;
 }
 
+/// A frame's pixel to direction: d = ((x - centre) / focal, (y - centre) / focal, 1).
+glm::dmat3 PixelToDirection(double centre, double focal)
+{
+  return glm::dmat3(glm::dvec3(1.0 / focal, 0.0, 0.0),
+    glm::dvec3(0.0, 1.0 / focal, 0.0),
+    glm::dvec3(-centre / focal, -centre / focal, 1.0));
+}
+
 void HundredBoxFrame()
 {
   // 100 parts rest in a row along x; their boxes are moved, twisted, into a
@@ -302,9 +310,7 @@ void HundredBoxFrame()
   boxes.push_back(lfd::MakeRenderBox(Cube({ 403, 0, 0 }), Cube(eye - glm::dvec3(0, 0, 3)), 102));
   lfd::PlaceEye(boxes, eye);
   // d = ((x - 32) / 38.4, (y - 32) / 38.4, 1): the grid fills the frame.
-  const glm::dmat3 pixelToDirection(glm::dvec3(1 / 38.4, 0, 0),
-    glm::dvec3(0, 1 / 38.4, 0),
-    glm::dvec3(-32 / 38.4, -32 / 38.4, 1.0));
+  const glm::dmat3 pixelToDirection = PixelToDirection(32.0, 38.4);
   lfd::FrameCage culled, unculled;
   culled.Build(boxes, eye, pixelToDirection, 64, 64, 8);
   unculled.Build(boxes, eye, pixelToDirection, 64, 64, 0);
@@ -371,6 +377,91 @@ void HundredBoxFrame()
     static_cast<double>(warped),
     5753,
     0.0);
+}
+
+/**
+ * The bent slabs of a many-slab cage (FrameCage's OrientedBounds): 40 slabs
+ * 0.025 thick stacked along z, one part, tilted 50 degrees about y and
+ * shifted. The slabs' axis-aligned bounds overlap far more than the slabs:
+ * the ray's entry into the oriented bounds orders them tighter, so fewer
+ * boxes are warped ahead of the interval the walk needs, for the same
+ * pixels (those of CollectSegments over every box). A ray across a slab is
+ * outside the projected hulls of its 4 thin sides: the warp intersects only
+ * the faces whose hull holds the pixel.
+ */
+void TiltedSlabs()
+{
+  SphereLookup lookup;
+  lookup.Parts = { { glm::dvec3(0.5, 0.5, 0.0), 0.35, 1, glm::dvec3(200.0, 100.0, 50.0) } };
+  const double angle = 50.0 * M_PI / 180.0;
+  std::vector<lfd::RenderBox> boxes;
+  for (int i = 0; i < 40; ++i)
+  {
+    lfd::Hexahedron rest, tilted;
+    for (int c = 0; c < 8; ++c)
+    {
+      const glm::dvec3 p(
+        lfd::HexCorner[c][0], lfd::HexCorner[c][1], -0.5 + 0.025 * (i + lfd::HexCorner[c][2]));
+      rest.Corners[c] = p;
+      tilted.Corners[c] = glm::dvec3(std::cos(angle) * (p.x - 0.5) + std::sin(angle) * p.z + 0.6,
+        p.y,
+        -std::sin(angle) * (p.x - 0.5) + std::cos(angle) * p.z);
+    }
+    boxes.push_back(lfd::MakeRenderBox(rest, tilted, 1));
+  }
+  const glm::dvec3 eye(0.5, 0.5, -3.0);
+  lfd::PlaceEye(boxes, eye);
+  const glm::dmat3 pixelToDirection = PixelToDirection(16.0, 64.0);
+  // `unoriented` enters every box where its axis-aligned bounds begin.
+  lfd::FrameCage oriented, unoriented;
+  oriented.Build(boxes, eye, pixelToDirection, 32, 32, 8);
+  unoriented.Build(boxes, eye, pixelToDirection, 32, 32, 8);
+  for (lfd::OrientedBounds& bounds : unoriented.Oriented)
+  {
+    bounds.Bounds = { glm::dvec3(-HUGE_VAL), glm::dvec3(HUGE_VAL) };
+  }
+  lfd::RenderViewSettings settings = SettingsFor(boxes);
+  settings.FocalBeforeLookup = true;
+  std::vector<lfd::BoxSegment> reference;
+  lfd::FrameRayScratch scratch;
+  long long axisAligned = 0, warped[2] = { 0, 0 }, faces = 0;
+  int different = 0, parts = 0;
+  for (int y = 0; y < 32; ++y)
+  {
+    for (int x = 0; x < 32; ++x)
+    {
+      const glm::dvec3 d = oriented.Direction(x, y);
+      const lfd::ViewSample expected = lfd::RenderView(eye, d, boxes, lookup, settings, reference);
+      for (const int k : { 0, 1 })
+      {
+        const lfd::ViewSample seen =
+          lfd::RenderView(k == 0 ? oriented : unoriented, x, y, lookup, settings, scratch);
+        different += seen.Label != expected.Label || seen.Color != expected.Color ||
+          seen.Depth != expected.Depth;
+        warped[k] += static_cast<long long>(scratch.NextEntry);
+        // The faces the warps intersected: those whose projected hull holds the pixel.
+        for (std::size_t i = 0; k == 0 && i < scratch.NextEntry; ++i)
+        {
+          for (const lfd::ScreenHull& hull : oriented.FaceHulls[scratch.Entries[i].second])
+          {
+            faces += hull.MayHold(x, y);
+          }
+        }
+      }
+      parts += expected.Label > 0;
+      for (const lfd::RenderBox& box : boxes)
+      {
+        axisAligned += lfd::RayHitsBounds(eye, d, box.Bounds);
+      }
+    }
+  }
+  Expect("40 tilted slabs: pixels seeing the part", parts, 179);
+  Expect("  pixels unlike testing every box", different, 0);
+  Expect("  boxes whose axis-aligned bounds a ray meets", static_cast<double>(axisAligned), 16063);
+  Expect("  boxes warped, entered at their oriented bounds", static_cast<double>(warped[0]), 11970);
+  Expect(
+    "  boxes warped, entered at their axis-aligned bounds", static_cast<double>(warped[1]), 12810);
+  Expect("  faces intersected (of 6 per box warped)", static_cast<double>(faces), 23940);
 }
 
 /**
@@ -443,6 +534,7 @@ int TestRenderView(int, char*[])
   TwistedBox();
   TwoHundredBoxes();
   HundredBoxFrame();
+  TiltedSlabs();
   RunOfSlabs();
   ShownPartInsideBox();
   return lfdtest::Result();
