@@ -233,13 +233,15 @@ split.SetInputData(temple)
 split.SetThreshold(60.0)
 split.Update()
 w, h, v = split.GetOutput().GetDimensions()
-masks = vtk_to_numpy(split.GetOutput().GetPass(lfd.vtkLightField.LABEL)).reshape(v, h, w)[:, ::-1] > 0
+labels = vtk_to_numpy(split.GetOutput().GetPass(lfd.vtkLightField.LABEL))
+masks = labels.reshape(v, h, w)[:, ::-1] > 0  # image rows top first
 for view in (24, 25):
     grooves = float(masks[view, 140:190, 500:540].mean())
     t.check(grooves > GROOVES_OBJECT, f"templeRing view {view}: pediment grooves object > "
             f"{GROOVES_OBJECT}", round(grooves, 3))
 gap = float(masks[25, 268:290, 260:380].mean())
-t.check(gap < GAP_OBJECT, f"templeRing view 25: the gap between the lower columns object < {GAP_OBJECT}",
+t.check(gap < GAP_OBJECT,
+        f"templeRing view 25: the gap between the lower columns object < {GAP_OBJECT}",
         round(gap, 3))
 
 passed = t.matches_baseline("TestUnsplitDeformation", temple_top)
