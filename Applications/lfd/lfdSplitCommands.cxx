@@ -418,7 +418,7 @@ void AddSplitCommands(CLI::App& app, NumericOptions& numbers, std::vector<Comman
     split->Morphology,
     scanlineLimits->GetMorphologyRadiusMinValue(),
     scanlineLimits->GetMorphologyRadiusMaxValue(),
-    "clean-up radius of the object mask");
+    "clean-up radius of the object mask (0 = none: no opening, closing or hole filling)");
   auto* splitPropagate = splitCommand->add_subcommand("propagate",
     "carry labels painted in a few views to every view through the Depth pass or a visual hull");
   addSplitIO(splitPropagate);

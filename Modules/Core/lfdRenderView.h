@@ -48,7 +48,9 @@
  * are sampled. So a matching interval of a moved box whose focal point lies
  * beyond its exit is held back while the next intervals of the same part
  * are tried: the first whose focal point is not beyond its exit gives the
- * pixel, else the held one (DeferredMatch).
+ * pixel, else the held one (DeferredMatch). With a proxy, an interval whose
+ * lookup found no surface (focused on the plane instead) does not displace
+ * one held on the surface.
  *
  * Segments have no fixed cap: they go to a caller-owned vector that keeps
  * its capacity from ray to ray (one per thread), so a ray allocates nothing
@@ -932,6 +934,7 @@ struct DeferredMatch
   double Alpha = 0.0;
   glm::dvec3 Color{ 0.0 };
   double Depth = 0.0;
+  bool OnSurface = false; ///< its samples were focused on the proxy surface
 };
 
 /// Composites `match` (a matching interval) and makes it the ray's label and depth.
@@ -1071,9 +1074,17 @@ struct SegmentWalk
       this->Composite.Add(alpha, candidate.Color);
       return;
     }
-    const double focal = std::isnan(seenSamples->Surface)
-      ? this->Light.FocalParameter(segment.RestEnter, direction)
-      : seenSamples->Surface;
+    candidate.OnSurface = !std::isnan(seenSamples->Surface);
+    if (box.Moved && this->Held.Label >= 0 && this->Held.OnSurface && !candidate.OnSurface)
+    {
+      // A later interval whose lookup found no surface is focused on the
+      // plane, on other texels than the surface the held one found: it
+      // neither gives the pixel nor replaces the held interval.
+      return;
+    }
+    const double focal = candidate.OnSurface
+      ? seenSamples->Surface
+      : this->Light.FocalParameter(segment.RestEnter, direction);
     if (box.Moved && focal > 1.0)
     {
       this->Held = candidate;

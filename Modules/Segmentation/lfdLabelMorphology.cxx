@@ -69,7 +69,86 @@ void ObjectMask(const unsigned char* rgb,
   {
     mask[p] = (rgb[3 * p] + rgb[3 * p + 1] + rgb[3 * p + 2]) / 3.0 > threshold ? 1 : 0;
   }
-  CleanLabels(mask, nullptr, width, height, 1, radius);
+  if (radius > 0)
+  {
+    CleanLabels(mask, nullptr, width, height, 1, radius);
+    FillObjectHoles(rgb, width, height, threshold, mask);
+  }
+}
+
+namespace
+{
+/// The components (4-connected) of the non-zero pixels of `image`, and
+/// whether each reaches the image border.
+int Components(const cv::Mat& image, cv::Mat& regions, std::vector<unsigned char>& border)
+{
+  cv::Mat stats, centroids;
+  const int count = cv::connectedComponentsWithStats(image, regions, stats, centroids, 4);
+  border.assign(count, 0);
+  for (int r = 1; r < count; ++r)
+  {
+    const int left = stats.at<int>(r, cv::CC_STAT_LEFT);
+    const int top = stats.at<int>(r, cv::CC_STAT_TOP);
+    border[r] = left == 0 || top == 0 || left + stats.at<int>(r, cv::CC_STAT_WIDTH) == image.cols ||
+      top + stats.at<int>(r, cv::CC_STAT_HEIGHT) == image.rows;
+  }
+  return count;
+}
+}
+
+void FillObjectHoles(const unsigned char* rgb,
+  int width,
+  int height,
+  double threshold,
+  unsigned char* mask)
+{
+  // Measured on the 47 views of the templeRing at threshold 60: its holes
+  // between the columns show the black backdrop (a fifth or more of their
+  // pixels darker than 10) or the dark cloth behind it (half or more darker
+  // than 20); its grooves, flutes and shadowed recesses (up to 2 250 pixels
+  // each) have neither. The pediment's grooves open onto the backdrop
+  // through gaps of a few pixels (640 x 480 views): a closing of a disc of
+  // a 120th of the image seals those before the outside is found.
+  constexpr double DarkLevel = 1.0 / 6.0; // of the threshold
+  constexpr double DarkShare = 0.2;       // of the hole's pixels
+  constexpr double DimLevel = 1.0 / 3.0;
+  constexpr double DimShare = 0.5;
+  const int seal = std::max(1, static_cast<int>(std::lround(std::min(width, height) / 120.0)));
+  cv::Mat object(height, width, CV_8UC1, mask);
+  const cv::Mat disc = cv::getStructuringElement(
+    cv::MORPH_ELLIPSE, cv::Size(2 * seal + 1, 2 * seal + 1), cv::Point(seal, seal));
+  cv::Mat sealed, outside, regions;
+  cv::morphologyEx(object, sealed, cv::MORPH_CLOSE, disc);
+  cv::compare(sealed, 0, outside, cv::CMP_EQ);
+  std::vector<unsigned char> border;
+  Components(outside, regions, border);
+  const long pixels = static_cast<long>(width) * height;
+  // The holes: background pixels that the sealed outside does not reach.
+  cv::Mat holes(height, width, CV_8UC1);
+  unsigned char* hole = holes.ptr<unsigned char>();
+  const int* region = regions.ptr<int>();
+  for (long p = 0; p < pixels; ++p)
+  {
+    hole[p] = !mask[p] && !border[region[p]] ? 1 : 0;
+  }
+  const int count = Components(holes, regions, border);
+  std::vector<long> area(count, 0), dark(count, 0), dim(count, 0);
+  // On the sum of R, G and B, as ObjectMask thresholds their mean.
+  const double darkSum = 3.0 * DarkLevel * threshold;
+  const double dimSum = 3.0 * DimLevel * threshold;
+  for (long p = 0; p < pixels; ++p)
+  {
+    const int sum = rgb[3 * p] + rgb[3 * p + 1] + rgb[3 * p + 2];
+    ++area[region[p]];
+    dark[region[p]] += sum <= darkSum ? 1 : 0;
+    dim[region[p]] += sum <= dimSum ? 1 : 0;
+  }
+  for (long p = 0; p < pixels; ++p)
+  {
+    const int r = region[p];
+    const bool backdrop = dark[r] >= DarkShare * area[r] || dim[r] >= DimShare * area[r];
+    mask[p] = mask[p] || (r > 0 && !border[r] && !backdrop) ? 1 : 0;
+  }
 }
 
 void DistanceToMask(const unsigned char* mask, int width, int height, std::vector<float>& distance)

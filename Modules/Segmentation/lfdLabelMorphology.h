@@ -29,14 +29,34 @@ void CleanLabels(unsigned char* image,
 
 /**
  * The object pixels of one RGB view: mean of the channels above `threshold`
- * (1, else 0), cleaned by an opening and a closing of `radius` pixels, into
- * `mask` (width x height bytes).
+ * (1, else 0), cleaned by an opening and a closing of `radius` pixels and
+ * its holes filled (FillObjectHoles), into `mask` (width x height bytes).
+ * Radius 0 leaves the thresholded pixels as they are.
  */
 void ObjectMask(const unsigned char* rgb,
   int width,
   int height,
   double threshold,
   int radius,
+  unsigned char* mask);
+
+/**
+ * Fills the holes of an object `mask` (width x height bytes, non-zero =
+ * object) of the RGB view `rgb` that are the object's own dark pixels, not
+ * the backdrop seen through it. A hole is a background region (4-connected)
+ * that does not reach the image border once openings of a few pixels are
+ * sealed (a closing by a disc of a 120th of the image); it is the backdrop
+ * seen through the object when at least a fifth of its pixels are darker
+ * than a sixth of `threshold` (mean of RGB) or at least half of them darker
+ * than a third of it, else it is filled. Grooves and shadowed recesses
+ * darker than the object threshold are holes that the label pass and the
+ * visual hull must not have: a ray through one votes background and the
+ * proxy has no depth there.
+ */
+void FillObjectHoles(const unsigned char* rgb,
+  int width,
+  int height,
+  double threshold,
   unsigned char* mask);
 
 /**

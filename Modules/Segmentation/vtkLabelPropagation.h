@@ -18,7 +18,8 @@
  *   than a voxel and small calibration errors survive.
  *   Silhouettes are the Coaxial pass brighter than Threshold (mean of RGB),
  *   cleaned by a morphological opening and closing, as is usual for the
- *   Middlebury rings on black. The grid is placed by a coarse carve of the
+ *   Middlebury rings on black, their holes filled unless they show the
+ *   backdrop (lfd::segmentation::FillObjectHoles). The grid is placed by a coarse carve of the
  *   box the rig's cameras surround, then carved at full resolution.
  *
  * Each pixel of each view sees the first proxy voxel along its ray (with

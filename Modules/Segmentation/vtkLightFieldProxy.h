@@ -10,7 +10,8 @@
  * ReplaceDepth is on. Otherwise the depth is estimated:
  *
  * 1. the visual hull of the object's silhouettes (the Coaxial pass brighter
- *    than Threshold, as vtkLabelPropagation carves it, Resolution voxels
+ *    than Threshold, its holes filled unless they show the backdrop, as
+ *    vtkLabelPropagation carves it, Resolution voxels
  *    along its longest side), and per view the depth of the first hull
  *    voxel each object pixel sees: the hull contains the object, so the
  *    surface lies at or behind that depth;

@@ -11,7 +11,9 @@
  * says otherwise. Only object pixels are labelled: the input's Label pass
  * > 0 when it has one (so a scan-line split can refine a silhouette), else
  * the Coaxial pass brighter than Threshold (mean of RGB), cleaned with a
- * morphological opening and closing of MorphologyRadius pixels.
+ * morphological opening and closing of MorphologyRadius pixels, its holes
+ * filled unless they show the backdrop (the object's grooves and shadows
+ * darker than Threshold are object; lfd::segmentation::FillObjectHoles).
  *
  * @sa vtkLightFieldSplitter vtkProjectorSegmentation vtkLabelPropagation
  */
@@ -58,8 +60,8 @@ public:
 
   ///@{
   /**
-   * Radius of the clean-up of the thresholded object mask; 0 disables it.
-   * Default 1.
+   * Radius of the clean-up of the thresholded object mask; 0 disables it
+   * (the hole filling too). Default 1.
    */
   vtkSetClampMacro(MorphologyRadius, int, 0, 50);
   vtkGetMacro(MorphologyRadius, int);

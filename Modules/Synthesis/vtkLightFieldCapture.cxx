@@ -464,8 +464,7 @@ class ProjectorSimulation
 public:
   ProjectorSimulation(vtkLightFieldCapture* capture,
     vtkCameraRig* projectors,
-    vtkUnsignedCharArray* maskArray,
-    vtkIdType pixels)
+    vtkUnsignedCharArray* maskArray)
     : Capture(capture)
     , Projectors(projectors)
     , MaskArray(maskArray)
@@ -474,9 +473,6 @@ public:
     , Height(projectors->GetImageSize()[1])
     , Pixels(static_cast<vtkIdType>(Width) * Height)
     , Depth(Pixels * Count)
-    , Surface(pixels)
-    , CodedSum(3 * pixels)
-    , FloodSum(3 * pixels)
     , Random(static_cast<unsigned int>(capture->GetNoiseSeed()))
     , Noise(0.0, capture->GetProjectorNoise())
   {
@@ -486,8 +482,14 @@ public:
   /// of the label it sees at each of its pixels.
   void RenderDepthMaps(CaptureStudio& studio, int width, int height);
 
-  /// The Coded and Flood pixels of the view the studio's camera shows, whose
-  /// camera-z depth is `z`, into `coded` and `flood` (3 x `pixels` each).
+  /**
+   * The Coded and Flood pixels of the view the studio's camera shows, a
+   * `width` x `height` camera `camera`, into `coded` and `flood` (3 x
+   * width x height each). The studio renders it at n x n times the pixels
+   * (n = Supersample, prefiltered as the Coaxial pass), whose camera-z
+   * depth is `z`: each pixel is the mean of its n x n samples' light (a
+   * camera integrates it over the pixel), then room light and noise.
+   */
   void CaptureView(CaptureStudio& studio,
     const lfd::PinholeCamera& camera,
     int width,
@@ -496,7 +498,10 @@ public:
     unsigned char* coded,
     unsigned char* flood)
   {
-    const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+    const int n = this->Capture->GetSupersample();
+    const int fineWidth = n * width;
+    const int fineHeight = n * height;
+    const vtkIdType finePixels = static_cast<vtkIdType>(fineWidth) * fineHeight;
     // The albedo (unlit) for the room light, if any, then each projector.
     studio.ShowShaded();
     vtkProperty* material = studio.GetMaterial();
@@ -507,22 +512,29 @@ public:
     {
       material->LightingOff();
       studio.Render();
-      studio.ReadPixels(width, height, this->Albedo);
+      studio.ReadPixels(fineWidth, fineHeight, this->Albedo);
       material->LightingOn();
     }
-    std::fill(this->CodedSum.begin(), this->CodedSum.end(), 0.0);
-    std::fill(this->FloodSum.begin(), this->FloodSum.end(), 0.0);
-    // The surface point each pixel sees, from the depth.
-    const lfd::PinholeCamera::Unprojection unproject = camera.GetUnprojection();
-    for (vtkIdType q = 0; q < pixels; ++q)
+    this->CodedSum.assign(3 * finePixels, 0.0);
+    this->FloodSum.assign(3 * finePixels, 0.0);
+    // The surface point each sample sees, from the depth, through the
+    // camera of the n x n finer pixel grid over the same image.
+    lfd::PinholeCamera fine = camera;
+    fine.K[0] *= n;
+    fine.K[1] *= n;
+    fine.K[2][0] = n * (camera.K[2][0] + 0.5) - 0.5;
+    fine.K[2][1] = n * (camera.K[2][1] + 0.5) - 0.5;
+    const lfd::PinholeCamera::Unprojection unproject = fine.GetUnprojection();
+    this->Surface.resize(finePixels);
+    for (vtkIdType q = 0; q < finePixels; ++q)
     {
       const glm::dvec2 pixel(
-        static_cast<double>(q % width), static_cast<double>(height - 1 - q / width));
+        static_cast<double>(q % fineWidth), static_cast<double>(fineHeight - 1 - q / fineWidth));
       this->Surface[q] = unproject(pixel, static_cast<double>(z[q]));
     }
     for (int p = 0; p < this->Count; ++p)
     {
-      this->AddProjector(studio, p, width, height, z);
+      this->AddProjector(studio, p, fineWidth, fineHeight, z);
     }
     material->SetAmbient(this->Capture->GetAmbient());
     material->SetDiffuse(1.0 - this->Capture->GetAmbient());
@@ -532,11 +544,31 @@ public:
       value += noisy ? this->Noise(this->Random) : 0.0;
       return static_cast<unsigned char>(std::lround(std::min(255.0, std::max(0.0, value))));
     };
-    for (vtkIdType i = 0; i < 3 * pixels; ++i)
+    for (int y = 0; y < height; ++y)
     {
-      const double ambient = room > 0.0 ? room * this->Albedo->GetValue(i) : 0.0;
-      coded[i] = expose(this->CodedSum[i] + ambient);
-      flood[i] = expose(this->FloodSum[i] + ambient);
+      for (int x = 0; x < width; ++x)
+      {
+        double sum[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+        for (int j = 0; j < n; ++j)
+        {
+          for (int i = 0; i < n; ++i)
+          {
+            const vtkIdType q = static_cast<vtkIdType>(y * n + j) * fineWidth + x * n + i;
+            for (int c = 0; c < 3; ++c)
+            {
+              const double ambient = room > 0.0 ? room * this->Albedo->GetValue(3 * q + c) : 0.0;
+              sum[c] += this->CodedSum[3 * q + c] + ambient;
+              sum[3 + c] += this->FloodSum[3 * q + c] + ambient;
+            }
+          }
+        }
+        const vtkIdType pixel = 3 * (static_cast<vtkIdType>(y) * width + x);
+        for (int c = 0; c < 3; ++c)
+        {
+          coded[pixel + c] = expose(sum[c] / (n * n));
+          flood[pixel + c] = expose(sum[3 + c] / (n * n));
+        }
+      }
     }
   }
 
@@ -736,6 +768,7 @@ void CaptureViews(vtkLightFieldCapture* capture,
   rig->GetCameraCenter(0, fixedLamp);
   vtkNew<vtkUnsignedCharArray> rgbBuffer;
   std::vector<float> viewDepth(simulation && !passes.Depth ? pixels : 0);
+  std::vector<float> fineDepth;
   for (int view = 0; view < views && !capture->GetAbortExecute(); ++view)
   {
     studio.View(rig, view);
@@ -743,7 +776,7 @@ void CaptureViews(vtkLightFieldCapture* capture,
     if (passes.Coaxial)
     {
       // Prefiltered: the same frustum through n x n times the pixels, each
-      // pixel the mean of its samples; the other passes stay point-sampled.
+      // pixel the mean of its samples; Label and Depth stay point-sampled.
       const int n = capture->GetSupersample();
       studio.SetSize(n * width, n * height);
       studio.RenderShaded(
@@ -774,13 +807,26 @@ void CaptureViews(vtkLightFieldCapture* capture,
     }
     if (simulation)
     {
+      // Prefiltered as the Coaxial pass: the projectors light the n x n
+      // samples of each pixel, seen at their own depths.
+      const int n = capture->GetSupersample();
+      const float* sampled = z;
+      if (n > 1)
+      {
+        studio.SetSize(n * width, n * height);
+        studio.RenderLabels();
+        fineDepth.resize(pixels * n * n);
+        studio.ReadDepth(n * width, n * height, fineDepth.data());
+        sampled = fineDepth.data();
+      }
       simulation->CaptureView(studio,
         rig->GetCamera(view),
         width,
         height,
-        z,
+        sampled,
         passes.Coded + 3 * slice,
         passes.Flood + 3 * slice);
+      studio.SetSize(width, height);
     }
     capture->UpdateProgress(static_cast<double>(view + 1) / views);
   }
@@ -1202,7 +1248,7 @@ int vtkLightFieldCapture::RequestData(vtkInformation*,
   std::unique_ptr<ProjectorSimulation> simulation;
   if (project)
   {
-    simulation.reset(new ProjectorSimulation(this, projectors, maskArray, width * height));
+    simulation.reset(new ProjectorSimulation(this, projectors, maskArray));
     simulation->RenderDepthMaps(studio, width, height);
   }
   CaptureViews(this, studio, rig, passes, simulation.get());

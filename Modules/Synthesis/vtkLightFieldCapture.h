@@ -81,8 +81,11 @@
  * its truth the same way). The Label and Depth passes stay point-sampled at
  * the pixel centre (no multisampling, no FXAA): a label is one part's, never
  * a mix, and a depth is one surface's. The projector passes (Coded, Flood)
- * stay point-sampled too: their per-pixel projective texturing works on the
- * one surface point the pixel centre sees. With Supersample 1 (default) a
+ * are prefiltered the same way: each of a pixel's N x N samples is lit by
+ * the projectors at the surface point it sees (its own depth), and the
+ * pixel is their mean before the room light and the noise are added; a
+ * pixel over a mask's colour edge or the object's silhouette mixes them,
+ * as a camera's would. With Supersample 1 (default) a
  * pixel's colour, label and depth all come from the one surface its centre
  * sees, so the edges of the passes agree exactly.
  *
@@ -254,9 +257,9 @@ public:
 
   ///@{
   /**
-   * Samples per pixel along each image axis of the Coaxial pass (see
-   * Prefiltering above): 1 (default) point-samples the pixel centre, N > 1
-   * averages N x N samples over the pixel.
+   * Samples per pixel along each image axis of the Coaxial, Coded and
+   * Flood passes (see Prefiltering above): 1 (default) point-samples the
+   * pixel centre, N > 1 averages N x N samples over the pixel.
    */
   vtkSetClampMacro(Supersample, int, 1, 8);
   vtkGetMacro(Supersample, int);

@@ -5,7 +5,9 @@
 // intervals and the first visible one gives the pixel; a ray through 200
 // boxes keeps all 200 segments, sorted by distance; a frame of 100 moved
 // boxes through the per-frame culling (lfd::FrameCage) renders every pixel
-// exactly as testing every box does, trying and warping far fewer boxes.
+// exactly as testing every box does, trying and warping far fewer boxes;
+// an interval held on the proxy surface is not displaced by a later one
+// focused on the plane.
 #include "lfdRenderView.h"
 #include "lfdTestChecks.h"
 
@@ -524,6 +526,73 @@ void ShownPartInsideBox()
   box.Moved = false;
   Expect("a box at rest keeps Sec. 6's test", lfd::detail::ShownPart(box, 2, 0.4), 1);
 }
+
+/**
+ * A light field whose every lookup sees part 1: the interval whose warped
+ * line starts at rest z in [k - 0.5, k + 0.5) gets script entry k, its
+ * colour and its proxy surface (NaN: no surface, focused on the plane at
+ * the entry's FocalParameter instead).
+ */
+struct ScriptedLookup
+{
+  struct Entry
+  {
+    double Surface;
+    double Focal;
+    glm::dvec3 Color;
+  };
+  std::vector<Entry> Script;
+
+  const Entry& Find(const glm::dvec3& o) const
+  {
+    return this->Script[static_cast<std::size_t>(std::lround(o.z))];
+  }
+  bool Gather(const glm::dvec3& o, const glm::dvec3&, lfd::RaySamples& out) const
+  {
+    out.Count = 1;
+    out.Samples[0] = { this->Find(o).Color, 1.0, 1 };
+    out.Surface = this->Find(o).Surface;
+    return true;
+  }
+  bool Widen(const glm::dvec3&, const glm::dvec3&, int, glm::dvec3&) const { return false; }
+  double FocalDepth(const glm::dvec3&, const glm::dvec3&) const { return 0.0; }
+  double FocalParameter(const glm::dvec3& o, const glm::dvec3&) const
+  {
+    return this->Find(o).Focal;
+  }
+};
+
+void HeldOnSurface()
+{
+  // Two moved boxes of part 1 one behind the other on the ray (rest z in
+  // [0, 1] and [1, 2], both shifted along x). The first interval's lookup
+  // is focused beyond its exit (s = 3) and held; the second's finds no
+  // surface and is focused on the plane within it (s = 0.5).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<lfd::RenderBox> boxes;
+  for (int k = 0; k < 2; ++k)
+  {
+    boxes.push_back(lfd::MakeRenderBox(
+      Cube({ 0, 0, static_cast<double>(k) }), Cube({ 0.01, 0, static_cast<double>(k) }), 1));
+  }
+  const glm::dvec3 eye(0.5, 0.5, -5.0), d(0.0, 0.0, 1.0);
+  lfd::PlaceEye(boxes, eye);
+  const lfd::RenderViewSettings settings = SettingsFor(boxes);
+  std::vector<lfd::BoxSegment> segments;
+  ScriptedLookup proxy;
+  proxy.Script = { { 3.0, nan, { 200, 0, 0 } }, { nan, 0.5, { 0, 200, 0 } } };
+  const lfd::ViewSample held = lfd::RenderView(eye, d, boxes, proxy, settings, segments);
+  Expect("held on the surface, then a plane lookup: label", held.Label, 1);
+  Expect("  the held interval gives the pixel (red)", held.Color.r, 200.0);
+  // On the plane alone (no proxy) the first interval is held for its focal
+  // point beyond its exit, and the second, focused within, gives the pixel.
+  ScriptedLookup plane;
+  plane.Script = { { nan, 3.0, { 200, 0, 0 } }, { nan, 0.5, { 0, 200, 0 } } };
+  const lfd::ViewSample planar = lfd::RenderView(eye, d, boxes, plane, settings, segments);
+  Expect("plane lookups only: the interval holding its focal point gives the pixel (green)",
+    planar.Color.g,
+    200.0);
+}
 }
 
 int TestRenderView(int, char*[])
@@ -537,5 +606,6 @@ int TestRenderView(int, char*[])
   TiltedSlabs();
   RunOfSlabs();
   ShownPartInsideBox();
+  HeldOnSurface();
   return lfdtest::Result();
 }

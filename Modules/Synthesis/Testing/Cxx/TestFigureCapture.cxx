@@ -2,10 +2,14 @@
 // views 0 (from +Z) and 1 (45 degrees) side by side. The texture reaches
 // the capture through input port 1. Prefiltered (Supersample 2), a 64 x 64
 // capture is exactly the 2 x 2 means of the 128 x 128 one, with the
-// point-sampled Label pass of a plain 64 x 64 capture.
+// point-sampled Label pass of a plain 64 x 64 capture; its projector passes
+// (Coded, Flood) are the 2 x 2 means too, within rounding.
 #include "lfdSynthesisTestUtilities.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
 
 #include <cstring>
 #include <set>
@@ -25,9 +29,28 @@ int TestFigureCapture(int argc, char* argv[])
     1,
     1);
 
+  // Two projectors of 64 x 64 painting the 3 parts (the same masks at
+  // every capture size).
+  vtkNew<vtkUnsignedCharArray> palette;
+  palette->SetNumberOfComponents(3);
+  const unsigned char colours[4][3] = {
+    { 0, 0, 0 }, { 230, 40, 30 }, { 30, 200, 60 }, { 40, 60, 220 }
+  };
+  for (const auto& colour : colours)
+  {
+    palette->InsertNextTypedTuple(colour);
+  }
+  const auto project = [&](vtkLightFieldCapture* projected)
+  {
+    projected->SetPalette(palette);
+    projected->SetNumberOfProjectors(2);
+    projected->SetProjectorWidth(64);
+    projected->SetProjectorHeight(64);
+  };
   auto capture = lfdtest::RingCapture(source);
   capture->SetTextureConnection(source->GetOutputPort(1));
   capture->CaptureDepthOff();
+  project(capture);
   capture->Update();
   vtkLightField* lightField = capture->GetOutput();
 
@@ -57,6 +80,7 @@ int TestFigureCapture(int argc, char* argv[])
   prefiltered->SetTextureConnection(source->GetOutputPort(1));
   prefiltered->CaptureDepthOff();
   prefiltered->SetSupersample(2);
+  project(prefiltered);
   prefiltered->Update();
   auto pointSampled = lfdtest::RingCapture(source, 64);
   pointSampled->CaptureCoaxialOff();
@@ -67,6 +91,8 @@ int TestFigureCapture(int argc, char* argv[])
   vtkDataArray* plainLabel = pointSampled->GetOutput()->GetPass(vtkLightField::LABEL);
   int wrongMeans = 0;
   int wrongLabels = 0;
+  int wrongProjected = 0;
+  const int projected[2] = { vtkLightField::CODED, vtkLightField::FLOOD };
   for (vtkIdType view = 0; view < 8; ++view)
   {
     for (vtkIdType y = 0; y < 64; ++y)
@@ -83,12 +109,28 @@ int TestFigureCapture(int argc, char* argv[])
           wrongMeans += static_cast<int>(mean->GetComponent(p, c)) != (sum + 2) / 4 ? 1 : 0;
         }
         wrongLabels += meanLabel->GetComponent(p, 0) != plainLabel->GetComponent(p, 0) ? 1 : 0;
+        // Each 128 x 128 pixel was rounded before this mean: 1 level apart at most.
+        for (int pass : projected)
+        {
+          vtkDataArray* full = lightField->GetPass(pass);
+          vtkDataArray* half = prefiltered->GetOutput()->GetPass(pass);
+          for (int c = 0; c < 3; ++c)
+          {
+            const double sum = full->GetComponent(fine, c) + full->GetComponent(fine + 1, c) +
+              full->GetComponent(fine + 128, c) + full->GetComponent(fine + 129, c);
+            wrongProjected += std::abs(half->GetComponent(p, c) - sum / 4.0) > 1.0 ? 1 : 0;
+          }
+        }
       }
     }
   }
   lfdtest::Check(wrongMeans == 0, "prefiltered pixels that are not the 2 x 2 mean", wrongMeans, 0);
   lfdtest::Check(
     wrongLabels == 0, "prefiltered Label pixels not the point-sampled ones", wrongLabels, 0);
+  lfdtest::Check(wrongProjected == 0,
+    "prefiltered Coded and Flood values more than 1 level from the 2 x 2 mean",
+    wrongProjected,
+    0);
   const char* provenance = prefiltered->GetOutput()->GetProvenance();
   lfdtest::Check(provenance && std::strstr(provenance, "\"supersample\": 2"),
     "provenance records \"supersample\": 2",
