@@ -805,7 +805,9 @@ private:
 
 /**
  * The OpenCV pixel bounds (x0, y0, x1, y1) of the labelled (non-zero) pixels
- * of each view of a label stack; x1 < x0 for a view without any.
+ * of each view of a label stack; x1 < x0 for a view without any. Reads texel
+ * by texel through ViewStack::Pixel, so that labels served by an image cache
+ * (tile by tile) are read once, in order.
  */
 inline std::vector<glm::ivec4> LabelRectangles(const ViewStack<std::uint8_t>& labels, int views)
 {
@@ -815,9 +817,8 @@ inline std::vector<glm::ivec4> LabelRectangles(const ViewStack<std::uint8_t>& la
     glm::ivec4& rect = rects[v];
     for (int y = 0; y < labels.Height; ++y)
     {
-      const std::uint8_t* row = labels.Pixel(v, 0, y);
       int x0 = 0;
-      while (x0 < labels.Width && !row[x0])
+      while (x0 < labels.Width && !*labels.Pixel(v, x0, y))
       {
         ++x0;
       }
@@ -826,7 +827,7 @@ inline std::vector<glm::ivec4> LabelRectangles(const ViewStack<std::uint8_t>& la
         continue;
       }
       int x1 = labels.Width - 1;
-      while (!row[x1])
+      while (!*labels.Pixel(v, x1, y))
       {
         --x1;
       }

@@ -591,15 +591,12 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.DepthTiles = this->ProxyTiles.get();
     sampler.ProxyViews = this->ProxyViews;
   }
-  // The hull reads the Label pass whole: not for labels served by an image cache.
-  if (settings.UseLabels && plane.Empty() && !sampler.Depth.Present() && labels.Data)
+  if (settings.UseLabels && plane.Empty() && !sampler.Depth.Present())
   {
-    sampler.Hull = &this->GetLabelHull(lightField->GetPass(vtkLightField::LABEL),
-      input->GetWidth(),
-      input->GetHeight(),
-      rig,
-      layout,
-      cameras);
+    // Keyed by what holds the pass: its array, or the image cache serving it.
+    vtkObject* holder = lightField->GetPass(vtkLightField::LABEL);
+    sampler.Hull = &this->GetLabelHull(
+      holder ? holder : lightField->GetTexelSource(), labels, rig, layout, cameras);
   }
   // Without a proxy a ring lookup samples every line at its focal cylinder:
   // runs of a moved part's intervals are looked up from their focal piece.
@@ -715,24 +712,20 @@ const std::vector<double>& vtkLightFieldRenderer::GetProxyExtent(vtkObject* hold
 }
 
 //------------------------------------------------------------------------------
-const lfd::LabelHull& vtkLightFieldRenderer::GetLabelHull(vtkDataArray* labels,
-  int width,
-  int height,
+const lfd::LabelHull& vtkLightFieldRenderer::GetLabelHull(vtkObject* holder,
+  const lfd::ViewStack<std::uint8_t>& labels,
   vtkCameraRig* rig,
   const lfd::RingLayout& layout,
   const std::vector<lfd::PinholeCamera>& cameras)
 {
-  if (!this->Hull || labels != this->HullArray || labels->GetMTime() > this->HullTime ||
+  if (!this->Hull || holder != this->HullArray || holder->GetMTime() > this->HullTime ||
     rig->GetMTime() > this->HullTime || this->ExcludedViews != this->HullExcludedViews)
   {
     this->Hull = std::make_unique<lfd::LabelHull>();
-    if (this->Hull->Initialize(layout, cameras.data(), width, height))
+    if (this->Hull->Initialize(layout, cameras.data(), labels.Width, labels.Height))
     {
-      const lfd::ViewStack<std::uint8_t> stack{
-        vtkUnsignedCharArray::SafeDownCast(labels)->GetPointer(0), width, height, 1
-      };
       const std::vector<glm::ivec4> rects =
-        lfd::LabelRectangles(stack, static_cast<int>(cameras.size()));
+        lfd::LabelRectangles(labels, static_cast<int>(cameras.size()));
       lfd::LabelHull& hull = *this->Hull;
       vtkSMPTools::For(0,
         lfd::LabelHull::Sectors,
@@ -745,7 +738,7 @@ const lfd::LabelHull& vtkLightFieldRenderer::GetLabelHull(vtkDataArray* labels,
         });
       hull.Unite();
     }
-    this->HullArray = labels;
+    this->HullArray = holder;
     this->HullExcludedViews = this->ExcludedViews;
     this->HullTime.Modified();
   }

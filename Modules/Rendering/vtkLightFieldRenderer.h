@@ -418,19 +418,19 @@ private:
   /**
    * The lfd::LabelHull of the Label pass `labels` over `layout` (no grid
    * when a camera has lens distortion), so that focal-plane rays that can
-   * meet no part skip their lookup; cached while the Label pass, the rig and
-   * the excluded views are unchanged.
+   * meet no part skip their lookup; cached while `holder` (the pass's array,
+   * or the image cache serving it), the rig and the excluded views are
+   * unchanged.
    */
-  const lfd::LabelHull& GetLabelHull(vtkDataArray* labels,
-    int width,
-    int height,
+  const lfd::LabelHull& GetLabelHull(vtkObject* holder,
+    const lfd::ViewStack<std::uint8_t>& labels,
     vtkCameraRig* rig,
     const lfd::RingLayout& layout,
     const std::vector<lfd::PinholeCamera>& cameras);
 #endif
 
   std::unique_ptr<lfd::LabelHull> Hull;
-  vtkDataArray* HullArray = nullptr; // compared, never dereferenced
+  vtkObject* HullArray = nullptr; // compared, never dereferenced
   std::vector<int> HullExcludedViews;
   vtkTimeStamp HullTime;
 
