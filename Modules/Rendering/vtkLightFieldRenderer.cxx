@@ -235,6 +235,15 @@ struct RenderRows
   }
 };
 
+/// What holds the pass `pass` of `lightField`: its array, or else the
+/// texel source serving it (out of core); the key of what the renderer
+/// caches per pass (proxy extent, label hull).
+vtkObject* PassHolder(vtkLightField* lightField, int pass)
+{
+  vtkObject* array = lightField->GetPass(pass);
+  return array ? array : lightField->GetTexelSource();
+}
+
 /// The pass `pass` of `lightField` (values of type T, `components`
 /// components) as the samplers read it: its array, or else its texels
 /// through the light field's texel source (out of core); not Present() when
@@ -581,10 +590,8 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   if (this->FocalSurface != FOCAL_PLANE && depth.Present())
   {
     sampler.Depth = depth;
-    // Keyed by what holds the pass: its array, or the image cache serving it.
-    vtkObject* holder = input->GetPass(vtkLightField::DEPTH);
     const std::vector<double>& extent =
-      this->GetProxyExtent(holder ? holder : input->GetTexelSource(), depth, rig, cameras);
+      this->GetProxyExtent(PassHolder(input, vtkLightField::DEPTH), depth, rig, cameras);
     sampler.DepthRange = extent.data() + 6;
     sampler.SurfaceLow = glm::dvec3(extent[0], extent[1], extent[2]);
     sampler.SurfaceHigh = glm::dvec3(extent[3], extent[4], extent[5]);
@@ -593,14 +600,12 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   }
   if (settings.UseLabels && plane.Empty() && !sampler.Depth.Present())
   {
-    // Keyed by what holds the pass: its array, or the image cache serving it.
-    vtkObject* holder = lightField->GetPass(vtkLightField::LABEL);
     sampler.Hull = &this->GetLabelHull(
-      holder ? holder : lightField->GetTexelSource(), labels, rig, layout, cameras);
+      PassHolder(lightField, vtkLightField::LABEL), labels, rig, layout, cameras);
   }
   // Without a proxy a ring lookup samples every line at its focal cylinder:
   // runs of a moved part's intervals are looked up from their focal piece.
-  settings.FocalBeforeLookup = plane.Empty() && !sampler.Depth.Data;
+  settings.FocalBeforeLookup = plane.Empty() && !sampler.Depth.Present();
   settings.WidenedSearch = this->WidenedSearch > 0;
   settings.AntiAliasing = this->AntiAliasing;
   settings.Owned = lfd::OwnedLabels(boxes);
