@@ -8,8 +8,8 @@ written to docs/images/:
   (one straight warped ray per box, k = 1, hard label edges, the focal
   plane) | subdivision auto, anti-aliased silhouettes and the proxy focal
   surface (the defaults of this version: auto from the scene's
-  "subdivision": "auto"); the object PSNR of each is printed, and those of
-  the figure at rest, from a camera between two rows and bent 30 degrees;
+  "subdivision": "auto"); the object PSNR of each is printed (the figure at
+  rest, from between two rows and bent: lfd-TestFigureGroundTruth);
 - temple_twist.png (when the templeRing data is found): the real
   templeRing in one box (`lfd demo --scene temple`), undeformed | its top
   twisted 35 degrees as the paper renders it (focal plane, k = 1, hard
@@ -61,26 +61,9 @@ def write_png(path, panels):
 
 
 def figure_twist():
-    # Captured at twice the pictures' resolution (512 x 512 views, 2 x 2
-    # samples per pixel: 4 x 4 per pixel of the 256 x 256 pictures, and so is
-    # the truth, vtkGroundTruthEvaluator::GetTruthSupersample): from a 256 x 256
-    # capture, bilinear resampling alone bounds the figure's fine texture at
-    # about 25.8 dB (the 30-degree capture resampled onto the 26-degree
-    # camera's pixels).
-    source, lf = t.capture(lfd.vtkProceduralObjectSource.FIGURE, depth=True, Supersample=2,
-                           Width=2 * SIZE, Height=2 * SIZE)
-    parts = lfd.vtkPartCageSource()
-    parts.SetInputConnection(source.GetOutputPort())
-    parts.Update()
-    rig = lf.GetRig()
-    camera = t.side_camera(rig, azimuth=0.2, angle=26.0)
-    between = t.side_camera(rig)
-    c, r = rig.GetCenter(), rig.GetRadius()
-    between.SetPosition(c[0] + 0.35 * r, c[1] + 0.025 * r, c[2] + 0.95 * r)
-    t.evaluate("rest", source, lf, None, camera, 0, SIZE)
-    t.evaluate("between rows", source, lf, None, between, 0, SIZE)
-    bend = t.pose(parts.GetOutputPort(), lfd.vtkCagePoseFilter.BEND, 30.0, (0, 0, 1)).GetOutput()
-    t.evaluate("bend 30 auto", source, lf, bend, camera, 0, SIZE)
+    # Captured at twice the pictures' resolution (lfdtesting.fine_figure, the
+    # capture of lfd-TestFigureGroundTruth, which checks the figures printed).
+    source, lf, parts, camera, _ = t.fine_figure(SIZE)
     twist = t.pose(parts.GetOutputPort(), lfd.vtkCagePoseFilter.TWIST, 45.0).GetOutput()
     panels = []
     for name, subdivision, anti_aliasing, focal in (("twist k=1 hard plane", 1, False, 1),
