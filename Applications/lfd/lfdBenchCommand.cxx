@@ -31,7 +31,9 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <CLI/CLI.hpp>
+#include <fcntl.h>
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -102,19 +104,50 @@ private:
 /**
  * The time (s) the calling thread has spent ready to run without a core:
  * the second field of /proc/thread-self/schedstat (the scheduler's
- * run-queue delay, in ns); -1 where the kernel does not say. The thread that
- * asks for a frame is on its critical path: on one thread a frame's wall
- * time is its CPU time plus this wait, and the other processes' load shows
- * here, not as a slower lookup. (Not the sum over the process's threads: an
- * idle TBB worker that the scheduler wakes for a few microseconds may have
- * waited milliseconds for a core without delaying the frame.)
+ * run-queue delay, in ns), kept open so that a reading costs a few
+ * microseconds. The thread that asks for a frame is on its critical path: on
+ * one thread a frame's wall time is its CPU time plus this wait, and the
+ * other processes' load shows here, not as a slower lookup. (Not the sum
+ * over the process's threads: an idle TBB worker that the scheduler wakes
+ * for a few microseconds may have waited milliseconds for a core without
+ * delaying the frame.)
  */
-double RunQueueWait()
+class RunQueueWait
 {
-  std::ifstream schedstat("/proc/thread-self/schedstat");
-  unsigned long long running = 0, waiting = 0;
-  return schedstat >> running >> waiting ? 1e-9 * static_cast<double>(waiting) : -1.0;
-}
+public:
+  RunQueueWait()
+    : File(open("/proc/thread-self/schedstat", O_RDONLY | O_CLOEXEC))
+  {
+  }
+  ~RunQueueWait()
+  {
+    if (this->File >= 0)
+    {
+      close(this->File);
+    }
+  }
+  RunQueueWait(const RunQueueWait&) = delete;
+  RunQueueWait& operator=(const RunQueueWait&) = delete;
+
+  /// The wait so far; -1 where the kernel does not say.
+  double Seconds() const
+  {
+    char text[128];
+    const ssize_t length = this->File < 0 ? -1 : pread(this->File, text, sizeof(text) - 1, 0);
+    unsigned long long running = 0, waiting = 0;
+    if (length <= 0)
+    {
+      return -1.0;
+    }
+    text[length] = '\0';
+    return std::sscanf(text, "%llu %llu", &running, &waiting) == 2
+      ? 1e-9 * static_cast<double>(waiting)
+      : -1.0;
+  }
+
+private:
+  int File;
+};
 
 /**
  * The process's CPU time (s): every thread's, to the nanosecond
@@ -151,16 +184,18 @@ template<typename Work>
 Measure MedianTimes(int repeat, Work&& work)
 {
   std::vector<Measure> runs;
+  const RunQueueWait queue;
   for (int i = 0; i < repeat; ++i)
   {
-    const double wait = RunQueueWait();
+    // The wall clock encloses the other two: a frame never waits longer than it lasts.
     const double start = vtkTimerLog::GetUniversalTime();
+    const double wait = queue.Seconds();
     const double cpu = ProcessCpuTime();
     work();
     Measure run;
     run.CpuSeconds = ProcessCpuTime() - cpu;
+    run.WaitSeconds = wait < 0.0 ? -1.0 : queue.Seconds() - wait;
     run.Seconds = Seconds(start);
-    run.WaitSeconds = wait < 0.0 ? -1.0 : RunQueueWait() - wait;
     runs.push_back(run);
   }
   const auto median = runs.begin() + runs.size() / 2;
