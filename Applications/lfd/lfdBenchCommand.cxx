@@ -1262,11 +1262,12 @@ void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
   auto studio = std::make_shared<bool>(false);
   vtkNew<vtkLightFieldCapture> captureLimits;
   auto* benchCommand = app.add_subcommand("bench",
-    "print rays/s, ms/frame (wall clock, and the process's CPU time over all threads) and "
-    "peak memory of the renderer on fixed scenes (median of "
-    "repeated renders; writes nothing unless --json), undeformed and deformed at each --size, "
+    "print rays/s, ms/frame (wall clock, the process's CPU time over all threads and the "
+    "run-queue wait, of the median frame of repeated renders) and peak memory of the renderer "
+    "on fixed scenes (writes nothing unless --json), undeformed and deformed at each --size, "
     "each also as a ratio to a reference loop (16 texel reads per pixel, no geometry) timed in "
-    "the same run, the cost against light-field size (views x resolution) and against cage "
+    "the same run, again on one thread (like for like), the cost and the memory (against the "
+    "raw image bytes) against light-field size (views x resolution) and the cost against cage "
     "size (the fish bent under 1 to 100 boxes, with and without the renderer's cage "
     "acceleration), and a two-plane light field (the fish from a 16x16 grid, with the 4 "
     "nearest cameras and through a synthetic aperture); needs an X display (xvfb-run -a)");
