@@ -164,7 +164,7 @@ double ProcessCpuTime()
 
 /**
  * One configuration's figures: the wall time, the process's CPU time and
- * its threads' run-queue wait (s) of ONE frame, the median frame by wall
+ * the calling thread's run-queue wait (s) of ONE frame, the median frame by wall
  * time of the repeats (so the three figures belong together), the
  * vtkSMPTools threads it ran on, and the process's resident memory when it
  * started and at its peak (bytes).
