@@ -1,7 +1,9 @@
-// `lfd bench`: rays/s, ms/frame (wall clock and process CPU time) and peak
-// memory of the renderer at several frame sizes, against a reference loop, against light-field size
-// and against cage size, as tables and as JSON; with --studio, the frame times of the editing view
-// (vtkLightFieldEditor) during a drag.
+// `lfd bench`: rays/s, ms/frame (wall clock, process CPU time and run-queue
+// wait of the same frame) and peak memory of the renderer at several frame
+// sizes, against a reference loop, on the run's threads and on one thread,
+// against light-field size (memory against raw bytes too) and against cage
+// size, as tables and as JSON; with --studio, the frame times of the editing
+// view (vtkLightFieldEditor) during a drag.
 #include "lfdCommands.h"
 
 #include "vtkCagePoseFilter.h"
@@ -29,7 +31,9 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <CLI/CLI.hpp>
+#include <fcntl.h>
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +41,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -52,11 +57,12 @@ namespace lfd::cli
 namespace
 {
 /**
- * The process's peak resident memory over a stretch of work: Reset() sets
- * the kernel's high-water mark (VmHWM) back to the current resident size
- * (/proc/self/clear_refs, Linux 4.0 and later), Read() gives it in bytes,
- * so that each configuration's peak is its own. Where the mark cannot be
- * reset, Read() is the process's peak so far (getrusage) and Scope() says so.
+ * The process's resident memory: its current size, and its peak over a
+ * stretch of work: Reset() sets the kernel's high-water mark (VmHWM) back to
+ * the current resident size (/proc/self/clear_refs, Linux 4.0 and later),
+ * Read() gives it in bytes, so that each configuration's peak is its own.
+ * Where the mark cannot be reset, Read() is the process's peak so far and
+ * Scope() says so.
  */
 class PeakMemory
 {
@@ -69,56 +75,136 @@ public:
     this->Resettable = !clear.fail();
   }
 
-  long long Read() const
+  long long Read() const { return Status("VmHWM:"); }
+
+  /// The resident size now (bytes).
+  long long Resident() const { return Status("VmRSS:"); }
+
+  const char* Scope() const { return this->Resettable ? "configuration" : "process"; }
+
+private:
+  /// A size in kB of /proc/self/status, in bytes (0 where absent).
+  static long long Status(const std::string& field)
   {
     std::ifstream status("/proc/self/status");
     std::string line;
     while (std::getline(status, line))
     {
-      if (line.rfind("VmHWM:", 0) == 0)
+      if (line.rfind(field, 0) == 0)
       {
-        return 1024LL * std::atoll(line.c_str() + 6);
+        return 1024LL * std::atoll(line.c_str() + field.size());
       }
     }
     return 0;
   }
 
-  const char* Scope() const { return this->Resettable ? "configuration" : "process"; }
-
-private:
   bool Resettable = false;
 };
 
 /**
- * A configuration's median time per frame on the wall clock and in the
- * process's CPU time (s), and its peak memory (bytes). The CPU time is that
- * of every thread of the process (vtkTimerLog::GetCPUTime(): clock()), the
- * work a frame costs: on a shared machine the wall clock of the same
- * configuration swings 2-3x with the load, its CPU time much less.
+ * The time (s) the calling thread has spent ready to run without a core:
+ * the second field of /proc/thread-self/schedstat (the scheduler's
+ * run-queue delay, in ns), kept open so that a reading costs a few
+ * microseconds. The thread that asks for a frame is on its critical path: on
+ * one thread a frame's wall time is its CPU time plus this wait, and the
+ * other processes' load shows here, not as a slower lookup. (Not the sum
+ * over the process's threads: an idle TBB worker that the scheduler wakes
+ * for a few microseconds may have waited milliseconds for a core without
+ * delaying the frame.)
+ */
+class RunQueueWait
+{
+public:
+  RunQueueWait()
+    : File(open("/proc/thread-self/schedstat", O_RDONLY | O_CLOEXEC))
+  {
+  }
+  ~RunQueueWait()
+  {
+    if (this->File >= 0)
+    {
+      close(this->File);
+    }
+  }
+  RunQueueWait(const RunQueueWait&) = delete;
+  RunQueueWait& operator=(const RunQueueWait&) = delete;
+
+  /// The wait so far; -1 where the kernel does not say.
+  double Seconds() const
+  {
+    char text[128];
+    const ssize_t length = this->File < 0 ? -1 : pread(this->File, text, sizeof(text) - 1, 0);
+    unsigned long long running = 0, waiting = 0;
+    if (length <= 0)
+    {
+      return -1.0;
+    }
+    text[length] = '\0';
+    return std::sscanf(text, "%llu %llu", &running, &waiting) == 2
+      ? 1e-9 * static_cast<double>(waiting)
+      : -1.0;
+  }
+
+private:
+  int File;
+};
+
+/**
+ * The process's CPU time (s): every thread's, to the nanosecond
+ * (CLOCK_PROCESS_CPUTIME_ID; clock() reads the same clock in microseconds).
+ * With several threads it includes the time TBB's workers spin waiting for
+ * work, so it is compared like for like only between runs on one thread.
+ */
+double ProcessCpuTime()
+{
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+/**
+ * One configuration's figures: the wall time, the process's CPU time and
+ * the calling thread's run-queue wait (s) of ONE frame, the median frame by wall
+ * time of the repeats (so the three figures belong together), the
+ * vtkSMPTools threads it ran on, and the process's resident memory when it
+ * started and at its peak (bytes).
  */
 struct Measure
 {
   double Seconds = 0.0;
   double CpuSeconds = 0.0;
+  double WaitSeconds = 0.0; ///< -1 where the kernel does not say
+  int Threads = 0;
+  long long StartBytes = 0;
   long long PeakBytes = 0;
 };
 
-/// The median wall and CPU times of `repeat` calls of `work`.
+/// The figures of the median (by wall time) of `repeat` calls of `work`.
 template<typename Work>
 Measure MedianTimes(int repeat, Work&& work)
 {
-  std::vector<double> wall, cpu;
+  std::vector<Measure> runs;
+  const RunQueueWait queue;
   for (int i = 0; i < repeat; ++i)
   {
+    // The wall clock encloses the other two: a frame never waits longer than it lasts.
     const double start = vtkTimerLog::GetUniversalTime();
-    const double cpuStart = vtkTimerLog::GetCPUTime();
+    const double wait = queue.Seconds();
+    const double cpu = ProcessCpuTime();
     work();
-    wall.push_back(Seconds(start));
-    cpu.push_back(vtkTimerLog::GetCPUTime() - cpuStart);
+    Measure run;
+    run.CpuSeconds = ProcessCpuTime() - cpu;
+    run.WaitSeconds = wait < 0.0 ? -1.0 : queue.Seconds() - wait;
+    run.Seconds = Seconds(start);
+    runs.push_back(run);
   }
-  std::sort(wall.begin(), wall.end());
-  std::sort(cpu.begin(), cpu.end());
-  return { wall[wall.size() / 2], cpu[cpu.size() / 2], 0 };
+  const auto median = runs.begin() + runs.size() / 2;
+  std::nth_element(runs.begin(),
+    median,
+    runs.end(),
+    [](const Measure& a, const Measure& b) { return a.Seconds < b.Seconds; });
+  median->Threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  return *median;
 }
 
 /// Median times of `repeat` updates of the renderer after a warm-up, and
@@ -126,6 +212,7 @@ Measure MedianTimes(int repeat, Work&& work)
 Measure MeasureRender(vtkLightFieldRenderer* renderer, int repeat, PeakMemory& peak)
 {
   peak.Reset();
+  const long long start = peak.Resident();
   Run(renderer, "rendering"); // warm-up (rig layout, threads)
   Measure figures = MedianTimes(repeat,
     [renderer]
@@ -133,6 +220,7 @@ Measure MeasureRender(vtkLightFieldRenderer* renderer, int repeat, PeakMemory& p
       renderer->Modified();
       renderer->Update();
     });
+  figures.StartBytes = start;
   figures.PeakBytes = peak.Read();
   return figures;
 }
@@ -219,9 +307,9 @@ EventTime PlayEvent(vtkInteractorEventRecorder* recorder, const std::string& lin
 {
   recorder->SetInputString(line.c_str());
   const double start = vtkTimerLog::GetUniversalTime();
-  const double cpu = vtkTimerLog::GetCPUTime();
+  const double cpu = ProcessCpuTime();
   recorder->Play();
-  return { Seconds(start), vtkTimerLog::GetCPUTime() - cpu };
+  return { Seconds(start), ProcessCpuTime() - cpu };
 }
 
 /**
@@ -395,8 +483,10 @@ vtkSmartPointer<vtkLightFieldSceneLogic> FishScene(vtkLightField* lightField, in
  * 16 texel reads of one light-field lookup (2 x 2 bilinear texels in each of
  * 4 views, as lfd::LightFieldSampler::Gather reads them) and their weighted
  * blend, without any geometry (no cylinder, projection or label), rows in
- * parallel as vtkLightFieldRenderer's. The floor a lookup cannot go under:
- * the renderer's figures print as ratios to its time, taken in the same run.
+ * parallel as vtkLightFieldRenderer's (the same vtkSMPTools::For over the
+ * frame's rows, the same default grain). The floor a lookup cannot go
+ * under: the renderer's figures print as ratios to its time, taken in the
+ * same run on as many threads.
  */
 struct ReferenceLoop
 {
@@ -454,6 +544,7 @@ struct ReferenceLoop
 Measure ReferenceTime(vtkLightField* lightField, int size, int repeat, PeakMemory& peak)
 {
   peak.Reset();
+  const long long start = peak.Resident();
   auto* radiance = vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::COAXIAL));
   std::vector<std::uint8_t> out(3 * static_cast<std::size_t>(size) * size);
   const ReferenceLoop loop{ radiance->GetPointer(0),
@@ -464,6 +555,7 @@ Measure ReferenceTime(vtkLightField* lightField, int size, int repeat, PeakMemor
     out.data() };
   vtkSMPTools::For(0, size, loop);
   Measure figures = MedianTimes(repeat, [size, &loop] { vtkSMPTools::For(0, size, loop); });
+  figures.StartBytes = start;
   figures.PeakBytes = peak.Read();
   return figures;
 }
@@ -498,6 +590,7 @@ Measure CageRenderTime(vtkLightField* lightField,
 struct BenchSettings
 {
   int Repeat = 15;
+  int Threads = 0; ///< vtkSMPTools threads (0: its default, every core)
   std::vector<int> Sizes = { 256, 512, 1024 };
   bool Quick = false;
   std::string Json;
@@ -594,7 +687,13 @@ int TableSize(const BenchSettings& settings)
 
 /**
  * The cost against light-field size: the undeformed fish at TableSize()
- * from light fields of several view counts and resolutions.
+ * from light fields of several view counts and resolutions, and the memory
+ * against the light field's raw image bytes (its passes: Coaxial, Label):
+ * "rss_vs_raw" the process's peak during the render, "render_mb" and
+ * "render_vs_raw" what the render added to the process as it was (the
+ * light field in memory). Measured before the bench makes any other light
+ * field, so that the process then holds the start-up floor, the OpenGL
+ * state of the capture and this light field only.
  */
 void LightFieldSizeRows(const BenchSettings& settings,
   PeakMemory& peak,
@@ -606,9 +705,12 @@ void LightFieldSizeRows(const BenchSettings& settings,
   };
   const std::vector<Layout> layouts = settings.Quick
     ? std::vector<Layout>{ { 12, 1, 32 }, { 24, 1, 64 } }
-    : std::vector<Layout>{
-        { 30, 3, 256 }, { 120, 3, 128 }, { 120, 3, 256 }, { 120, 3, 512 }, { 240, 3, 256 }
-      };
+    : std::vector<Layout>{ { 30, 3, 256 },
+        { 120, 3, 128 },
+        { 120, 3, 256 },
+        { 120, 3, 512 },
+        { 240, 3, 256 },
+        { 240, 3, 512 } };
   const int size = TableSize(settings);
   for (const Layout& layout : layouts)
   {
@@ -617,6 +719,11 @@ void LightFieldSizeRows(const BenchSettings& settings,
       " views of " + std::to_string(layout.Image) + "^2";
     const Measure figures = MeasureRender(OrbitRenderer(lightField, size), settings.Repeat, peak);
     rows.push_back(Row("light-field size", name, size, lightField, 0, figures));
+    const double raw = static_cast<double>(rows.back().LightFieldBytes);
+    const double added = static_cast<double>(figures.PeakBytes - figures.StartBytes);
+    rows.back().Extra.emplace_back("rss_vs_raw", figures.PeakBytes / raw);
+    rows.back().Extra.emplace_back("render_mb", added / 1048576.0);
+    rows.back().Extra.emplace_back("render_vs_raw", added / raw);
   }
 }
 
@@ -776,8 +883,83 @@ void OutOfCoreRows(vtkLightField* fish,
   lfd::io::RemoveQuietly(folder);
 }
 
-/// The reference loop's times at each size.
-using ReferenceTimes = std::map<int, Measure>;
+/// The reference loop's figures at each frame size and thread count.
+using ReferenceTimes = std::map<std::pair<int, int>, Measure>;
+
+/// The reference loop's figures at `row`'s frame size and thread count.
+const Measure& ReferenceOf(const ReferenceTimes& reference, const BenchRow& row)
+{
+  return reference.at({ row.Size, row.Figures.Threads });
+}
+
+/**
+ * The lookup rows: the reference loop (into `referenceTable`), then the
+ * undeformed and deformed fish and figure (into `renderTable`), at each
+ * --size, on the threads vtkSMPTools has now.
+ */
+void LookupRows(const std::string& referenceTable,
+  const std::string& renderTable,
+  vtkLightField* fish,
+  vtkLightField* figure,
+  const BenchSettings& settings,
+  PeakMemory& peak,
+  ReferenceTimes& reference,
+  std::vector<BenchRow>& rows)
+{
+  for (int size : settings.Sizes)
+  {
+    const Measure loop = ReferenceTime(fish, size, settings.Repeat, peak);
+    reference[{ size, loop.Threads }] = loop;
+    rows.push_back(
+      Row(referenceTable, "reference loop (16 texel reads, no geometry)", size, fish, 0, loop));
+  }
+  for (vtkLightField* lightField : { fish, figure })
+  {
+    const std::string object = lightField == fish ? "fish" : "figure";
+    const std::string deformedName =
+      lightField == fish ? "deformed fish (swim, 3 boxes)" : "deformed figure (twist 45, 3 boxes)";
+    for (int size : settings.Sizes)
+    {
+      const auto [rest, deformed] = RenderTimes(lightField, object, size, settings.Repeat, peak);
+      rows.push_back(Row(renderTable, "undeformed " + object, size, lightField, 0, rest));
+      rows.push_back(Row(renderTable, deformedName, size, lightField, 3, deformed));
+      rows.back().AddRatio("vs_rest", rest);
+    }
+  }
+}
+
+/**
+ * The lookup rows again on one thread (vtkSMPTools::Initialize(1)), as the
+ * table "one thread", each with "vs_threads": its time over that of the
+ * same row on the run's threads (their speedup; in CPU time, below 1 where
+ * those threads spent more CPU: spinning, sharing the cores). On one thread
+ * no worker spins and no worker waits to be woken, so these ratios to the
+ * reference loop are like for like; then the run's threads are restored.
+ */
+void OneThreadRows(vtkLightField* fish,
+  vtkLightField* figure,
+  const BenchSettings& settings,
+  int threads,
+  PeakMemory& peak,
+  ReferenceTimes& reference,
+  std::vector<BenchRow>& rows)
+{
+  const std::size_t first = rows.size();
+  vtkSMPTools::Initialize(1);
+  LookupRows("one thread", "one thread", fish, figure, settings, peak, reference, rows);
+  vtkSMPTools::Initialize(threads);
+  for (std::size_t r = first; r < rows.size(); ++r)
+  {
+    const auto same = std::find_if(rows.begin(),
+      rows.begin() + first,
+      [&row = rows[r]](const BenchRow& other)
+      {
+        return (other.Table == "reference" || other.Table == "render") && other.Name == row.Name &&
+          other.Size == row.Size;
+      });
+    rows[r].AddRatio("vs_threads", same->Figures);
+  }
+}
 
 /// Prints the rows of `table` as one table, each figure also as a ratio to
 /// the reference loop at the row's frame size.
@@ -807,7 +989,7 @@ void PrintTable(const std::string& title,
   {
     return;
   }
-  std::printf("\n%-44s %8s %10s %12s %8s %8s %8s %8s",
+  std::printf("\n%-44s %8s %10s %12s %8s %8s %8s %8s %8s",
     title.c_str(),
     "pixels",
     "ms/frame",
@@ -815,6 +997,7 @@ void PrintTable(const std::string& title,
     "vs ref",
     "cpu ms",
     "cpu/ref",
+    "wait ms",
     "peak MB");
   for (const std::string& column : columns)
   {
@@ -825,8 +1008,13 @@ void PrintTable(const std::string& title,
   {
     const double pixels = static_cast<double>(row->Size) * row->Size;
     const double seconds = row->Figures.Seconds;
-    const Measure& floor = reference.at(row->Size);
-    std::printf("%-44s %8.0f %10.2f %12.3g %7.2fx %8.2f %7.2fx %8.0f",
+    const Measure& floor = ReferenceOf(reference, *row);
+    char wait[32] = "-"; // where the kernel does not say
+    if (row->Figures.WaitSeconds >= 0.0)
+    {
+      std::snprintf(wait, sizeof(wait), "%.2f", 1000.0 * row->Figures.WaitSeconds);
+    }
+    std::printf("%-44s %8.0f %10.2f %12.3g %7.2fx %8.2f %7.2fx %8s %8.0f",
       row->Name.c_str(),
       pixels,
       1000.0 * seconds,
@@ -834,6 +1022,7 @@ void PrintTable(const std::string& title,
       seconds / floor.Seconds,
       1000.0 * row->Figures.CpuSeconds,
       row->Figures.CpuSeconds / floor.CpuSeconds,
+      wait,
       row->Figures.PeakBytes / 1048576.0);
     for (const std::string& column : columns)
     {
@@ -858,7 +1047,8 @@ nlohmann::json BenchJson(const BenchSettings& settings,
   const std::vector<BenchRow>& rows,
   const ReferenceTimes& reference,
   const double load[2][3],
-  const char* peakScope)
+  const char* peakScope,
+  long long startupBytes)
 {
   nlohmann::json machine = { { "cores", std::thread::hardware_concurrency() },
     { "threads", vtkSMPTools::GetEstimatedNumberOfThreads() },
@@ -872,6 +1062,7 @@ nlohmann::json BenchJson(const BenchSettings& settings,
     { "sizes", settings.Sizes },
     { "quick", settings.Quick },
     { "peak_rss_scope", peakScope },
+    { "startup_rss_bytes", startupBytes },
     { "rows", nlohmann::json::array() } };
   for (const BenchRow& row : rows)
   {
@@ -884,11 +1075,16 @@ nlohmann::json BenchJson(const BenchSettings& settings,
       { "image_size", row.ImageSize },
       { "light_field_bytes", row.LightFieldBytes },
       { "boxes", row.Boxes },
+      { "threads", row.Figures.Threads },
       { "ms_per_frame", 1000.0 * row.Figures.Seconds },
       { "rays_per_second", pixels / row.Figures.Seconds },
-      { "vs_reference", row.Figures.Seconds / reference.at(row.Size).Seconds },
+      { "vs_reference", row.Figures.Seconds / ReferenceOf(reference, row).Seconds },
       { "cpu_ms_per_frame", 1000.0 * row.Figures.CpuSeconds },
-      { "cpu_vs_reference", row.Figures.CpuSeconds / reference.at(row.Size).CpuSeconds },
+      { "cpu_vs_reference", row.Figures.CpuSeconds / ReferenceOf(reference, row).CpuSeconds },
+      { "wait_ms_per_frame",
+        row.Figures.WaitSeconds < 0.0 ? nlohmann::json()
+                                      : nlohmann::json(1000.0 * row.Figures.WaitSeconds) },
+      { "start_rss_bytes", row.Figures.StartBytes },
       { "peak_rss_bytes", row.Figures.PeakBytes } };
     for (const auto& [name, value] : row.Extra)
     {
@@ -908,43 +1104,34 @@ void LoadAverage(double load[3])
 
 void Bench(const BenchSettings& settings)
 {
+  PeakMemory peak;
+  const long long startup = peak.Resident();
+  const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
   double load[2][3];
   LoadAverage(load[0]);
-  std::printf("threads: %d (vtkSMPTools, %s backend), cores: %u, load average: %.2f %.2f %.2f\n",
-    vtkSMPTools::GetEstimatedNumberOfThreads(),
+  std::printf("threads: %d (vtkSMPTools, %s backend), cores: %u, load average: %.2f %.2f %.2f, "
+              "start-up floor: %.0f MB resident\n",
+    threads,
     vtkSMPTools::GetBackend(),
     std::thread::hardware_concurrency(),
     load[0][0],
     load[0][1],
-    load[0][2]);
+    load[0][2],
+    startup / 1048576.0);
   // Quick: the same tables from tiny light fields, to check a run end to end.
   const int views = settings.Quick ? 24 : 120, rowsOfViews = settings.Quick ? 1 : 3;
   const int image = settings.Quick ? 64 : 256;
-  PeakMemory peak;
   std::vector<BenchRow> rows;
   ReferenceTimes reference;
-  auto fish = BenchLightField("fish", views, rowsOfViews, image);
-  for (int size : settings.Sizes)
-  {
-    reference[size] = ReferenceTime(fish, size, settings.Repeat, peak);
-    rows.push_back(Row(
-      "reference", "reference loop (16 texel reads, no geometry)", size, fish, 0, reference[size]));
-  }
-  for (const char* object : { "fish", "figure" })
-  {
-    const bool isFish = std::string(object) == "fish";
-    auto lightField = isFish ? fish : BenchLightField(object, views, rowsOfViews, image);
-    const std::string deformedName =
-      isFish ? "deformed fish (swim, 3 boxes)" : "deformed figure (twist 45, 3 boxes)";
-    for (int size : settings.Sizes)
-    {
-      const auto [rest, deformed] = RenderTimes(lightField, object, size, settings.Repeat, peak);
-      rows.push_back(Row("render", std::string("undeformed ") + object, size, lightField, 0, rest));
-      rows.push_back(Row("render", deformedName, size, lightField, 3, deformed));
-      rows.back().AddRatio("vs_rest", rest);
-    }
-  }
   LightFieldSizeRows(settings, peak, rows);
+  auto fish = BenchLightField("fish", views, rowsOfViews, image);
+  auto figure = BenchLightField("figure", views, rowsOfViews, image);
+  LookupRows("reference", "render", fish, figure, settings, peak, reference, rows);
+  if (threads > 1)
+  {
+    OneThreadRows(fish, figure, settings, threads, peak, reference, rows);
+  }
+  figure = nullptr;
   ProxyRows(settings, views, rowsOfViews, image, peak, rows);
   CageSizeRows(fish, settings, peak, rows);
   TwoPlaneRows(settings, image, peak, rows);
@@ -955,6 +1142,7 @@ void Bench(const BenchSettings& settings)
     std::to_string(rowsOfViews) + " views of " + std::to_string(image) + "^2";
   PrintTable("reference loop", "reference", rows, reference);
   PrintTable("scene (" + scene + ")", "render", rows, reference);
+  PrintTable("one thread (like for like; " + scene + ")", "one thread", rows, reference);
   PrintTable("focal surface: proxy (Depth pass)", "proxy", rows, reference);
   PrintTable("undeformed fish, light-field size", "light-field size", rows, reference);
   PrintTable("deformed fish (bend 30), cage size", "cage size", rows, reference);
@@ -962,20 +1150,30 @@ void Bench(const BenchSettings& settings)
     "two-plane fish (16x16 grid of " + std::to_string(image) + "^2)", "two-plane", rows, reference);
   PrintTable(
     "undeformed fish out of core (lfd tile, --cache-size)", "out of core", rows, reference);
-  std::printf("(median of %d renders each; vs ref: against the reference loop at the same "
-              "frame size, timed in the same run; cpu ms: the process's CPU time per frame, "
-              "all threads, and cpu/ref its ratio to the reference loop's: on a loaded machine "
-              "the wall clock swings, CPU time much less; peak MB: the process's peak resident "
-              "memory during the configuration (its light fields included); cpu_ columns: the "
-              "ratio before them in CPU time; vs_rest: against the "
-              "undeformed render; vs_plane: against the same render through the focal plane, "
-              "timed just before; "
-              "vs_3_boxes: against the 3 boxes of the same table; "
-              "no_accel_ms: the same cage with vtkLightFieldRenderer::CageAcceleration off; "
-              "vs_in_memory: against the same frame from memory, identical: 1 when its pixels "
-              "equal it, cache_mb and tiles_read: the image cache's budget and reads; "
-              "load average at the end: %.2f %.2f %.2f)\n",
+  std::printf(
+    "(the median frame (by wall time) of %d renders each; vs ref: against the reference loop at "
+    "the same frame size on as many threads, timed in the same run; cpu ms: the process's CPU "
+    "time in that frame, all threads (with %d threads it includes TBB's workers spinning for "
+    "work), and cpu/ref its ratio to the reference loop's; wait ms: the time the thread that "
+    "asked for that frame was ready to run without a core (the machine's load: on one "
+    "thread ms/frame = cpu ms + wait ms); one thread: the same rows on one thread "
+    "(vtkSMPTools::Initialize(1)), like for like, vs_threads: their time over the same row's "
+    "on %d threads; peak MB: the process's peak resident memory during the configuration "
+    "(its light fields included; the start-up floor of its libraries alone: %.0f MB); "
+    "rss_vs_raw: that peak over the light field's raw image bytes, render_mb and "
+    "render_vs_raw: what the render added to the resident memory, and over those bytes; "
+    "cpu_ columns: the ratio before them in CPU time; vs_rest: against the "
+    "undeformed render; vs_plane: against the same render through the focal plane, "
+    "timed just before; "
+    "vs_3_boxes: against the 3 boxes of the same table; "
+    "no_accel_ms: the same cage with vtkLightFieldRenderer::CageAcceleration off; "
+    "vs_in_memory: against the same frame from memory, identical: 1 when its pixels "
+    "equal it, cache_mb and tiles_read: the image cache's budget and reads; "
+    "load average at the end: %.2f %.2f %.2f)\n",
     settings.Repeat,
+    threads,
+    threads,
+    startup / 1048576.0,
     load[1][0],
     load[1][1],
     load[1][2]);
@@ -983,7 +1181,7 @@ void Bench(const BenchSettings& settings)
   {
     std::string error;
     const std::string text =
-      BenchJson(settings, rows, reference, load, peak.Scope()).dump(2) + "\n";
+      BenchJson(settings, rows, reference, load, peak.Scope(), startup).dump(2) + "\n";
     if (!lfd::io::WriteFileAtomically(settings.Json, text, error))
     {
       Fail("--json " + settings.Json + ": " + error);
@@ -1064,16 +1262,25 @@ void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
   auto studio = std::make_shared<bool>(false);
   vtkNew<vtkLightFieldCapture> captureLimits;
   auto* benchCommand = app.add_subcommand("bench",
-    "print rays/s, ms/frame (wall clock, and the process's CPU time over all threads) and "
-    "peak memory of the renderer on fixed scenes (median of "
-    "repeated renders; writes nothing unless --json), undeformed and deformed at each --size, "
+    "print rays/s, ms/frame (wall clock, the process's CPU time over all threads and the "
+    "run-queue wait, of the median frame of repeated renders) and peak memory of the renderer "
+    "on fixed scenes (writes nothing unless --json), undeformed and deformed at each --size, "
     "each also as a ratio to a reference loop (16 texel reads per pixel, no geometry) timed in "
-    "the same run, the cost against light-field size (views x resolution) and against cage "
+    "the same run, again on one thread (like for like), the cost and the memory (against the "
+    "raw image bytes) against light-field size (views x resolution) and the cost against cage "
     "size (the fish bent under 1 to 100 boxes, with and without the renderer's cage "
     "acceleration), and a two-plane light field (the fish from a 16x16 grid, with the 4 "
     "nearest cameras and through a synthetic aperture); needs an X display (xvfb-run -a)");
   auto* repeat =
     numbers.Add(benchCommand, "--repeat", settings->Repeat, 1, 1000, "renders per configuration");
+  numbers.Add(benchCommand,
+    "--threads",
+    settings->Threads,
+    0,
+    1024,
+    "threads of the renderer and the reference loop (vtkSMPTools::Initialize; 0: every core, "
+    "or VTK_SMP_MAX_THREADS); with more than one, the reference loop and the undeformed and "
+    "deformed fish and figure are also timed on one thread, in a table of their own");
   auto* sizes = numbers.Add(benchCommand,
     "--size",
     settings->Sizes,
@@ -1104,6 +1311,10 @@ void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
       if (settings->Quick && sizes->count() == 0)
       {
         settings->Sizes = { 64, 128 };
+      }
+      if (settings->Threads > 0)
+      {
+        vtkSMPTools::Initialize(settings->Threads);
       }
       *studio ? StudioBench(settings->Repeat) : Bench(*settings);
     },

@@ -65,6 +65,7 @@ CASES = [
     (["render"], 2, "lfd render: SCENE is required (see lfd render --help)"),
     # Numeric options out of range or not a number: refused input, exit 1.
     (["bench", "--repeat", "0"], 1, "--repeat 0: expected an integer from 1 to 1000"),
+    (["bench", "--threads", "-1"], 1, "--threads -1: expected an integer from 0 to 1024"),
     (["synth", "--views", "0", "--out", "n.lf"], 1, "--views 0: expected an integer from 1 to 100000"),
     (["synth", "--rows", "0", "--out", "n.lf"], 1, "--rows 0: expected an integer from 1 to 1000"),
     (["synth", "--width", "0", "--out", "n.lf"], 1, "--width 0: expected an integer from 1 to 16384"),
