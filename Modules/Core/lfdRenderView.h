@@ -980,6 +980,23 @@ inline int ShownPart(const RenderBox& box, int seen, double surface)
 template<typename Lookup>
 struct SegmentWalk
 {
+  // A constructor, not aggregate initialisation: braces zero the whole walk,
+  // the ~650 bytes of Samples included, for every ray that meets a box.
+  SegmentWalk(const std::vector<RenderBox>& boxes,
+    const Lookup& light,
+    const RenderViewSettings& settings,
+    ViewRayLook<Lookup>& view,
+    ViewSample& result,
+    CoverageComposite& composite)
+    : Boxes(boxes)
+    , Light(light)
+    , Settings(settings)
+    , View(view)
+    , Result(result)
+    , Composite(composite)
+  {
+  }
+
   const std::vector<RenderBox>& Boxes;
   const Lookup& Light;
   const RenderViewSettings& Settings;
