@@ -1140,6 +1140,7 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
 {
   SegmentWalk<Lookup> walk{ boxes, lookup, settings, view, result, composite };
   BoxSegment* deferred = nullptr; // an interval whose lookup waits for the next one
+  BoxSegment* looked = nullptr;   // the last interval of a run that was looked up
   while (walk.Going())
   {
     BoxSegment* handed = next(view);
@@ -1157,12 +1158,22 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
     {
       break;
     }
+    if (looked && walk.Continues(*looked, *handed))
+    {
+      // The run was looked up from its focal piece: the pieces behind it
+      // sample the cameras at a focal point in front of their entry, about
+      // where that lookup did.
+      looked = handed;
+      continue;
+    }
+    looked = nullptr;
     if (walk.MayDefer(*handed))
     {
       deferred = handed;
       continue;
     }
     walk.Shade(*handed);
+    looked = settings.FocalBeforeLookup && boxes[handed->Box].Moved ? handed : nullptr;
   }
   if (walk.Held.Label >= 0)
   {
