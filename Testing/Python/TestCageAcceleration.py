@@ -87,10 +87,12 @@ inside.SetPosition(eye)
 inside.SetFocalPoint(focal)
 inside.SetViewUp(*((0, 1, 0) if axis != 1 else (1, 0, 0)))
 inside.SetViewAngle(60.0)
-for name, scene, camera, expected_parts in (("bent, outside", cage, outside, 4894),
-                                            ("bent, inside", cage, inside, 7576),
-                                            ("dragged, outside", dragged, outside, 4956),
-                                            ("dragged, inside", dragged, inside, 7865)):
+# (Fewer since a run of slabs is looked up once, from its focal piece: the
+# pieces behind it no longer add the part's coverage again at its silhouette.)
+for name, scene, camera, expected_parts in (("bent, outside", cage, outside, 4865),
+                                            ("bent, inside", cage, inside, 7566),
+                                            ("dragged, outside", dragged, outside, 4906),
+                                            ("dragged, inside", dragged, inside, 7411)):
     fast = render(scene, camera, True)
     reference = render(scene, camera, False)
     for array, a, b in zip(("Radiance", "Label", "Depth"), fast, reference):
