@@ -511,6 +511,53 @@ void RunOfSlabs()
   }
 }
 
+/**
+ * A run is looked up once (lfd::ShadeSegments): six unit cubes stacked along
+ * z, all shifted by 0.1 along x, over a light field without parts (every
+ * lookup sees background). The focal point (z = 0) is in the third: the two
+ * in front wait for it, the three behind go on with the run and are neither
+ * looked up nor, through a FrameCage, warped (FrameCage::SkipRun: face
+ * neighbours straight through). The one other lookup is the view ray's.
+ */
+void RunLookedUpOnce()
+{
+  SphereLookup lookup;
+  const glm::dvec3 eye(0.5, 0.5, -10.0), d(0.0, 0.0, 1.0);
+  std::vector<lfd::RenderBox> boxes;
+  for (int i = 0; i < 6; ++i)
+  {
+    const glm::dvec3 low(0.0, 0.0, -2.5 + i);
+    boxes.push_back(lfd::MakeRenderBox(Cube(low), Cube(low + glm::dvec3(0.1, 0.0, 0.0)), 1));
+  }
+  lfd::PlaceEye(boxes, eye);
+  lfd::RenderViewSettings settings = SettingsFor(boxes);
+  std::vector<lfd::BoxSegment> segments;
+  lfd::RenderView(eye, d, boxes, lookup, settings, segments);
+  Expect("6 cubes, no part: lookups, every interval and the view ray", lookup.Gathers, 7);
+  settings.FocalBeforeLookup = true;
+  lookup.Gathers = 0;
+  const lfd::ViewSample single = lfd::RenderView(eye, d, boxes, lookup, settings, segments);
+  Expect("  lookups, the run once and the view ray", lookup.Gathers, 2);
+  Expect("  label", single.Label, 0);
+  // Pixel (0, 0) of a 1 x 1 frame looks along d.
+  lfd::FrameCage cage;
+  cage.Build(boxes, eye, glm::dmat3(1.0), 1, 1, 0);
+  lfd::FrameRayScratch scratch;
+  lookup.Gathers = 0;
+  const lfd::ViewSample framed = lfd::RenderView(cage, 0, 0, lookup, settings, scratch);
+  Expect("  through the frame cage: lookups", lookup.Gathers, 2);
+  Expect("  through the frame cage: same colour",
+    glm::length(framed.Color - single.Color) + std::abs(framed.Label - single.Label),
+    0.0);
+  int skipped = 0;
+  for (std::size_t i = 0; i < scratch.NextEntry; ++i)
+  {
+    skipped += scratch.Skipped[scratch.Entries[i].second] == scratch.Ray;
+  }
+  Expect("  cubes behind the looked-up one left out unwarped", skipped, 3);
+  Expect("  the third cube's neighbour through its top (w = 1)", cage.Neighbors[2][5], 6 * 3 + 4);
+}
+
 /// lfd::detail::ShownPart: a moved box shows a neighbouring part only where the
 /// proxy puts its surface inside the box's interval.
 void ShownPartInsideBox()
@@ -605,6 +652,7 @@ int TestRenderView(int, char*[])
   HundredBoxFrame();
   TiltedSlabs();
   RunOfSlabs();
+  RunLookedUpOnce();
   ShownPartInsideBox();
   HeldOnSurface();
   return lfdtest::Result();
