@@ -536,8 +536,7 @@ struct FrameCage
   /**
    * Starts the walk of the ray through pixel (x, y), direction `d`, through
    * the boxes of its tile whose projected hull holds the pixel and whose
-   * bounds it meets (the bounds test of CollectSegments). Returns their
-   * number.
+   * widened and oriented bounds it meets. Returns their number.
    */
   std::size_t StartWalk(int x, int y, const glm::dvec3& d, FrameRayScratch& scratch) const
   {
@@ -551,12 +550,13 @@ struct FrameCage
     for (int i = this->TileStart[tile]; i < this->TileStart[tile + 1]; ++i)
     {
       const int b = this->TileBoxes[i];
-      double entry = 0.0; // (the widened bounds hold the bounds: a miss is rounding)
+      // The widened bounds hold the bounds: a ray that meets only them (by
+      // less than their margin) crosses the box for no interval the warp keeps.
+      double entry = 0.0;
       double oriented = 0.0;
-      if (this->Hulls[b].MayHold(x, y) && RayHitsBounds(this->Eye, d, (*this->Boxes)[b].Bounds) &&
+      if (this->Hulls[b].MayHold(x, y) && RayEntersBounds(this->Eye, d, this->Widened[b], entry) &&
         this->Oriented[b].Entry(d, oriented))
       {
-        RayEntersBounds(this->Eye, d, this->Widened[b], entry);
         scratch.Entries.emplace_back(std::max(entry, oriented), b);
       }
     }
