@@ -373,11 +373,15 @@ void HundredBoxFrame()
   Expect("  pixels whose lookups differ", lookupsDiffer, 0, 0.0);
   Expect("  boxes tried without culling", static_cast<double>(triedUnculled), 64 * 64 * 102, 0.0);
   Expect("  boxes tried with culling", static_cast<double>(tried), 29888, 0.0);
-  Expect(
-    "  boxes whose projected hull and bounds a ray meets", static_cast<double>(met), 5753, 0.0);
+  // (9 boxes more than the bounds themselves let through: rays that meet
+  // only the margin of the widened bounds, which no interval comes of.)
+  Expect("  boxes whose projected hull and widened bounds a ray meets",
+    static_cast<double>(met),
+    5762,
+    0.0);
   Expect("  boxes warped, front to back up to the pixel's interval",
     static_cast<double>(warped),
-    5753,
+    5762,
     0.0);
 }
 
