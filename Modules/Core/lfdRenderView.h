@@ -191,6 +191,9 @@ struct BoxSegment
   WarpedSegment Segment;
   int Box = 0;
   int Seen = -1;
+  /// It goes on with the run of the interval handed out before it, across
+  /// pieces of the run that the walk left out (FrameCage::LeaveOut).
+  bool Joins = false;
 };
 
 namespace detail
@@ -398,7 +401,9 @@ struct FrameRayScratch
   /// Per box, the number of the last ray that left it out (FrameCage::SkipRun).
   std::vector<unsigned> Skipped;
   unsigned Ray = 0;                       ///< this ray's number
-  const BoxSegment* RunSkipped = nullptr; ///< the interval whose run SkipRun left out
+  const BoxSegment* RunSkipped = nullptr; ///< the interval whose run LeaveOut last left out
+  int Landing = -1;       ///< the box where the run left out ahead of an interval goes on
+  std::vector<int> Chain; ///< FrameCage::LeaveOut's chain of boxes
 };
 
 /**
@@ -566,6 +571,7 @@ struct FrameCage
     }
     std::sort(scratch.Entries.begin(), scratch.Entries.end());
     scratch.RunSkipped = nullptr;
+    scratch.Landing = -1;
     if (scratch.Skipped.size() != this->Boxes->size() || ++scratch.Ray == 0)
     {
       scratch.Skipped.assign(this->Boxes->size(), 0);
@@ -614,7 +620,7 @@ struct FrameCage
         faces);
       for (int k = 0; k < n; ++k)
       {
-        const BoxSegment segment{ found[k], b, -1 };
+        const BoxSegment segment{ found[k], b, -1, b == scratch.Landing };
         pending.insert(
           std::upper_bound(
             pending.begin() + scratch.PendingHead, pending.end(), segment, detail::NearerSegment),
@@ -630,36 +636,49 @@ struct FrameCage
   }
 
   /**
-   * Leaves out of the ray's walk the boxes that go on with the run of
-   * `looked` (RenderViewSettings::FocalBeforeLookup; see ShadeSegments): from
-   * the face `looked` leaves by, the chain of face neighbours straight
+   * Leaves out of the ray's walk (RenderViewSettings::FocalBeforeLookup; see
+   * ShadeSegments) up to `count` boxes that go on with the run of `from`:
+   * from the face `from` leaves by, the chain of face neighbours straight
    * through (each entered by one face, left by the opposite one, as through
    * a stack of slabs) while they are moved boxes of its part whose projected
-   * hull holds the pixel. The run was looked up from `looked`, so the pieces
-   * behind it are neither looked up nor, now, warped.
+   * hull holds the pixel. With `keepLast`, the chain's last box is kept even
+   * within `count` (the run's last piece is looked up when the focal point
+   * lies beyond it). Returns the chain's box after those left out (-1: none).
    */
-  void SkipRun(const BoxSegment& looked, FrameRayScratch& scratch) const
+  int LeaveOut(const BoxSegment& from,
+    std::size_t count,
+    bool keepLast,
+    FrameRayScratch& scratch) const
   {
     const std::vector<RenderBox>& boxes = *this->Boxes;
-    const int label = boxes[looked.Box].Label;
-    int b = looked.Box;
-    int face = looked.Segment.FaceExit;
-    for (std::size_t step = 0; face >= 0 && step < boxes.size(); ++step)
+    const int label = boxes[from.Box].Label;
+    std::vector<int>& chain = scratch.Chain;
+    chain.clear();
+    int b = from.Box;
+    int face = from.Segment.FaceExit;
+    while (face >= 0 && chain.size() <= std::min(count, boxes.size()))
     {
       const int link = this->Neighbors[b][face];
       if (link < 0)
       {
-        return;
+        break;
       }
       b = link / 6;
       face = (link % 6) ^ 1; // the opposite face of the one shared
       if (!boxes[b].Moved || boxes[b].Label != label ||
         !this->Hulls[b].MayHold(scratch.Pixel.x, scratch.Pixel.y))
       {
-        return;
+        break;
       }
-      scratch.Skipped[b] = scratch.Ray;
+      chain.push_back(b);
     }
+    const std::size_t left =
+      std::min(count, keepLast && !chain.empty() ? chain.size() - 1 : chain.size());
+    for (std::size_t i = 0; i < left; ++i)
+    {
+      scratch.Skipped[chain[i]] = scratch.Ray;
+    }
+    return left < chain.size() ? chain[left] : -1;
   }
 
 private:
@@ -1064,6 +1083,30 @@ inline int ShownPart(const RenderBox& box, int seen, double surface)
   return box.Moved && seen > 0 && surface >= 0.0 && surface <= 1.0 ? seen : box.Label;
 }
 
+/// `next` goes on with the part of `entry` where `entry` leaves off: a moved
+/// box of the same label, entered where `entry` exits (up to rounding) or
+/// across pieces left out (BoxSegment::Joins).
+inline bool GoesOn(const std::vector<RenderBox>& boxes,
+  const BoxSegment& entry,
+  const BoxSegment& next)
+{
+  const RenderBox& box = boxes[next.Box];
+  return box.Moved && box.Label == boxes[entry.Box].Label &&
+    (next.Joins || next.Segment.TEnter <= entry.Segment.TExit * (1.0 + 1e-9));
+}
+
+/**
+ * How many pieces of its run ShadeSegments leaves out ahead of an interval
+ * whose focal point lies `focal` (> 1, SegmentWalk::Focal) rest segments
+ * along its warped ray: pieces about as long as it along the ray put the
+ * focal point floor(focal) pieces ahead; the walk jumps to the one before
+ * and takes the last steps itself.
+ */
+inline std::size_t PiecesAhead(double focal)
+{
+  return focal >= 3.0 ? static_cast<std::size_t>(std::min(focal, 1e6)) - 2 : 0;
+}
+
 /**
  * One ray's walk through its intervals, front to back (ShadeSegments):
  * composited by label coverage (RenderViewSettings::AntiAliasing) into
@@ -1127,13 +1170,9 @@ struct SegmentWalk
     return this->Light.FocalParameter(segment.RestEnter, segment.RestExit - segment.RestEnter);
   }
 
-  /// `next` goes on with the part of `entry` where `entry` leaves off: a
-  /// moved box of the same label, entered where `entry` exits (up to rounding).
   bool Continues(const BoxSegment& entry, const BoxSegment& next) const
   {
-    const RenderBox& box = this->Boxes[next.Box];
-    return box.Moved && box.Label == this->Boxes[entry.Box].Label &&
-      next.Segment.TEnter <= entry.Segment.TExit * (1.0 + 1e-9);
+    return GoesOn(this->Boxes, entry, next);
   }
 
   /// Looks `entry` up and composites it (records what it showed in BoxSegment::Seen).
@@ -1209,11 +1248,19 @@ struct SegmentWalk
   }
 };
 
+/// Where ShadeSegments is in a run, for the walk that hands its intervals out.
+struct RunState
+{
+  const BoxSegment* Looked = nullptr;   ///< the interval the run was looked up from
+  const BoxSegment* Deferred = nullptr; ///< the interval waiting for the next one
+  double Focal = 0.0;                   ///< the deferred one's SegmentWalk::Focal (> 1)
+};
+
 /**
- * The intervals, front to back (`next(view, looked)` hands them out, nullptr
- * after the last; a pointer it returned stays valid for the ray; `looked` is
- * the interval the current run was looked up from, or null), shaded by
- * SegmentWalk into `result` and `composite`. True when an interval matched.
+ * The intervals, front to back (`next(view, run)` hands them out, nullptr
+ * after the last; a pointer it returned stays valid for the ray; `run` is a
+ * RunState), shaded by SegmentWalk into `result` and `composite`. True when
+ * an interval matched.
  *
  * With RenderViewSettings::FocalBeforeLookup, a run of intervals of a moved
  * part (boxes of one label, each entered where the one before is left: the
@@ -1242,10 +1289,11 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
 {
   SegmentWalk<Lookup> walk{ boxes, lookup, settings, view, result, composite };
   BoxSegment* deferred = nullptr; // an interval whose lookup waits for the next one
-  BoxSegment* looked = nullptr;   // the last interval of a run that was looked up
+  double deferredFocal = 0.0;
+  BoxSegment* looked = nullptr; // the last interval of a run that was looked up
   while (walk.Going())
   {
-    BoxSegment* handed = next(view, looked);
+    BoxSegment* handed = next(view, RunState{ looked, deferred, deferredFocal });
     if (deferred && !(handed && walk.Continues(*deferred, *handed)))
     {
       // The run ends with the deferred interval: it is looked up after all.
@@ -1272,6 +1320,7 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
     if (focal > 1.0)
     {
       deferred = handed;
+      deferredFocal = focal;
       looked = nullptr;
       continue;
     }
@@ -1443,6 +1492,7 @@ ViewSample RenderView(const glm::dvec3& o,
     CollectSegments(boxes, o, d, segments);
   }
   std::size_t k = 0;
+  const BoxSegment* jumped = nullptr;
   return detail::ShadeView(
     o,
     d,
@@ -1450,8 +1500,24 @@ ViewSample RenderView(const glm::dvec3& o,
     lookup,
     settings,
     !segments.empty(),
-    [&](detail::ViewRayLook<Lookup>&, const BoxSegment*)
-    { return k < segments.size() ? &segments[k++] : nullptr; },
+    [&](detail::ViewRayLook<Lookup>&, const detail::RunState& run)
+    {
+      if (run.Deferred && run.Deferred != jumped && detail::PiecesAhead(run.Focal) > 0)
+      {
+        // As FrameCage::LeaveOut, over the intervals that go on with the run.
+        jumped = run.Deferred;
+        std::size_t last = k; // one past the run's pieces that follow
+        while (last < segments.size() &&
+          detail::GoesOn(boxes, last == k ? *run.Deferred : segments[last - 1], segments[last]))
+        {
+          ++last;
+        }
+        const std::size_t left = std::min(detail::PiecesAhead(run.Focal), last - k - (last > k));
+        k += left;
+        segments[std::min(k, segments.size() - 1)].Joins = left > 0;
+      }
+      return k < segments.size() ? &segments[k++] : nullptr;
+    },
     segments);
 }
 
@@ -1481,12 +1547,20 @@ ViewSample RenderView(const FrameCage& cage,
     lookup,
     settings,
     any,
-    [&](detail::ViewRayLook<Lookup>& view, const BoxSegment* looked)
+    [&](detail::ViewRayLook<Lookup>& view, const detail::RunState& run)
     {
-      if (looked && looked != scratch.RunSkipped)
+      if (run.Looked && run.Looked != scratch.RunSkipped)
       {
-        cage.SkipRun(*looked, scratch);
-        scratch.RunSkipped = looked;
+        // The run was looked up: its pieces behind are not warped either.
+        cage.LeaveOut(*run.Looked, cage.Boxes->size(), false, scratch);
+        scratch.RunSkipped = run.Looked;
+      }
+      else if (run.Deferred && run.Deferred != scratch.RunSkipped &&
+        detail::PiecesAhead(run.Focal) > 0)
+      {
+        scratch.Landing =
+          cage.LeaveOut(*run.Deferred, detail::PiecesAhead(run.Focal), true, scratch);
+        scratch.RunSkipped = run.Deferred;
       }
       // A box that did not move shows the view ray's own label (ShadeSegments):
       // when that is not its label, none of its intervals can give the pixel
