@@ -398,7 +398,7 @@ struct FrameRayScratch
   std::vector<std::pair<double, int>> Entries;
   std::size_t NextEntry = 0;
   glm::dvec2 Pixel{ 0.0 }; ///< the pixel of the ray (StartWalk)
-  /// Per box, the number of the last ray that left it out (FrameCage::SkipRun).
+  /// Per box, the number of the last ray that left it out (FrameCage::LeaveOut).
   std::vector<unsigned> Skipped;
   unsigned Ray = 0;                       ///< this ray's number
   const BoxSegment* RunSkipped = nullptr; ///< the interval whose run LeaveOut last left out
