@@ -308,6 +308,7 @@ struct WarpedSegment
   double TEnter, TExit;           ///< ray parameters of the deformed entry and exit
   glm::dvec3 RestEnter, RestExit; ///< their rest-space images: the warped ray
   glm::dvec3 UvwEnter, UvwExit;   ///< their box parametric coordinates
+  int FaceExit;                   ///< the face (HexFacePatch order) the ray leaves by
 };
 
 /// A ray crosses the 6 faces at most 12 times, so the interior of a box is
@@ -389,6 +390,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
     double T;
     glm::dvec3 Uvw;
     bool OnFace; // false for the point at tMin, whose uvw is not known yet
+    int Face;    // the face hit (-1 for the point at tMin)
   };
   Crossing crossings[13];
   int n = 0;
@@ -405,7 +407,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
       if (hits[k].T >= tMin - mergeT)
       {
         crossings[n++] = {
-          std::max(hits[k].T, tMin), glm::clamp(FaceToBox(face, hits[k].ST), 0.0, 1.0), true
+          std::max(hits[k].T, tMin), glm::clamp(FaceToBox(face, hits[k].ST), 0.0, 1.0), true, face
         };
       }
     }
@@ -419,7 +421,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   // (A point at tMin known to be outside starts no stretch that matters.)
   if (!startsOutside && std::isfinite(tMin) && (n == 0 || crossings[0].T > tMin + mergeT))
   {
-    merged[m++] = { tMin, glm::dvec3(0.5), false };
+    merged[m++] = { tMin, glm::dvec3(0.5), false, -1 };
   }
   for (int k = 0; k < n; ++k)
   {
@@ -488,6 +490,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
     segment.TExit = exit.T;
     segment.UvwEnter = enter.Uvw;
     segment.UvwExit = exit.Uvw;
+    segment.FaceExit = exit.Face;
     segment.RestEnter = TrilinearMap(rest, enter.Uvw);
     segment.RestExit = TrilinearMap(rest, exit.Uvw);
   }
