@@ -922,8 +922,12 @@ struct LightFieldSampler
 {
   const RingLayout* Layout = nullptr;
   const PinholeCamera* Cameras = nullptr; // indexed by view
-  ViewStack<std::uint8_t> Radiance;       // 3 components
-  ViewStack<std::uint8_t> Labels;         // 1 component, may be absent (Present())
+  /// The cameras' projection matrices, indexed by view, for the lookup's
+  /// projections (AddBilinear); null: Cameras[view].Project (which a rig
+  /// with lens distortion needs).
+  const ProjectionMatrix* Projections = nullptr;
+  ViewStack<std::uint8_t> Radiance; // 3 components
+  ViewStack<std::uint8_t> Labels;   // 1 component, may be absent (Present())
   double FocalDistance = 0.0;
   /// The proxy: per-view depth maps (camera z, 0 = no surface), 1 component;
   /// not Present() = the paper's focal plane at FocalDistance.
@@ -1014,7 +1018,8 @@ struct LightFieldSampler
   void AddBilinear(int view, double weight, const glm::dvec3& x, RaySamples& out) const
   {
     glm::dvec2 uv;
-    if (!this->Cameras[view].Project(x, uv))
+    if (!(this->Projections ? this->Projections[view].Project(x, uv)
+                            : this->Cameras[view].Project(x, uv)))
     {
       return;
     }
