@@ -147,6 +147,39 @@ inline void ForEachBilinearPixel(const glm::dvec2& uv, int width, int height, Ad
   }
 }
 
+/**
+ * The angle of the vector (x, y) in [0, 2 pi): std::atan2 shifted into that
+ * range, within 2e-10 radian of it at a fraction of its cost (glibc's atan2
+ * took a tenth of an undeformed frame). With a = min and b = max of |x|,
+ * |y|, atan(a / b) is reduced below tan(pi / 8) by atan(a / b) = pi / 4 +
+ * atan((a - b) / (a + b)) (one division either way), where an odd
+ * polynomial of degree 11 stands for atan: least squares on 4000 Chebyshev
+ * nodes of [-tan(pi / 8), tan(pi / 8)], largest error 1.3e-10.
+ */
+inline double Azimuth(double y, double x)
+{
+  constexpr double Pi = 0.5 * TwoPi;
+  const double ax = std::abs(x);
+  const double ay = std::abs(y);
+  const double low = std::min(ax, ay);
+  const double high = std::max(ax, ay);
+  const bool reduced = low > 0.41421356237309503 * high; // tan(pi / 8)
+  const double denominator = reduced ? low + high : high;
+  const double u = denominator > 0.0 ? (reduced ? low - high : low) / denominator : 0.0;
+  const double u2 = u * u;
+  const double series = 0.99999999701802489 +
+    u2 *
+      (-0.33333278009378303 +
+        u2 *
+          (0.19997219935851313 +
+            u2 * (-0.14226554657594762 + u2 * (0.10493657285601736 + u2 * -0.058641128553379503))));
+  double angle = u * series + (reduced ? 0.25 * Pi : 0.0);
+  angle = ay > ax ? 0.5 * Pi - angle : angle;
+  angle = x < 0.0 ? Pi - angle : angle;
+  angle = y < 0.0 ? TwoPi - angle : angle;
+  return angle < TwoPi ? angle : 0.0; // -0.0 and tiny negative y round up to 2 pi
+}
+
 /// One row (ring) of views, sorted by azimuth in [0, 2 pi).
 struct RingRow
 {
@@ -172,15 +205,7 @@ struct RingLayout
   {
     const glm::dvec3 v = p - this->Cyl.Center;
     height = glm::dot(v, this->Cyl.Axis);
-    azimuth = std::atan2(glm::dot(v, this->RefY), glm::dot(v, this->RefX));
-    if (azimuth < 0.0)
-    {
-      azimuth += TwoPi;
-      if (azimuth >= TwoPi) // -0.0 and tiny negative angles round up to 2 pi
-      {
-        azimuth = 0.0;
-      }
-    }
+    azimuth = Azimuth(glm::dot(v, this->RefY), glm::dot(v, this->RefX));
   }
 };
 
