@@ -359,6 +359,24 @@ int TestCylinderSampling(int, char*[])
   {
     cameras[v] = lf->GetRig()->GetCamera(v);
   }
+  // The lookup's 3x4 projection matrices against the cameras' Project: the
+  // same side test, pixels within 1e-9 (points in front, beside and behind).
+  double worstPixel = 0.0;
+  bool sameSide = true;
+  for (int v = 0; v < views; ++v)
+  {
+    const lfd::ProjectionMatrix matrix(cameras[v]);
+    for (int k = 0; k < 64; ++k)
+    {
+      const glm::dvec3 X(0.7 * (k % 4) - 1.0, 0.5 * (k / 4 % 4) - 0.7, 3.0 * (k / 16) - 4.0);
+      glm::dvec2 expected, pixel;
+      const bool front = cameras[v].Project(X, expected);
+      sameSide = sameSide && front == matrix.Project(X, pixel);
+      worstPixel = front ? std::max(worstPixel, glm::length(pixel - expected)) : worstPixel;
+    }
+  }
+  lfdtest::Check(sameSide, "projection matrices: the cameras' side test");
+  lfdtest::Check(worstPixel < 1e-9, "projection matrices: pixels", worstPixel, 1e-9);
   lfd::RingLayout layout = lf->GetRig()->GetRingLayout();
   lfd::LightFieldSampler sampler;
   sampler.Layout = &layout;
