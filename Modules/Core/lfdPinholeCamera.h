@@ -167,6 +167,62 @@ struct PinholeCamera
 };
 
 /**
+ * An undistorted pinhole camera's projection as one 3x4 matrix P = K [R | t]
+ * (Hartley and Zisserman, Multiple View Geometry, Sec. 6.1), built once per
+ * camera: a point projects with one matrix product and one division instead
+ * of PinholeCamera::Project's two 3x3 products and two divisions. The
+ * pixel's rounding differs from Project's in the last bits; the test of the
+ * camera side is Project's to the bit (K's last row is (0, 0, 1), so P's
+ * last row is R's last row and t.z). No lens distortion: a camera with one
+ * keeps PinholeCamera::Project.
+ */
+struct ProjectionMatrix
+{
+  double Rows[3][4];
+
+  explicit ProjectionMatrix(const PinholeCamera& camera)
+  {
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int col = 0; col < 3; ++col)
+      {
+        // (K R)[row][col]; GLM is column-major: K[k][row] is K's (row, k).
+        this->Rows[row][col] = camera.K[0][row] * camera.R[col][0] +
+          camera.K[1][row] * camera.R[col][1] + camera.K[2][row] * camera.R[col][2];
+      }
+      this->Rows[row][3] = camera.K[0][row] * camera.t[0] + camera.K[1][row] * camera.t[1] +
+        camera.K[2][row] * camera.t[2];
+    }
+    // Exactly R's last row and t.z (K's last row is (0, 0, 1)).
+    for (int col = 0; col < 3; ++col)
+    {
+      this->Rows[2][col] = camera.R[col][2];
+    }
+    this->Rows[2][3] = camera.t.z;
+  }
+
+  /// PinholeCamera::Project without lens distortion: false (pixel untouched)
+  /// for a point not in front of the camera.
+  bool Project(const glm::dvec3& X, glm::dvec2& pixel) const
+  {
+    const double z =
+      this->Rows[2][0] * X.x + this->Rows[2][1] * X.y + this->Rows[2][2] * X.z + this->Rows[2][3];
+    if (!(z > 0.0))
+    {
+      return false;
+    }
+    const double inverse = 1.0 / z;
+    pixel = glm::dvec2((this->Rows[0][0] * X.x + this->Rows[0][1] * X.y + this->Rows[0][2] * X.z +
+                         this->Rows[0][3]) *
+        inverse,
+      (this->Rows[1][0] * X.x + this->Rows[1][1] * X.y + this->Rows[1][2] * X.z +
+        this->Rows[1][3]) *
+        inverse);
+    return true;
+  }
+};
+
+/**
  * Largest distance of an image corner (pixel centres at integers, so the
  * corners at -0.5 and size - 0.5) from the principal point, in normalised
  * coordinates K^-1 (x, y, 1): the extent of a `width` x `height` image that a

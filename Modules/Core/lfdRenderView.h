@@ -1372,7 +1372,7 @@ ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& s
   {
     return result;
   }
-  RaySamples& samples = *view.Samples;
+  const RaySamples& samples = *view.Samples;
   result.Depth =
     std::isnan(samples.Surface) ? view.Light.FocalDepth(view.O, view.D) : samples.Surface;
   if (!settings.UseLabels)
@@ -1381,17 +1381,15 @@ ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& s
     result.Label = 0;
     return result;
   }
-  for (int i = 0; i < samples.Count; ++i)
+  // The vote and the blend of its label in one pass, the samples of owned
+  // labels weighing nothing.
+  const LabelTally<true> tally(samples, settings.Owned.data());
+  const int best = tally.Heaviest();
+  if (best >= 0)
   {
-    if (settings.Owned[samples.Samples[i].Label])
-    {
-      samples.Samples[i].Weight = 0.0;
-    }
-  }
-  result.Label = VoteLabel(samples);
-  if (result.Label >= 0)
-  {
-    BlendLabel(samples, result.Label, result.Color);
+    result.Label = tally.Labels[best];
+    result.Color = glm::dvec3(tally.Colors[best][0], tally.Colors[best][1], tally.Colors[best][2]) /
+      tally.Weights[best];
   }
   return result;
 }

@@ -567,9 +567,23 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   {
     cameras[v] = rig->GetCamera(v);
   }
+  // The lookup projects with the cameras' 3x4 matrices, unless a lens
+  // distortion needs the camera's own projection.
+  std::vector<lfd::ProjectionMatrix> projections;
+  if (std::none_of(cameras.begin(),
+        cameras.end(),
+        [](const lfd::PinholeCamera& camera) { return camera.Lens.Active; }))
+  {
+    projections.reserve(cameras.size());
+    for (const lfd::PinholeCamera& camera : cameras)
+    {
+      projections.emplace_back(camera);
+    }
+  }
   lfd::LightFieldSampler sampler;
   sampler.Layout = &layout;
   sampler.Cameras = cameras.data();
+  sampler.Projections = projections.empty() ? nullptr : projections.data();
   sampler.Radiance = radiance;
   const lfd::ViewStack<std::uint8_t> labels =
     PassStack<std::uint8_t>(lightField, vtkLightField::LABEL, 1);
