@@ -598,7 +598,9 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.DepthTiles = this->ProxyTiles.get();
     sampler.ProxyViews = this->ProxyViews;
   }
-  if (settings.UseLabels && plane.Empty() && !sampler.Depth.Present())
+  // With labels, the hull skips the rays that can meet no part, through the
+  // plane and through the proxy alike (lfd::LightFieldSampler::Gather).
+  if (settings.UseLabels && plane.Empty())
   {
     sampler.Hull = &this->GetLabelHull(
       PassHolder(lightField, vtkLightField::LABEL), labels, rig, layout, cameras);
@@ -643,13 +645,17 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     std::vector<std::uint8_t> tiles;
     if (boxes.empty() && sampler.Hull)
     {
+      // Without a proxy its bounds are unbounded: the plane's box is empty.
+      const bool proxy = sampler.Depth.Present();
       tiles = sampler.Hull->ScreenTiles(layout,
         eye.Center(),
         eye.PixelToDirection(),
         this->Width,
         this->Height,
         sampler.FocalDistance,
-        lfd::FrameCage::DefaultTileSize);
+        lfd::FrameCage::DefaultTileSize,
+        proxy ? sampler.SurfaceLow : glm::dvec3(std::numeric_limits<double>::infinity()),
+        proxy ? sampler.SurfaceHigh : glm::dvec3(-std::numeric_limits<double>::infinity()));
     }
     RenderFrame(lfd::SamplerLookup{ sampler, this->WidenedSearch, eye.Forward() },
       cage,
