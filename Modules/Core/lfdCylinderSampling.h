@@ -1116,6 +1116,9 @@ struct LightFieldSampler
   /// Where rays may meet a part (LabelHull); null or empty: no ray is
   /// skipped. Only meaningful with labels (Gather).
   const LabelHull* Hull = nullptr;
+  /// Per view, its camera's Center() (ProxyCandidates computes each
+  /// candidate's angle from it, for every ray); null: computed per ray.
+  const glm::dvec3* CameraCenters = nullptr;
   /// Views blended on the proxy surface (k of GatherOnSurface, 1..4).
   int ProxyViews = 3;
   /// Relative depth by which a camera's own depth map may be nearer than a
@@ -1351,8 +1354,13 @@ struct LightFieldSampler
         for (int i = walked ? first + 1 : first; i <= last; ++i)
         {
           const double s = s0 + (s1 - s0) * i / steps;
-          glm::dvec2 uv;
-          const double surface = camera.Project(o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
+          // The run's ends are projected already (the same s, so the same
+          // pixel): most walks are a step or two long (the views nearest
+          // in angle see the ray nearly end on).
+          glm::dvec2 uv = i == last ? uvLast : uvFirst;
+          const bool projected = (i == last && lastProjected) || (i == first && firstProjected);
+          const double surface =
+            projected || camera.Project(o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
           const double gap =
             surface > 0.0 ? co + s * cd - surface : std::numeric_limits<double>::quiet_NaN();
           if (gap >= 0.0)
@@ -1554,7 +1562,8 @@ struct LightFieldSampler
       for (int i = 0; i < std::min(views, 4); ++i)
       {
         const int view = row.View[((upper - 2 + i) % views + views) % views];
-        const glm::dvec3 toCamera = glm::normalize(this->Cameras[view].Center() - x);
+        const glm::dvec3 toCamera = glm::normalize(
+          (this->CameraCenters ? this->CameraCenters[view] : this->Cameras[view].Center()) - x);
         out[n++] = { glm::distance(toCamera, toEye), view };
       }
     }

@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -587,6 +588,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
                   "no float Depth pass: compute one with `lfd proxy`.");
     return 0;
   }
+  std::vector<glm::dvec3> centers;
   if (this->FocalSurface != FOCAL_PLANE && depth.Present())
   {
     sampler.Depth = depth;
@@ -597,6 +599,11 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.SurfaceHigh = glm::dvec3(extent[3], extent[4], extent[5]);
     sampler.DepthTiles = this->ProxyTiles.get();
     sampler.ProxyViews = this->ProxyViews;
+    std::transform(cameras.begin(),
+      cameras.end(),
+      std::back_inserter(centers),
+      [](const lfd::PinholeCamera& camera) { return camera.Center(); });
+    sampler.CameraCenters = centers.data();
   }
   // With labels, the hull skips the rays that can meet no part, through the
   // plane and through the proxy alike (lfd::LightFieldSampler::Gather).
