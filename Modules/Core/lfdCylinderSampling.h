@@ -402,7 +402,9 @@ inline bool DepthBounds(const ViewStack<float>& depth,
  * with a rigorous bound of the sphere's projection), and a focal point
  * outside the grid is always looked up, so skipping never changes a pixel.
  * Built once per light field; a rig with lens distortion (whose projection
- * of a sphere this bound does not hold for) gets no grid.
+ * of a sphere this bound does not hold for) gets no grid. Through a proxy,
+ * the voxels a ray's stretch inside the proxy's bounds crosses are tested
+ * as well (MaySeePart(); why that is exact: LightFieldSampler::Gather).
  */
 struct LabelHull
 {

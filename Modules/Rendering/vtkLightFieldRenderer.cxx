@@ -652,7 +652,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     std::vector<std::uint8_t> tiles;
     if (boxes.empty() && sampler.Hull)
     {
-      // Without a proxy its bounds are unbounded: the plane's box is empty.
+      // No surface box without a proxy (the sampler's default bounds are unbounded).
       const bool proxy = sampler.Depth.Present();
       tiles = sampler.Hull->ScreenTiles(layout,
         eye.Center(),

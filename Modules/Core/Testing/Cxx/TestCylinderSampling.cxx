@@ -173,6 +173,79 @@ void ProxySurface()
 }
 }
 
+// Whether a sample of `samples` carries a part's label.
+bool AnyLabel(const lfd::RaySamples& samples)
+{
+  bool any = false;
+  for (int k = 0; k < samples.Count; ++k)
+  {
+    any = any || samples.Samples[k].Label > 0;
+  }
+  return any;
+}
+
+// Whether two lookups gave the very same samples, focused alike.
+bool SameSamples(const lfd::RaySamples& a, const lfd::RaySamples& b)
+{
+  bool same = a.Count == b.Count &&
+    (a.Surface == b.Surface || (std::isnan(a.Surface) && std::isnan(b.Surface)));
+  for (int k = 0; same && k < a.Count; ++k)
+  {
+    same = a.Samples[k].Weight == b.Samples[k].Weight && a.Samples[k].Label == b.Samples[k].Label &&
+      a.Samples[k].Color == b.Samples[k].Color;
+  }
+  return same;
+}
+
+// A ray of LabelHullSkips: from 6 off the axis at a random azimuth and
+// height towards a random point of the box [-1.5, 1.5]^3.
+template<typename Uniform>
+void RandomRay(Uniform& uniform, glm::dvec3& o, glm::dvec3& d)
+{
+  const double phi = uniform(0.0, lfd::TwoPi);
+  o = glm::dvec3(6.0 * std::sin(phi), uniform(-2.0, 2.0), 6.0 * std::cos(phi));
+  // Drawn one by one: the evaluation order of a constructor's arguments is
+  // unspecified (gcc and clang differ), and the counts below must not be.
+  const double tz = uniform(-1.5, 1.5);
+  const double ty = uniform(-1.5, 1.5);
+  const double tx = uniform(-1.5, 1.5);
+  d = glm::dvec3(tx, ty, tz) - o;
+}
+
+// What the hull did to the rays looked up with and without it.
+struct SkipCounts
+{
+  int Skipped = 0;   ///< rays the hull skips
+  int Labelled = 0;  ///< rays with a labelled sample (without the hull)
+  int Wrong = 0;     ///< skipped rays with a labelled sample
+  int Differing = 0; ///< looked-up rays whose samples differ
+};
+
+// Looks the ray o + t d up without and with `hull` into `plain` and
+// `counts`; true when the hull skipped it.
+bool CountSkip(lfd::LightFieldSampler& sampler,
+  const lfd::LabelHull& hull,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  lfd::RaySamples& plain,
+  SkipCounts& counts)
+{
+  lfd::RaySamples skipping;
+  sampler.Hull = nullptr;
+  const bool found = sampler.Gather(o, d, plain);
+  const bool anyLabel = AnyLabel(plain);
+  counts.Labelled += anyLabel ? 1 : 0;
+  sampler.Hull = &hull;
+  if (!sampler.Gather(o, d, skipping) && found)
+  {
+    ++counts.Skipped;
+    counts.Wrong += anyLabel ? 1 : 0;
+    return true;
+  }
+  counts.Differing += SameSamples(plain, skipping) ? 0 : 1;
+  return false;
+}
+
 // 1 when the hull's MaySeePart proves that the stretch of the ray o + t d
 // inside the sampler's surface bounds meets no part, else 0; `seen` counts
 // the labelled samples of such a stretch all the same: at 64 points along
@@ -228,6 +301,7 @@ int ProvenStretch(const lfd::LightFieldSampler& sampler,
 template<typename Uniform>
 void ProxyLabelHullSkips(lfd::LightFieldSampler& sampler,
   const lfd::LabelHull& hull,
+  const lfd::PinholeCamera& eye,
   Uniform& uniform)
 {
   const int views = 48;
@@ -242,67 +316,37 @@ void ProxyLabelHullSkips(lfd::LightFieldSampler& sampler,
   sampler.DepthTiles = &tiles;
   lfd::DepthBounds(sampler.Depth, cameras.data(), views, sampler.SurfaceLow, sampler.SurfaceHigh);
   const lfd::RingLayout& layout = *sampler.Layout;
-  int skipped = 0, stretched = 0, labelled = 0, surface = 0, wrong = 0, differing = 0;
-  int proven = 0, seen = 0;
+  SkipCounts counts;
+  int stretched = 0, surface = 0, proven = 0, seen = 0;
   for (int i = 0; i < 4000; ++i)
   {
-    const double phi = uniform(0.0, lfd::TwoPi);
-    const glm::dvec3 o(6.0 * std::sin(phi), uniform(-2.0, 2.0), 6.0 * std::cos(phi));
-    const double tz = uniform(-1.5, 1.5);
-    const double ty = uniform(-1.5, 1.5);
-    const double tx = uniform(-1.5, 1.5);
-    const glm::dvec3 d = glm::dvec3(tx, ty, tz) - o;
-    lfd::RaySamples plain, skipping;
+    glm::dvec3 o, d;
+    RandomRay(uniform, o, d);
     proven += ProvenStretch(sampler, hull, o, d, seen);
-    sampler.Hull = nullptr;
-    const bool found = sampler.Gather(o, d, plain);
-    bool anyLabel = false;
-    for (int k = 0; k < plain.Count; ++k)
-    {
-      anyLabel = anyLabel || plain.Samples[k].Label > 0;
-    }
-    labelled += anyLabel ? 1 : 0;
+    lfd::RaySamples plain;
+    double enter, leave;
+    stretched +=
+      CountSkip(sampler, hull, o, d, plain, counts) && sampler.SurfaceStretch(o, d, enter, leave)
+      ? 1
+      : 0;
     surface += std::isnan(plain.Surface) ? 0 : 1;
-    sampler.Hull = &hull;
-    if (!sampler.Gather(o, d, skipping) && found)
-    {
-      double enter, leave;
-      ++skipped;
-      stretched += sampler.SurfaceStretch(o, d, enter, leave) ? 1 : 0;
-      wrong += anyLabel ? 1 : 0;
-      continue;
-    }
-    bool same = skipping.Count == plain.Count &&
-      (skipping.Surface == plain.Surface ||
-        (std::isnan(skipping.Surface) && std::isnan(plain.Surface)));
-    for (int k = 0; same && k < plain.Count; ++k)
-    {
-      same = plain.Samples[k].Weight == skipping.Samples[k].Weight &&
-        plain.Samples[k].Label == skipping.Samples[k].Label &&
-        plain.Samples[k].Color == skipping.Samples[k].Color;
-    }
-    differing += same ? 0 : 1;
   }
   Expect("proxy: stretches MaySeePart proves to see no part", proven, 29.0);
   Expect("proxy: ... labelled samples at 64 points of each in the candidate views", seen, 0.0);
-  Expect("proxy: rays with a labelled sample", labelled, 607.0);
+  Expect("proxy: rays with a labelled sample", counts.Labelled, 607.0);
   Expect("proxy: rays focused on the sphere", surface, 174.0);
-  Expect("proxy: rays the hull skips", skipped, 1923.0);
+  Expect("proxy: rays the hull skips", counts.Skipped, 1923.0);
   Expect("proxy: ... of which cross the surface's bounds (MaySeePart)", stretched, 14.0);
-  Expect("proxy: skipped rays with a labelled sample", wrong, 0.0);
-  Expect("proxy: looked-up rays whose samples differ", differing, 0.0);
+  Expect("proxy: skipped rays with a labelled sample", counts.Wrong, 0.0);
+  Expect("proxy: looked-up rays whose samples differ", counts.Differing, 0.0);
 
-  // The screen tiles of a 96 x 80 frame looking at the top of the grid,
-  // above the labelled heights, with the surface's bounds raised there
+  // The screen tiles of LabelHullSkips' frame (`eye`, 96 x 80, looking at
+  // the top of the grid, above the labelled heights), the surface's bounds raised there
   // (the sphere's, 1.2 higher): a tile marked 0 holds no ray that Gather
   // looks up, and none with a labelled sample, though some of its rays
   // cross those bounds.
   sampler.SurfaceLow.y += 1.2;
   sampler.SurfaceHigh.y += 1.2;
-  const glm::dmat3 k(
-    glm::dvec3(300.0, 0.0, 0.0), glm::dvec3(0.0, 300.0, 0.0), glm::dvec3(47.5, 39.5, 1.0));
-  const lfd::PinholeCamera eye = lfd::PinholeCamera::LookAt(
-    k, glm::dvec3(0.5, 1.4, 6.0), glm::dvec3(0.0, 0.0, -1.0), glm::dvec3(0.0, 1.0, 0.0));
   const int tile = 8, width = 96, height = 80;
   const std::vector<std::uint8_t> mask = hull.ScreenTiles(layout,
     eye.Center(),
@@ -331,11 +375,7 @@ void ProxyLabelHullSkips(lfd::LightFieldSampler& sampler,
       const bool looked = sampler.Gather(eye.Center(), d, samples);
       sampler.Hull = nullptr;
       sampler.Gather(eye.Center(), d, samples);
-      bool anyLabel = false;
-      for (int k = 0; k < samples.Count; ++k)
-      {
-        anyLabel = anyLabel || samples.Samples[k].Label > 0;
-      }
+      const bool anyLabel = AnyLabel(samples);
       lookedUp += looked ? 1 : 0;
       leaks += !mask[(y / tile) * 12 + x / tile] && (looked || anyLabel) ? 1 : 0;
     }
@@ -410,50 +450,22 @@ void LabelHullSkips()
     seed = seed * 1664525u + 1013904223u;
     return low + (high - low) * (seed >> 8) / double(1u << 24);
   };
-  int skipped = 0, labelled = 0, wrong = 0, differing = 0, unmarked = 0;
+  SkipCounts counts;
+  int unmarked = 0;
   for (int i = 0; i < 4000; ++i)
   {
-    const double phi = uniform(0.0, lfd::TwoPi);
-    const glm::dvec3 o(6.0 * std::sin(phi), uniform(-2.0, 2.0), 6.0 * std::cos(phi));
-    // Drawn one by one: the evaluation order of a constructor's arguments is
-    // unspecified (gcc and clang differ), and the counts below must not be.
-    const double tz = uniform(-1.5, 1.5);
-    const double ty = uniform(-1.5, 1.5);
-    const double tx = uniform(-1.5, 1.5);
-    const glm::dvec3 target(tx, ty, tz);
-    lfd::RaySamples plain, skipping;
-    const long cell =
-      hull.Cell(lfd::FocalPoint(layout.Cyl, o, target - o, sampler.FocalDistance), layout);
+    glm::dvec3 o, d;
+    RandomRay(uniform, o, d);
+    const long cell = hull.Cell(lfd::FocalPoint(layout.Cyl, o, d, sampler.FocalDistance), layout);
     unmarked += cell >= 0 && !hull.Union[cell] ? 1 : 0;
-    sampler.Hull = nullptr;
-    const bool found = sampler.Gather(o, target - o, plain);
-    bool anyLabel = false;
-    for (int k = 0; k < plain.Count; ++k)
-    {
-      anyLabel = anyLabel || plain.Samples[k].Label > 0;
-    }
-    labelled += anyLabel ? 1 : 0;
-    sampler.Hull = &hull;
-    if (!sampler.Gather(o, target - o, skipping) && found)
-    {
-      ++skipped;
-      wrong += anyLabel ? 1 : 0;
-      continue;
-    }
-    bool same = skipping.Count == plain.Count;
-    for (int k = 0; same && k < plain.Count; ++k)
-    {
-      same = plain.Samples[k].Weight == skipping.Samples[k].Weight &&
-        plain.Samples[k].Label == skipping.Samples[k].Label &&
-        plain.Samples[k].Color == skipping.Samples[k].Color;
-    }
-    differing += same ? 0 : 1;
+    lfd::RaySamples plain;
+    CountSkip(sampler, hull, o, d, plain, counts);
   }
-  Expect("rays with a labelled sample", labelled, 615.0);
-  Expect("rays the hull skips", skipped, 1913.0);
+  Expect("rays with a labelled sample", counts.Labelled, 615.0);
+  Expect("rays the hull skips", counts.Skipped, 1913.0);
   Expect("rays unmarked in every sector (skipped before the cylinder entry)", unmarked, 869.0);
-  Expect("skipped rays with a labelled sample", wrong, 0.0);
-  Expect("looked-up rays whose samples differ", differing, 0.0);
+  Expect("skipped rays with a labelled sample", counts.Wrong, 0.0);
+  Expect("looked-up rays whose samples differ", counts.Differing, 0.0);
 
   // The screen-tile mask of a 96 x 80 frame (tiles of 8) looking at the top
   // of the grid, above the labelled heights, and past it: every ray of a tile marked 0
@@ -486,7 +498,7 @@ void LabelHullSkips()
   Expect("tiles skipped whole (3392 of the 4387 rays the union skips)", skippedTiles, 53.0);
   Expect("rays the union does not skip", lookedUp, 3293.0);
   Expect("rays of skipped tiles that Gather would look up", leaks, 0.0);
-  ProxyLabelHullSkips(sampler, hull, uniform);
+  ProxyLabelHullSkips(sampler, hull, eye, uniform);
   sampler.Hull = nullptr;
 }
 
