@@ -440,7 +440,9 @@ inline bool DepthBounds(const ViewStack<float>& depth,
  * with a rigorous bound of the sphere's projection), and a focal point
  * outside the grid is always looked up, so skipping never changes a pixel.
  * Built once per light field; a rig with lens distortion (whose projection
- * of a sphere this bound does not hold for) gets no grid.
+ * of a sphere this bound does not hold for) gets no grid. Through a proxy,
+ * the voxels a ray's stretch inside the proxy's bounds crosses are tested
+ * as well (MaySeePart(); why that is exact: LightFieldSampler::Gather).
  */
 struct LabelHull
 {
@@ -454,6 +456,12 @@ struct LabelHull
   /// Cells^3 flags, the union of the sectors' (Unite()): a focal point in an
   /// unmarked voxel is skipped before the ray's azimuth is known.
   std::vector<std::uint8_t> Union;
+  /// Per sector, its marks united with its two neighbours' (Unite()): the
+  /// proxy's candidate cameras (LightFieldSampler::ProxyCandidates, 4 per
+  /// row around the azimuth) use up the margin of one view that MarkSector
+  /// leaves on each side for rounding, so the proxy's test takes it from the
+  /// neighbouring sectors instead (see MaySeePart()).
+  std::vector<std::uint8_t> Wide;
 
   /**
    * Sizes the grid around the rig's axis: radially the half-width that the
@@ -542,9 +550,15 @@ struct LabelHull
   {
     const std::size_t cells = static_cast<std::size_t>(Cells) * Cells * Cells;
     this->Union.assign(this->Marks.empty() ? 0 : cells, 0);
+    this->Wide.assign(this->Marks.size(), 0);
     for (std::size_t i = 0; i < this->Marks.size(); ++i)
     {
       this->Union[i % cells] |= this->Marks[i];
+      const std::size_t sector = i / cells;
+      for (std::size_t next : { sector + Sectors - 1, sector, sector + 1 })
+      {
+        this->Wide[next % Sectors * cells + i % cells] |= this->Marks[i];
+      }
     }
   }
 
@@ -579,9 +593,72 @@ struct LabelHull
     {
       return true;
     }
-    const int sector = std::min(static_cast<int>(azimuth * (Sectors / TwoPi)), Sectors - 1);
-    return this->Marks[static_cast<std::size_t>(sector) * Cells * Cells * Cells +
-             static_cast<std::size_t>(cell)] != 0;
+    return this->Marks[Sector(azimuth) * Cells * Cells * Cells + static_cast<std::size_t>(cell)] !=
+      0;
+  }
+
+  /**
+   * False when no point of the segment [a, b] (world points) can have a
+   * labelled sample in any camera that GatherOnSurface may blend for a ray
+   * entering the rig at `azimuth`: the segment lies inside the grid and
+   * crosses only voxels unmarked in the sector's Wide marks. True when it
+   * may. The voxels crossed are found slab by slab along the axis in which
+   * the segment runs longest, each slab's stretch of the other two
+   * coordinates widened by 1e-6 voxel for rounding (of [a, b] and of the
+   * walk's points on it, whose errors are some 1e-13 voxel).
+   */
+  bool MaySeePart(double azimuth,
+    const glm::dvec3& a,
+    const glm::dvec3& b,
+    const RingLayout& layout) const
+  {
+    constexpr double margin = 1e-6;
+    const glm::dvec3 q0 = (ToRig(layout, a - layout.Cyl.Center) - this->Low) / this->CellSize;
+    const glm::dvec3 q1 = (ToRig(layout, b - layout.Cyl.Center) - this->Low) / this->CellSize;
+    const glm::dvec3 low = glm::min(q0, q1) - margin;
+    const glm::dvec3 high = glm::max(q0, q1) + margin;
+    // Both ends inside the grid: the whole segment is (the grid is convex).
+    if (!(low.x >= 0.0 && low.y >= 0.0 && low.z >= 0.0 && high.x < Cells && high.y < Cells &&
+          high.z < Cells))
+    {
+      return true;
+    }
+    const std::uint8_t* marks = this->Wide.data() + Sector(azimuth) * Cells * Cells * Cells;
+    const glm::dvec3 span = q1 - q0;
+    const glm::dvec3 length = glm::abs(span);
+    const int m = length.x >= length.y && length.x >= length.z ? 0 : (length.y >= length.z ? 1 : 2);
+    const int u = (m + 1) % 3;
+    const int v = (m + 2) % 3;
+    const int stride[3] = { 1, Cells, Cells * Cells };
+    for (int i = static_cast<int>(low[m]); i <= static_cast<int>(high[m]); ++i)
+    {
+      // The stretch of the segment (f in [0, 1]) within slab i, widened.
+      double f0 = 0.0, f1 = 1.0;
+      if (length[m] > 0.0)
+      {
+        const double e0 = (i - margin - q0[m]) / span[m];
+        const double e1 = (i + 1 + margin - q0[m]) / span[m];
+        f0 = std::max(std::min(e0, e1), 0.0);
+        f1 = std::min(std::max(e0, e1), 1.0);
+      }
+      const double u0 = q0[u] + f0 * span[u], u1 = q0[u] + f1 * span[u];
+      const double v0 = q0[v] + f0 * span[v], v1 = q0[v] + f1 * span[v];
+      const int ua = static_cast<int>(std::max(std::min(u0, u1) - margin, 0.0));
+      const int ub = static_cast<int>(std::min(std::max(u0, u1) + margin, Cells - 1.0));
+      const int va = static_cast<int>(std::max(std::min(v0, v1) - margin, 0.0));
+      const int vb = static_cast<int>(std::min(std::max(v0, v1) + margin, Cells - 1.0));
+      for (int j = ua; j <= ub; ++j)
+      {
+        for (int k = va; k <= vb; ++k)
+        {
+          if (marks[i * stride[m] + j * stride[u] + k * stride[v]])
+          {
+            return true;
+          }
+        }
+      }
+    }
+    return false;
   }
 
   /**
@@ -593,6 +670,12 @@ struct LabelHull
    * them, so with labels the whole tile is background and its rays need not
    * be generated. 1 when a ray of the tile may be looked up. Empty without
    * Union. The bound is rigorous (FocalBox()), so a 0 never hides a pixel.
+   *
+   * With a proxy whose surface points lie in the world box [surfaceLow,
+   * surfaceHigh] (LightFieldSampler::SurfaceLow, SurfaceHigh; empty by
+   * default: no proxy), a tile is 0 only when, besides, the stretches of its
+   * rays inside the box (SurfaceStretch()) meet no voxel marked in Union
+   * (SurfaceUnmarked()), so that Gather skips each of them there too.
    */
   std::vector<std::uint8_t> ScreenTiles(const RingLayout& layout,
     const glm::dvec3& eye,
@@ -600,7 +683,9 @@ struct LabelHull
     int width,
     int height,
     double focalDistance,
-    int tileSize) const
+    int tileSize,
+    const glm::dvec3& surfaceLow = glm::dvec3(std::numeric_limits<double>::infinity()),
+    const glm::dvec3& surfaceHigh = glm::dvec3(-std::numeric_limits<double>::infinity())) const
   {
     if (this->Union.empty())
     {
@@ -625,7 +710,14 @@ struct LabelHull
         glm::dvec3 low, high;
         tiles[static_cast<std::size_t>(ty) * columns + tx] =
           !(this->FocalBox(layout, eye, corners, focalDistance, low, high) &&
-            this->Unmarked(low, high));
+            this->Unmarked(low, high) &&
+            this->SurfaceUnmarked(layout,
+              eye,
+              pixelToDirection,
+              glm::dvec4(x0, y0, x1, y1),
+              corners,
+              surfaceLow,
+              surfaceHigh));
       }
     }
     return tiles;
@@ -634,6 +726,13 @@ struct LabelHull
 private:
   /// Side, in voxels, of the blocks MarkCone tests first.
   static constexpr int Block = 4;
+
+  /// The sector of an azimuth in [0, 2 pi).
+  static std::size_t Sector(double azimuth)
+  {
+    return static_cast<std::size_t>(
+      std::min(static_cast<int>(azimuth * (Sectors / TwoPi)), Sectors - 1));
+  }
 
   /// The camera `camera` seen from the rig frame: c = Origin + ToCamera q.
   struct ConeView
@@ -732,6 +831,86 @@ private:
     low -= margin;
     high += margin;
     return true;
+  }
+
+  /**
+   * Whether the rays eye + t r, r in the parallelogram of directions spanned
+   * by `corners` (pixels `tile`: x0, y0, x1, y1), meet no voxel marked in
+   * Union inside the world box [surfaceLow, surfaceHigh] (true for an empty
+   * box). A ray's direction has camera z 1 (pixelToDirection), so t is the
+   * camera z of its point: with every box corner in front of the eye, a
+   * ray whose pixel lies outside the bounding rectangle of the corners'
+   * projections misses the box, and the points of the others inside it
+   * have t between the corners' least and greatest camera z, t0 and t1.
+   * Those points lie in the convex hull of the 8 points eye + t r_k (t0 and
+   * t1, the 4 corners r_k), whose bounds, cut to the box, are tested
+   * (Unmarked()). False where a box corner is not in front of the eye.
+   */
+  bool SurfaceUnmarked(const RingLayout& layout,
+    const glm::dvec3& eye,
+    const glm::dmat3& pixelToDirection,
+    const glm::dvec4& tile,
+    const glm::dvec3 corners[4],
+    const glm::dvec3& surfaceLow,
+    const glm::dvec3& surfaceHigh) const
+  {
+    if (!(surfaceLow.x <= surfaceHigh.x && surfaceLow.y <= surfaceHigh.y &&
+          surfaceLow.z <= surfaceHigh.z))
+    {
+      return true;
+    }
+    const glm::dmat3 toCamera = glm::inverse(pixelToDirection);
+    glm::dvec2 low(std::numeric_limits<double>::infinity());
+    glm::dvec2 high = -low;
+    double t0 = std::numeric_limits<double>::infinity(), t1 = 0.0;
+    for (int k = 0; k < 8; ++k)
+    {
+      const glm::dvec3 corner(k & 1 ? surfaceHigh.x : surfaceLow.x,
+        k & 2 ? surfaceHigh.y : surfaceLow.y,
+        k & 4 ? surfaceHigh.z : surfaceLow.z);
+      const glm::dvec3 c = toCamera * (corner - eye);
+      if (!(c.z > 1e-9 * glm::length(corner - eye)))
+      {
+        return false;
+      }
+      low = glm::min(low, glm::dvec2(c) / c.z);
+      high = glm::max(high, glm::dvec2(c) / c.z);
+      t0 = std::min(t0, c.z);
+      t1 = std::max(t1, c.z);
+    }
+    // A margin of 1e-3 pixel for the rounding of the projection and of the
+    // rays' stretches.
+    if (tile.z < low.x - 1e-3 || tile.x > high.x + 1e-3 || tile.w < low.y - 1e-3 ||
+      tile.y > high.y + 1e-3)
+    {
+      return true;
+    }
+    glm::dvec3 hullLow(std::numeric_limits<double>::infinity());
+    glm::dvec3 hullHigh = -hullLow;
+    for (int k = 0; k < 4; ++k)
+    {
+      for (double t : { t0, t1 })
+      {
+        hullLow = glm::min(hullLow, eye + t * corners[k]);
+        hullHigh = glm::max(hullHigh, eye + t * corners[k]);
+      }
+    }
+    hullLow = glm::max(hullLow, surfaceLow);
+    hullHigh = glm::min(hullHigh, surfaceHigh);
+    // The rig-frame bounds of that world box, widened for rounding as FocalBox's.
+    glm::dvec3 low3(std::numeric_limits<double>::infinity());
+    glm::dvec3 high3 = -low3;
+    for (int k = 0; k < 8; ++k)
+    {
+      const glm::dvec3 corner(k & 1 ? hullHigh.x : hullLow.x,
+        k & 2 ? hullHigh.y : hullLow.y,
+        k & 4 ? hullHigh.z : hullLow.z);
+      const glm::dvec3 q = ToRig(layout, corner - layout.Cyl.Center);
+      low3 = glm::min(low3, q);
+      high3 = glm::max(high3, q);
+    }
+    const glm::dvec3 margin = 1e-6 * this->CellSize + 1e-9 * glm::length(eye - layout.Cyl.Center);
+    return this->Unmarked(low3 - margin, high3 + margin);
   }
 
   /**
@@ -978,9 +1157,12 @@ struct LightFieldSampler
   /// them meet no surface. Unbounded by default.
   glm::dvec3 SurfaceLow{ -std::numeric_limits<double>::infinity() };
   glm::dvec3 SurfaceHigh{ std::numeric_limits<double>::infinity() };
-  /// Where focal-plane rays may meet a part (LabelHull); null or empty: no
-  /// ray is skipped. Only meaningful with labels, and ignored with a proxy.
+  /// Where rays may meet a part (LabelHull); null or empty: no ray is
+  /// skipped. Only meaningful with labels (Gather).
   const LabelHull* Hull = nullptr;
+  /// Per view, its camera's Center() (ProxyCandidates computes each
+  /// candidate's angle from it, for every ray); null: computed per ray.
+  const glm::dvec3* CameraCenters = nullptr;
   /// Views blended on the proxy surface (k of GatherOnSurface, 1..4).
   int ProxyViews = 3;
   /// Relative depth by which a camera's own depth map may be nearer than a
@@ -1002,20 +1184,48 @@ struct LightFieldSampler
    * (GatherOnSurface); a ray that meets no surface, or whose focused samples
    * see background, falls back to the focal plane, as without a proxy.
    *
-   * Without a proxy, a ray that the Hull proves to have no labelled sample
-   * returns false at once: with labels it is background either way.
+   * A ray that the Hull proves to have no labelled sample returns false at
+   * once: with labels it is background either way (a Hull is only given
+   * with labels: without them, or for an unlabelled light field, label 0
+   * is no background and nothing is skipped).
+   *
+   * With a proxy the skip stays exact, though the views are chosen per
+   * crossing rather than per sector: the ray's samples are either (a) those
+   * of GatherOnSurface, bilinear lookups at a point X = o + s d with s in
+   * the stretch [enter, leave] (SurfaceStretch(); IntersectDepthMap only
+   * walks, and interpolates its crossing, within it), in cameras among
+   * ProxyCandidates (the 4 views around the azimuth in each of the rows
+   * searched), or (b) the plane fallback's, at the focal point x in the
+   * views of ChooseViews. The Hull marks a voxel of a sector's grid when the
+   * label cone of any view that may be chosen for an azimuth in the sector,
+   * in any row, comes within a bilinear footprint of it (a conservative
+   * bound of the voxel's bounding sphere); a sector's Wide marks add its
+   * neighbours', which holds every ProxyCandidates view however the
+   * sector's bounds round. So a labelled sample at X needs X in a voxel
+   * marked in Wide (MaySeePart() walks every voxel the stretch crosses,
+   * with a margin for rounding), and one at x needs x's voxel marked
+   * (MayMeetPart(), as without a proxy); the walk's result is kept only
+   * when its samples vote for a part (a labelled sample), else the ray falls
+   * back to (b). Points outside the grid are never skipped. Labels read out
+   * of core give the same rectangles (LabelRectangles reads them texel by
+   * texel), and a rig with lens distortion gets no Hull.
    */
   bool Gather(const glm::dvec3& o, const glm::dvec3& d, RaySamples& out) const
   {
     out.Count = 0;
     out.Surface = std::numeric_limits<double>::quiet_NaN();
     const glm::dvec3 x = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
-    const bool hull = !this->Depth.Present() && this->Hull && !this->Hull->Marks.empty();
+    const bool hull = this->Hull && !this->Hull->Marks.empty();
     const long cell = hull ? this->Hull->Cell(x, *this->Layout) : -1;
+    // With a proxy, the stretch [enter, leave] of the ray that its walk may
+    // focus on; the ray is skipped when neither it nor the focal point can
+    // have a labelled sample (see above).
+    double enter = 0.0, leave = -1.0;
+    const bool stretch = this->Depth.Present() && this->SurfaceStretch(o, d, enter, leave);
     // Most skipped rays are unmarked in every sector: they skip the cylinder
     // entry and the atan2 of the azimuth too (a ray that misses the cylinder
     // returns false as well).
-    if (cell >= 0 && !this->Hull->Union.empty() && !this->Hull->Union[cell])
+    if (cell >= 0 && !this->Hull->Union.empty() && !this->Hull->Union[cell] && !stretch)
     {
       return false;
     }
@@ -1026,13 +1236,14 @@ struct LightFieldSampler
     }
     double azimuth, height;
     this->Layout->Locate(o + s * d, azimuth, height);
-    if (hull && !this->Hull->MayMeetPart(azimuth, cell))
+    if (hull && !this->Hull->MayMeetPart(azimuth, cell) &&
+      !(stretch && this->Hull->MaySeePart(azimuth, o + enter * d, o + leave * d, *this->Layout)))
     {
       return false;
     }
     WeightedView views[4];
     const int nviews = ChooseViews(*this->Layout, azimuth, height, views);
-    if (this->Depth.Present() && this->GatherOnSurface(o, d, azimuth, height, views, nviews, out))
+    if (stretch && this->GatherOnSurface(o, d, enter, leave, azimuth, height, views, nviews, out))
     {
       return true;
     }
@@ -1188,8 +1399,13 @@ struct LightFieldSampler
         for (int i = walked ? first + 1 : first; i <= last; ++i)
         {
           const double s = s0 + (s1 - s0) * i / steps;
-          glm::dvec2 uv;
-          const double surface = camera.Project(o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
+          // The run's ends are projected already (the same s, so the same
+          // pixel): most walks are a step or two long (the views nearest
+          // in angle see the ray nearly end on).
+          glm::dvec2 uv = i == last ? uvLast : uvFirst;
+          const bool projected = (i == last && lastProjected) || (i == first && firstProjected);
+          const double surface =
+            projected || camera.Project(o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
           const double gap =
             surface > 0.0 ? co + s * cd - surface : std::numeric_limits<double>::quiet_NaN();
           if (gap >= 0.0)
@@ -1231,6 +1447,8 @@ struct LightFieldSampler
    */
   bool GatherOnSurface(const glm::dvec3& o,
     const glm::dvec3& d,
+    double enter,
+    double leave,
     double azimuth,
     double height,
     const WeightedView* neighbours,
@@ -1250,28 +1468,6 @@ struct LightFieldSampler
       {
         second = i;
       }
-    }
-    // The stretch of the ray (s >= 0) inside the surface's bounds.
-    double enter = 0.0;
-    double leave = std::numeric_limits<double>::infinity();
-    for (int a = 0; a < 3; ++a)
-    {
-      if (d[a] == 0.0)
-      {
-        if (o[a] < this->SurfaceLow[a] || o[a] > this->SurfaceHigh[a])
-        {
-          return false;
-        }
-        continue;
-      }
-      const double s0 = (this->SurfaceLow[a] - o[a]) / d[a];
-      const double s1 = (this->SurfaceHigh[a] - o[a]) / d[a];
-      enter = std::max(enter, std::min(s0, s1));
-      leave = std::min(leave, std::max(s0, s1));
-    }
-    if (!(enter <= leave))
-    {
-      return false;
     }
     // The latest crossing is the estimate, so the second walk starts where
     // the first one crossed: nothing before it can matter.
@@ -1356,6 +1552,33 @@ struct LightFieldSampler
   }
 
   /**
+   * The stretch [enter, leave] of the ray o + s d (s >= 0) inside the
+   * surface's bounds (SurfaceLow, SurfaceHigh): the only part of it that
+   * IntersectDepthMap walks. False when the ray misses them.
+   */
+  bool SurfaceStretch(const glm::dvec3& o, const glm::dvec3& d, double& enter, double& leave) const
+  {
+    enter = 0.0;
+    leave = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a)
+    {
+      if (d[a] == 0.0)
+      {
+        if (o[a] < this->SurfaceLow[a] || o[a] > this->SurfaceHigh[a])
+        {
+          return false;
+        }
+        continue;
+      }
+      const double s0 = (this->SurfaceLow[a] - o[a]) / d[a];
+      const double s1 = (this->SurfaceHigh[a] - o[a]) / d[a];
+      enter = std::max(enter, std::min(s0, s1));
+      leave = std::min(leave, std::max(s0, s1));
+    }
+    return enter <= leave;
+  }
+
+  /**
    * The candidate cameras of GatherOnSurface: in each row from the one below
    * `height` minus one to the one above plus one, the 4 views around
    * `azimuth` (all of a row of fewer), each with its angular penalty at `x`
@@ -1384,7 +1607,8 @@ struct LightFieldSampler
       for (int i = 0; i < std::min(views, 4); ++i)
       {
         const int view = row.View[((upper - 2 + i) % views + views) % views];
-        const glm::dvec3 toCamera = glm::normalize(this->Cameras[view].Center() - x);
+        const glm::dvec3 toCamera = glm::normalize(
+          (this->CameraCenters ? this->CameraCenters[view] : this->Cameras[view].Center()) - x);
         out[n++] = { glm::distance(toCamera, toEye), view };
       }
     }

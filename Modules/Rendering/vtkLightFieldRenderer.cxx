@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -601,6 +602,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
                   "no float Depth pass: compute one with `lfd proxy`.");
     return 0;
   }
+  std::vector<glm::dvec3> centers;
   if (this->FocalSurface != FOCAL_PLANE && depth.Present())
   {
     sampler.Depth = depth;
@@ -611,8 +613,15 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     sampler.SurfaceHigh = glm::dvec3(extent[3], extent[4], extent[5]);
     sampler.DepthTiles = this->ProxyTiles.get();
     sampler.ProxyViews = this->ProxyViews;
+    std::transform(cameras.begin(),
+      cameras.end(),
+      std::back_inserter(centers),
+      [](const lfd::PinholeCamera& camera) { return camera.Center(); });
+    sampler.CameraCenters = centers.data();
   }
-  if (settings.UseLabels && plane.Empty() && !sampler.Depth.Present())
+  // With labels, the hull skips the rays that can meet no part, through the
+  // plane and through the proxy alike (lfd::LightFieldSampler::Gather).
+  if (settings.UseLabels && plane.Empty())
   {
     sampler.Hull = &this->GetLabelHull(
       PassHolder(lightField, vtkLightField::LABEL), labels, rig, layout, cameras);
@@ -657,13 +666,17 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     std::vector<std::uint8_t> tiles;
     if (boxes.empty() && sampler.Hull)
     {
+      // No surface box without a proxy (the sampler's default bounds are unbounded).
+      const bool proxy = sampler.Depth.Present();
       tiles = sampler.Hull->ScreenTiles(layout,
         eye.Center(),
         eye.PixelToDirection(),
         this->Width,
         this->Height,
         sampler.FocalDistance,
-        lfd::FrameCage::DefaultTileSize);
+        lfd::FrameCage::DefaultTileSize,
+        proxy ? sampler.SurfaceLow : glm::dvec3(std::numeric_limits<double>::infinity()),
+        proxy ? sampler.SurfaceHigh : glm::dvec3(-std::numeric_limits<double>::infinity()));
     }
     RenderFrame(lfd::SamplerLookup{ sampler, this->WidenedSearch, eye.Forward() },
       cage,

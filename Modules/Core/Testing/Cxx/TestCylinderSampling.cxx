@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <vector>
 
 using lfdtest::Expect;
@@ -96,6 +97,36 @@ void ProxyCoarseWalk(lfd::LightFieldSampler& sampler, int views)
   Expect("... of 576 rays, those that cross", crossings, 239.0, 0.0);
 }
 
+// Depth maps (VTK row order, 0: no surface) of a sphere of radius `radius`
+// at the origin seen by `cameras` (size x size pixels each).
+std::vector<float> SphereDepths(const std::vector<lfd::PinholeCamera>& cameras,
+  int size,
+  double radius)
+{
+  std::vector<float> depth(static_cast<std::size_t>(size) * size * cameras.size(), 0.0f);
+  for (std::size_t v = 0; v < cameras.size(); ++v)
+  {
+    const lfd::PinholeCamera::Unprojection rays = cameras[v].GetUnprojection();
+    for (int y = 0; y < size; ++y)
+    {
+      for (int x = 0; x < size; ++x)
+      {
+        // |C + z D|^2 = r^2, D with camera z 1: the nearer root.
+        const glm::dvec3 c = rays.Center;
+        const glm::dvec3 d = rays.Direction(glm::dvec2(x, y));
+        const double a = glm::dot(d, d), b = glm::dot(c, d);
+        const double disc = b * b - a * (glm::dot(c, c) - radius * radius);
+        if (disc >= 0.0)
+        {
+          depth[(v * size + (size - 1 - y)) * size + x] =
+            static_cast<float>((-b - std::sqrt(disc)) / a);
+        }
+      }
+    }
+  }
+  return depth;
+}
+
 // The proxy path (GatherOnSurface): a ring of 8 flat-coloured views of 64 x
 // 64 (view v is (10 v, 0, 0)) around a sphere of radius 1 at the ring's
 // centre, their depth maps computed exactly per pixel. A ray aimed at the
@@ -112,29 +143,15 @@ void ProxySurface()
   lf->GetRig()->MakeCylinder(origin, axis, 4.0, views, 1, &height, size, size, 40.0);
   auto* rgb = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::COAXIAL));
   std::vector<lfd::PinholeCamera> cameras(views);
-  std::vector<float> depth(static_cast<std::size_t>(size) * size * views, 0.0f);
   for (int v = 0; v < views; ++v)
   {
     cameras[v] = lf->GetRig()->GetCamera(v);
-    const lfd::PinholeCamera::Unprojection rays = cameras[v].GetUnprojection();
-    for (int y = 0; y < size; ++y)
-    {
-      for (int x = 0; x < size; ++x)
-      {
-        const std::size_t pixel = (static_cast<std::size_t>(v) * size + (size - 1 - y)) * size + x;
-        rgb->SetComponent(static_cast<vtkIdType>(pixel), 0, 10.0 * v);
-        // |C + z D|^2 = 1, D with camera z 1: the nearer root.
-        const glm::dvec3 c = rays.Center;
-        const glm::dvec3 d = rays.Direction(glm::dvec2(x, y));
-        const double a = glm::dot(d, d), b = glm::dot(c, d), q = glm::dot(c, c) - 1.0;
-        const double disc = b * b - a * q;
-        if (disc >= 0.0)
-        {
-          depth[pixel] = static_cast<float>((-b - std::sqrt(disc)) / a);
-        }
-      }
-    }
   }
+  for (vtkIdType p = 0; p < lf->GetNumberOfPoints(); ++p)
+  {
+    rgb->SetComponent(p, 0, 10.0 * (p / (size * size)));
+  }
+  std::vector<float> depth = SphereDepths(cameras, size, 1.0);
   lfd::RingLayout layout = lf->GetRig()->GetRingLayout();
   lfd::LightFieldSampler sampler;
   sampler.Layout = &layout;
@@ -184,6 +201,230 @@ void ProxySurface()
   Expect("an occluded view is skipped (view 3 instead)", color.r, 30.0);
   Expect("... still focused on the sphere (view 3's crossing)", samples.Surface, 9.0, 0.01);
 }
+}
+
+// Whether a sample of `samples` carries a part's label.
+bool AnyLabel(const lfd::RaySamples& samples)
+{
+  bool any = false;
+  for (int k = 0; k < samples.Count; ++k)
+  {
+    any = any || samples.Samples[k].Label > 0;
+  }
+  return any;
+}
+
+// Whether two lookups gave the very same samples, focused alike.
+bool SameSamples(const lfd::RaySamples& a, const lfd::RaySamples& b)
+{
+  bool same = a.Count == b.Count &&
+    (a.Surface == b.Surface || (std::isnan(a.Surface) && std::isnan(b.Surface)));
+  for (int k = 0; same && k < a.Count; ++k)
+  {
+    same = a.Samples[k].Weight == b.Samples[k].Weight && a.Samples[k].Label == b.Samples[k].Label &&
+      a.Samples[k].Color == b.Samples[k].Color;
+  }
+  return same;
+}
+
+// A ray of LabelHullSkips: from 6 off the axis at a random azimuth and
+// height towards a random point of the box [-1.5, 1.5]^3.
+template<typename Uniform>
+void RandomRay(Uniform& uniform, glm::dvec3& o, glm::dvec3& d)
+{
+  const double phi = uniform(0.0, lfd::TwoPi);
+  o = glm::dvec3(6.0 * std::sin(phi), uniform(-2.0, 2.0), 6.0 * std::cos(phi));
+  // Drawn one by one: the evaluation order of a constructor's arguments is
+  // unspecified (gcc and clang differ), and the counts below must not be.
+  const double tz = uniform(-1.5, 1.5);
+  const double ty = uniform(-1.5, 1.5);
+  const double tx = uniform(-1.5, 1.5);
+  d = glm::dvec3(tx, ty, tz) - o;
+}
+
+// What the hull did to the rays looked up with and without it.
+struct SkipCounts
+{
+  int Skipped = 0;   ///< rays the hull skips
+  int Labelled = 0;  ///< rays with a labelled sample (without the hull)
+  int Wrong = 0;     ///< skipped rays with a labelled sample
+  int Differing = 0; ///< looked-up rays whose samples differ
+};
+
+// Looks the ray o + t d up without and with `hull` into `plain` and
+// `counts`; true when the hull skipped it.
+bool CountSkip(lfd::LightFieldSampler& sampler,
+  const lfd::LabelHull& hull,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  lfd::RaySamples& plain,
+  SkipCounts& counts)
+{
+  lfd::RaySamples skipping;
+  sampler.Hull = nullptr;
+  const bool found = sampler.Gather(o, d, plain);
+  const bool anyLabel = AnyLabel(plain);
+  counts.Labelled += anyLabel ? 1 : 0;
+  sampler.Hull = &hull;
+  if (!sampler.Gather(o, d, skipping) && found)
+  {
+    ++counts.Skipped;
+    counts.Wrong += anyLabel ? 1 : 0;
+    return true;
+  }
+  counts.Differing += SameSamples(plain, skipping) ? 0 : 1;
+  return false;
+}
+
+// 1 when the hull's MaySeePart proves that the stretch of the ray o + t d
+// inside the sampler's surface bounds meets no part, else 0; `seen` counts
+// the labelled samples of such a stretch all the same: at 64 points along
+// it, bilinear lookups in every view GatherOnSurface may blend there
+// (ProxyCandidates).
+int ProvenStretch(const lfd::LightFieldSampler& sampler,
+  const lfd::LabelHull& hull,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  int& seen)
+{
+  double enter, leave, s, azimuth, height;
+  if (!sampler.SurfaceStretch(o, d, enter, leave) ||
+    !lfd::IntersectCylinderEntry(sampler.Layout->Cyl, o, d, s))
+  {
+    return 0;
+  }
+  sampler.Layout->Locate(o + s * d, azimuth, height);
+  if (hull.MaySeePart(azimuth, o + enter * d, o + leave * d, *sampler.Layout))
+  {
+    return 0;
+  }
+  struct Candidate
+  {
+    double Penalty;
+    int View;
+  };
+  for (int k = 0; k <= 64; ++k)
+  {
+    const glm::dvec3 x = o + (enter + (leave - enter) * k / 64.0) * d;
+    Candidate candidates[16];
+    const int n = sampler.ProxyCandidates(azimuth, height, x, -glm::normalize(d), candidates);
+    for (int c = 0; c < n; ++c)
+    {
+      lfd::RaySamples samples;
+      sampler.AddBilinear(candidates[c].View, 1.0, x, samples);
+      for (int i = 0; i < samples.Count; ++i)
+      {
+        seen += samples.Samples[i].Label > 0 ? 1 : 0;
+      }
+    }
+  }
+  return 1;
+}
+
+// The label hull with a proxy (LabelHull::MaySeePart, the surface box of
+// ScreenTiles): the views of LabelHullSkips with the depth maps of a sphere
+// of radius 0.6 at the origin. A ray the hull skips (focal point and
+// stretch inside the surface's bounds both unmarked) must have no labelled
+// sample without the hull, neither on the surface nor on the plane; a ray
+// it does not skip must get the very same samples; the rays of a tile
+// marked 0 must be skipped.
+template<typename Uniform>
+void ProxyLabelHullSkips(lfd::LightFieldSampler& sampler,
+  const lfd::LabelHull& hull,
+  const lfd::PinholeCamera& eye,
+  Uniform& uniform)
+{
+  const int views = 48;
+  const int size = sampler.Radiance.Width;
+  const std::vector<lfd::PinholeCamera> cameras(sampler.Cameras, sampler.Cameras + views);
+  const std::vector<float> depth = SphereDepths(cameras, size, 0.6);
+  sampler.Depth = { depth.data(), size, size, 1 };
+  const std::vector<double> ranges = lfd::DepthRanges(sampler.Depth, views);
+  sampler.DepthRange = ranges.data();
+  lfd::NearestDepthTiles tiles;
+  tiles.Build(sampler.Depth, views);
+  sampler.DepthTiles = &tiles;
+  lfd::DepthBounds(sampler.Depth, cameras.data(), views, sampler.SurfaceLow, sampler.SurfaceHigh);
+  const lfd::RingLayout& layout = *sampler.Layout;
+  SkipCounts counts;
+  int stretched = 0, surface = 0, proven = 0, seen = 0;
+  for (int i = 0; i < 4000; ++i)
+  {
+    glm::dvec3 o, d;
+    RandomRay(uniform, o, d);
+    proven += ProvenStretch(sampler, hull, o, d, seen);
+    lfd::RaySamples plain;
+    double enter, leave;
+    stretched +=
+      CountSkip(sampler, hull, o, d, plain, counts) && sampler.SurfaceStretch(o, d, enter, leave)
+      ? 1
+      : 0;
+    surface += std::isnan(plain.Surface) ? 0 : 1;
+  }
+  Expect("proxy: stretches MaySeePart proves to see no part", proven, 29.0);
+  Expect("proxy: ... labelled samples at 64 points of each in the candidate views", seen, 0.0);
+  Expect("proxy: rays with a labelled sample", counts.Labelled, 607.0);
+  Expect("proxy: rays focused on the sphere", surface, 174.0);
+  Expect("proxy: rays the hull skips", counts.Skipped, 1923.0);
+  Expect("proxy: ... of which cross the surface's bounds (MaySeePart)", stretched, 14.0);
+  Expect("proxy: skipped rays with a labelled sample", counts.Wrong, 0.0);
+  Expect("proxy: looked-up rays whose samples differ", counts.Differing, 0.0);
+
+  // The screen tiles of LabelHullSkips' frame (`eye`, 96 x 80, looking at
+  // the top of the grid, above the labelled heights), the surface's bounds raised there
+  // (the sphere's, 1.2 higher): a tile marked 0 holds no ray that Gather
+  // looks up, and none with a labelled sample, though some of its rays
+  // cross those bounds.
+  sampler.SurfaceLow.y += 1.2;
+  sampler.SurfaceHigh.y += 1.2;
+  const int tile = 8, width = 96, height = 80;
+  const std::vector<std::uint8_t> mask = hull.ScreenTiles(layout,
+    eye.Center(),
+    eye.PixelToDirection(),
+    width,
+    height,
+    sampler.FocalDistance,
+    tile,
+    sampler.SurfaceLow,
+    sampler.SurfaceHigh);
+  const std::vector<std::uint8_t> planeMask = hull.ScreenTiles(
+    layout, eye.Center(), eye.PixelToDirection(), width, height, sampler.FocalDistance, tile);
+  int skippedTiles = 0, planeTiles = 0, leaks = 0, lookedUp = 0, crossing = 0;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const glm::dvec3 d = eye.PixelToDirection() * glm::dvec3(x, y, 1.0);
+      double enter, leave;
+      crossing +=
+        !mask[(y / tile) * 12 + x / tile] && sampler.SurfaceStretch(eye.Center(), d, enter, leave)
+        ? 1
+        : 0;
+      lfd::RaySamples samples;
+      sampler.Hull = &hull;
+      const bool looked = sampler.Gather(eye.Center(), d, samples);
+      sampler.Hull = nullptr;
+      sampler.Gather(eye.Center(), d, samples);
+      const bool anyLabel = AnyLabel(samples);
+      lookedUp += looked ? 1 : 0;
+      leaks += !mask[(y / tile) * 12 + x / tile] && (looked || anyLabel) ? 1 : 0;
+    }
+  }
+  for (std::size_t t = 0; t < mask.size(); ++t)
+  {
+    skippedTiles += mask[t] ? 0 : 1;
+    planeTiles += planeMask[t] ? 0 : 1;
+  }
+  Expect("proxy: tiles skipped whole", skippedTiles, 52.0);
+  Expect("proxy: ... through the plane alone", planeTiles, 53.0);
+  Expect("proxy: rays of skipped tiles that cross the surface's bounds", crossing, 1458.0);
+  Expect("proxy: rays looked up", lookedUp, 1557.0);
+  Expect("proxy: rays of skipped tiles looked up or labelled", leaks, 0.0);
+  sampler.Depth = {};
+  sampler.DepthRange = nullptr;
+  sampler.DepthTiles = nullptr;
+  sampler.SurfaceLow = glm::dvec3(-std::numeric_limits<double>::infinity());
+  sampler.SurfaceHigh = glm::dvec3(std::numeric_limits<double>::infinity());
 }
 
 // The label hull (LabelHull): two rings of 24 views of 32 x 32 whose label
@@ -239,50 +480,22 @@ void LabelHullSkips()
     seed = seed * 1664525u + 1013904223u;
     return low + (high - low) * (seed >> 8) / double(1u << 24);
   };
-  int skipped = 0, labelled = 0, wrong = 0, differing = 0, unmarked = 0;
+  SkipCounts counts;
+  int unmarked = 0;
   for (int i = 0; i < 4000; ++i)
   {
-    const double phi = uniform(0.0, lfd::TwoPi);
-    const glm::dvec3 o(6.0 * std::sin(phi), uniform(-2.0, 2.0), 6.0 * std::cos(phi));
-    // Drawn one by one: the evaluation order of a constructor's arguments is
-    // unspecified (gcc and clang differ), and the counts below must not be.
-    const double tz = uniform(-1.5, 1.5);
-    const double ty = uniform(-1.5, 1.5);
-    const double tx = uniform(-1.5, 1.5);
-    const glm::dvec3 target(tx, ty, tz);
-    lfd::RaySamples plain, skipping;
-    const long cell =
-      hull.Cell(lfd::FocalPoint(layout.Cyl, o, target - o, sampler.FocalDistance), layout);
+    glm::dvec3 o, d;
+    RandomRay(uniform, o, d);
+    const long cell = hull.Cell(lfd::FocalPoint(layout.Cyl, o, d, sampler.FocalDistance), layout);
     unmarked += cell >= 0 && !hull.Union[cell] ? 1 : 0;
-    sampler.Hull = nullptr;
-    const bool found = sampler.Gather(o, target - o, plain);
-    bool anyLabel = false;
-    for (int k = 0; k < plain.Count; ++k)
-    {
-      anyLabel = anyLabel || plain.Samples[k].Label > 0;
-    }
-    labelled += anyLabel ? 1 : 0;
-    sampler.Hull = &hull;
-    if (!sampler.Gather(o, target - o, skipping) && found)
-    {
-      ++skipped;
-      wrong += anyLabel ? 1 : 0;
-      continue;
-    }
-    bool same = skipping.Count == plain.Count;
-    for (int k = 0; same && k < plain.Count; ++k)
-    {
-      same = plain.Samples[k].Weight == skipping.Samples[k].Weight &&
-        plain.Samples[k].Label == skipping.Samples[k].Label &&
-        plain.Samples[k].Color == skipping.Samples[k].Color;
-    }
-    differing += same ? 0 : 1;
+    lfd::RaySamples plain;
+    CountSkip(sampler, hull, o, d, plain, counts);
   }
-  Expect("rays with a labelled sample", labelled, 615.0);
-  Expect("rays the hull skips", skipped, 1913.0);
+  Expect("rays with a labelled sample", counts.Labelled, 615.0);
+  Expect("rays the hull skips", counts.Skipped, 1913.0);
   Expect("rays unmarked in every sector (skipped before the cylinder entry)", unmarked, 869.0);
-  Expect("skipped rays with a labelled sample", wrong, 0.0);
-  Expect("looked-up rays whose samples differ", differing, 0.0);
+  Expect("skipped rays with a labelled sample", counts.Wrong, 0.0);
+  Expect("looked-up rays whose samples differ", counts.Differing, 0.0);
 
   // The screen-tile mask of a 96 x 80 frame (tiles of 8) looking at the top
   // of the grid, above the labelled heights, and past it: every ray of a tile marked 0
@@ -315,6 +528,7 @@ void LabelHullSkips()
   Expect("tiles skipped whole (3392 of the 4387 rays the union skips)", skippedTiles, 53.0);
   Expect("rays the union does not skip", lookedUp, 3293.0);
   Expect("rays of skipped tiles that Gather would look up", leaks, 0.0);
+  ProxyLabelHullSkips(sampler, hull, eye, uniform);
   sampler.Hull = nullptr;
 }
 
