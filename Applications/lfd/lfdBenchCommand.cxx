@@ -49,6 +49,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -179,6 +180,34 @@ struct Measure
   long long PeakBytes = 0;
 };
 
+/// The figures of one call of `work`.
+template<typename Work>
+Measure TimeOnce(const RunQueueWait& queue, Work&& work)
+{
+  // The wall clock encloses the other two: a frame never waits longer than it lasts.
+  const double start = vtkTimerLog::GetUniversalTime();
+  const double wait = queue.Seconds();
+  const double cpu = ProcessCpuTime();
+  work();
+  Measure run;
+  run.CpuSeconds = ProcessCpuTime() - cpu;
+  run.WaitSeconds = wait < 0.0 ? -1.0 : queue.Seconds() - wait;
+  run.Seconds = Seconds(start);
+  return run;
+}
+
+/// The median (by wall time) of `runs`.
+Measure Median(std::vector<Measure> runs)
+{
+  const auto median = runs.begin() + runs.size() / 2;
+  std::nth_element(runs.begin(),
+    median,
+    runs.end(),
+    [](const Measure& a, const Measure& b) { return a.Seconds < b.Seconds; });
+  median->Threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  return *median;
+}
+
 /// The figures of the median (by wall time) of `repeat` calls of `work`.
 template<typename Work>
 Measure MedianTimes(int repeat, Work&& work)
@@ -187,24 +216,9 @@ Measure MedianTimes(int repeat, Work&& work)
   const RunQueueWait queue;
   for (int i = 0; i < repeat; ++i)
   {
-    // The wall clock encloses the other two: a frame never waits longer than it lasts.
-    const double start = vtkTimerLog::GetUniversalTime();
-    const double wait = queue.Seconds();
-    const double cpu = ProcessCpuTime();
-    work();
-    Measure run;
-    run.CpuSeconds = ProcessCpuTime() - cpu;
-    run.WaitSeconds = wait < 0.0 ? -1.0 : queue.Seconds() - wait;
-    run.Seconds = Seconds(start);
-    runs.push_back(run);
+    runs.push_back(TimeOnce(queue, work));
   }
-  const auto median = runs.begin() + runs.size() / 2;
-  std::nth_element(runs.begin(),
-    median,
-    runs.end(),
-    [](const Measure& a, const Measure& b) { return a.Seconds < b.Seconds; });
-  median->Threads = vtkSMPTools::GetEstimatedNumberOfThreads();
-  return *median;
+  return Median(std::move(runs));
 }
 
 /// Median times of `repeat` updates of the renderer after a warm-up, and
@@ -225,6 +239,46 @@ Measure MeasureRender(vtkLightFieldRenderer* renderer, int repeat, PeakMemory& p
   return figures;
 }
 
+/**
+ * Median times of `repeat` updates each of two renderers, updated in turn
+ * (a, b, a, b, ...) after a warm-up each, and the peak memory over them.
+ * A ratio of the two holds while the machine's speed drifts (other jobs,
+ * the host changing the core's clock): measured one after the other, two
+ * configurations of a few ms each can see different machines.
+ */
+std::pair<Measure, Measure> MeasureInTurn(vtkLightFieldRenderer* a,
+  vtkLightFieldRenderer* b,
+  int repeat,
+  PeakMemory& peak)
+{
+  peak.Reset();
+  const long long start = peak.Resident();
+  Run(a, "rendering");
+  Run(b, "rendering");
+  std::vector<Measure> runs[2];
+  const RunQueueWait queue;
+  for (int i = 0; i < repeat; ++i)
+  {
+    int k = 0;
+    for (vtkLightFieldRenderer* renderer : { a, b })
+    {
+      runs[k++].push_back(TimeOnce(queue,
+        [renderer]
+        {
+          renderer->Modified();
+          renderer->Update();
+        }));
+    }
+  }
+  std::pair<Measure, Measure> figures{ Median(std::move(runs[0])), Median(std::move(runs[1])) };
+  for (Measure* measure : { &figures.first, &figures.second })
+  {
+    measure->StartBytes = start;
+    measure->PeakBytes = peak.Read();
+  }
+  return figures;
+}
+
 /// A renderer of `lightField` at `size` x `size` from the bench's orbit camera.
 vtkSmartPointer<vtkLightFieldRenderer> OrbitRenderer(vtkLightField* lightField, int size)
 {
@@ -240,21 +294,19 @@ vtkSmartPointer<vtkLightFieldRenderer> OrbitRenderer(vtkLightField* lightField, 
 }
 
 /**
- * Median render times and peaks of `object`'s light field at `size` x `size`
- * from an orbit camera, at rest and deformed: the fish swimming (3 boxes,
- * Fig. 13), the figure twisted by 45 degrees (Fig. 1); focused as `focal`
- * says (vtkLightFieldRenderer::FocalSurfaceType).
+ * Renderers of `object`'s light field at `size` x `size` from an orbit
+ * camera, at rest and deformed: the fish swimming (3 boxes, Fig. 13), the
+ * figure twisted by 45 degrees (Fig. 1); focused as `focal` says
+ * (vtkLightFieldRenderer::FocalSurfaceType).
  */
-std::pair<Measure, Measure> RenderTimes(vtkLightField* lightField,
+std::pair<vtkSmartPointer<vtkLightFieldRenderer>, vtkSmartPointer<vtkLightFieldRenderer>>
+SceneRenderers(vtkLightField* lightField,
   const std::string& object,
   int size,
-  int repeat,
-  PeakMemory& peak,
   int focal = vtkLightFieldRenderer::FOCAL_AUTOMATIC)
 {
-  vtkSmartPointer<vtkLightFieldRenderer> renderer = OrbitRenderer(lightField, size);
-  renderer->SetFocalSurface(focal);
-  const Measure rest = MeasureRender(renderer, repeat, peak);
+  vtkSmartPointer<vtkLightFieldRenderer> rest = OrbitRenderer(lightField, size);
+  rest->SetFocalSurface(focal);
 
   vtkNew<vtkProceduralObjectSource> source;
   source->SetObject(vtkProceduralObjectSource::GetObjectFromString(object.c_str()));
@@ -275,8 +327,22 @@ std::pair<Measure, Measure> RenderTimes(vtkLightField* lightField,
     pose->SetAngle(45.0);
   }
   Run(pose.Get(), "posing the cage");
-  renderer->SetCageData(pose->GetOutput());
-  return { rest, MeasureRender(renderer, repeat, peak) };
+  vtkSmartPointer<vtkLightFieldRenderer> deformed = OrbitRenderer(lightField, size);
+  deformed->SetFocalSurface(focal);
+  deformed->SetCageData(pose->GetOutput());
+  return { rest, deformed };
+}
+
+/// Median render times and peaks of SceneRenderers, at rest and deformed.
+std::pair<Measure, Measure> RenderTimes(vtkLightField* lightField,
+  const std::string& object,
+  int size,
+  int repeat,
+  PeakMemory& peak)
+{
+  const auto [rest, deformed] = SceneRenderers(lightField, object, size);
+  const Measure restFigures = MeasureRender(rest, repeat, peak);
+  return { restFigures, MeasureRender(deformed, repeat, peak) };
 }
 
 /// What one recorded drag in the editor measured.
@@ -561,16 +627,14 @@ Measure ReferenceTime(vtkLightField* lightField, int size, int repeat, PeakMemor
 }
 
 /**
- * Median render time and peak of the fish bent by 30 degrees under the cage
- * of FishScene with `boxes` boxes, at `size` x `size`, with or without the
- * renderer's per-frame acceleration (vtkLightFieldRenderer::CageAcceleration).
+ * A renderer of the fish bent by 30 degrees under the cage of FishScene with
+ * `boxes` boxes, at `size` x `size`, with or without the renderer's
+ * per-frame acceleration (vtkLightFieldRenderer::CageAcceleration).
  */
-Measure CageRenderTime(vtkLightField* lightField,
+vtkSmartPointer<vtkLightFieldRenderer> CageRenderer(vtkLightField* lightField,
   int boxes,
   int size,
-  int repeat,
-  bool accelerated,
-  PeakMemory& peak)
+  bool accelerated)
 {
   auto logic = FishScene(lightField, boxes);
   vtkNew<vtkCagePoseFilter> pose;
@@ -583,7 +647,7 @@ Measure CageRenderTime(vtkLightField* lightField,
   vtkSmartPointer<vtkLightFieldRenderer> renderer = OrbitRenderer(lightField, size);
   renderer->SetCageData(pose->GetOutput());
   renderer->SetCageAcceleration(accelerated);
-  return MeasureRender(renderer, repeat, peak);
+  return renderer;
 }
 
 /// What `lfd bench` measures: the sizes, tables and repeats of a run.
@@ -730,7 +794,8 @@ void LightFieldSizeRows(const BenchSettings& settings,
 /**
  * The cost against cage size: the fish bent under 1, 3 (its parts), 10, 30
  * and 100 boxes (slabs labelled by part) at TableSize(), against the 3-box
- * cage; "no_accel_ms": the same cage without the per-frame acceleration.
+ * cage rendered in turn with it (MeasureInTurn); "no_accel_ms": the same
+ * cage without the per-frame acceleration.
  */
 void CageSizeRows(vtkLightField* fish,
   const BenchSettings& settings,
@@ -741,11 +806,21 @@ void CageSizeRows(vtkLightField* fish,
     settings.Quick ? std::vector<int>{ 1, 3 } : std::vector<int>{ 1, 3, 10, 30, 100 };
   const int size = TableSize(settings);
   const std::size_t first = rows.size();
-  Measure three;
+  vtkSmartPointer<vtkLightFieldRenderer> threeBoxes = CageRenderer(fish, 3, size, true);
+  std::vector<Measure> threes;
   for (int boxes : counts)
   {
-    const Measure figures = CageRenderTime(fish, boxes, size, settings.Repeat, true, peak);
-    three = boxes == 3 ? figures : three;
+    Measure figures, three;
+    if (boxes == 3)
+    {
+      figures = three = MeasureRender(threeBoxes, settings.Repeat, peak);
+    }
+    else
+    {
+      std::tie(three, figures) =
+        MeasureInTurn(threeBoxes, CageRenderer(fish, boxes, size, true), settings.Repeat, peak);
+    }
+    threes.push_back(three);
     const std::string name = std::to_string(boxes) + (boxes == 1 ? " box" : " boxes") +
       (boxes == 3      ? " (its parts)"
           : boxes == 1 ? " (one slab)"
@@ -754,8 +829,9 @@ void CageSizeRows(vtkLightField* fish,
   }
   for (std::size_t r = first; r < rows.size(); ++r)
   {
-    const Measure plain = CageRenderTime(fish, rows[r].Boxes, size, settings.Repeat, false, peak);
-    rows[r].AddRatio("vs_3_boxes", three);
+    const Measure plain =
+      MeasureRender(CageRenderer(fish, rows[r].Boxes, size, false), settings.Repeat, peak);
+    rows[r].AddRatio("vs_3_boxes", threes[r - first]);
     rows[r].Extra.emplace_back("no_accel_ms", 1000.0 * plain.Seconds);
     rows[r].Extra.emplace_back("no_accel_cpu_ms", 1000.0 * plain.CpuSeconds);
   }
@@ -765,8 +841,7 @@ void CageSizeRows(vtkLightField* fish,
  * The proxy rows: the fish again with its Depth pass, so that the renderer
  * focuses every ray on that proxy (vtkLightFieldRenderer::FOCAL_AUTOMATIC),
  * at rest and swimming, each against the same light field rendered through
- * the plane just before (`vs_plane`): measured back to back, so that the
- * ratio holds on a machine whose load drifts between the tables.
+ * the plane (`vs_plane`), the two rendered in turn (MeasureInTurn).
  */
 void ProxyRows(const BenchSettings& settings,
   int views,
@@ -777,9 +852,11 @@ void ProxyRows(const BenchSettings& settings,
 {
   auto fish = BenchLightField("fish", views, rowsOfViews, image, true);
   const int size = TableSize(settings);
-  const auto [restPlane, deformedPlane] =
-    RenderTimes(fish, "fish", size, settings.Repeat, peak, vtkLightFieldRenderer::FOCAL_PLANE);
-  const auto [rest, deformed] = RenderTimes(fish, "fish", size, settings.Repeat, peak);
+  const auto plane = SceneRenderers(fish, "fish", size, vtkLightFieldRenderer::FOCAL_PLANE);
+  const auto proxy = SceneRenderers(fish, "fish", size);
+  const auto [restPlane, rest] = MeasureInTurn(plane.first, proxy.first, settings.Repeat, peak);
+  const auto [deformedPlane, deformed] =
+    MeasureInTurn(plane.second, proxy.second, settings.Repeat, peak);
   rows.push_back(Row("proxy", "undeformed fish, proxy", size, fish, 0, rest));
   rows.back().AddRatio("vs_plane", restPlane);
   rows.push_back(Row("proxy", "deformed fish (swim, 3 boxes), proxy", size, fish, 3, deformed));
@@ -1164,8 +1241,8 @@ void Bench(const BenchSettings& settings)
     "render_vs_raw: what the render added to the resident memory, and over those bytes; "
     "cpu_ columns: the ratio before them in CPU time; vs_rest: against the "
     "undeformed render; vs_plane: against the same render through the focal plane, "
-    "timed just before; "
-    "vs_3_boxes: against the 3 boxes of the same table; "
+    "the two rendered in turn; "
+    "vs_3_boxes: against the 3 boxes of the same table, rendered in turn with it; "
     "no_accel_ms: the same cage with vtkLightFieldRenderer::CageAcceleration off; "
     "vs_in_memory: against the same frame from memory, identical: 1 when its pixels "
     "equal it, cache_mb and tiles_read: the image cache's budget and reads; "
