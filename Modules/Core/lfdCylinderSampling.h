@@ -1124,6 +1124,13 @@ struct NearestDepthTiles
     }
     return nearest;
   }
+
+  /// The nearest depth of the tile of `view` that holds pixel (x, y).
+  float At(int view, int x, int y) const
+  {
+    return this
+      ->Depth[(static_cast<std::size_t>(view) * this->Rows + y / Size) * this->Columns + x / Size];
+  }
 };
 
 /// Weighted vote of the samples' labels; -1 when there is no sample.
@@ -1384,7 +1391,9 @@ struct LightFieldSampler
       const int last = std::min(first + CoarseDepthSteps, steps);
       const double sLast = s0 + (s1 - s0) * last / steps;
       glm::dvec2 uvLast;
-      const bool lastProjected = this->DepthTiles && camera.Project(o + sLast * d, uvLast);
+      // The walk's end is projected already (most walks are one run).
+      const bool lastProjected = this->DepthTiles &&
+        (sLast == s1 ? (uvLast = uv1, true) : camera.Project(o + sLast * d, uvLast));
       // A projection bends (lens distortion) far less than the margin of
       // one pixel over a run, and each step reads its nearest pixel.
       if (firstProjected && lastProjected &&
@@ -1502,19 +1511,36 @@ struct LightFieldSampler
     int visible = 0;
     for (int i = 0; i < n && visible <= k; ++i)
     {
-      const PinholeCamera& camera = this->Cameras[candidates[i].View];
+      const Candidate& candidate = candidates[i];
+      const PinholeCamera& camera = this->Cameras[candidate.View];
       glm::dvec2 uv;
       if (!camera.Project(x, uv))
       {
         continue;
       }
-      const double seen = this->DepthAt(candidates[i].View, uv);
-      const double z = glm::dot(camera.Forward(), x) + camera.t.z;
-      if (seen > 0.0 && z > seen * (1.0 + this->OcclusionTolerance))
+      const long px = std::lround(uv.x);
+      const long py = std::lround(uv.y);
+      if (px >= 0 && py >= 0 && px < this->Depth.Width && py < this->Depth.Height)
       {
-        continue;
+        // The nearest depth of the pixel's tile bounds the pixel's from
+        // below: a point no deeper than it (with the tolerance) is seen, and
+        // the small tiles spare most reads of the large depth maps, whose
+        // misses cost the proxy path more than its arithmetic.
+        const double z = glm::dot(camera.Forward(), x) + camera.t.z;
+        const double tolerance = 1.0 + this->OcclusionTolerance;
+        const int view = candidate.View;
+        if (!(this->DepthTiles &&
+              z <=
+                this->DepthTiles->At(view, static_cast<int>(px), static_cast<int>(py)) * tolerance))
+        {
+          const double seen = *this->Depth.Pixel(view, static_cast<int>(px), static_cast<int>(py));
+          if (seen > 0.0 && z > seen * tolerance)
+          {
+            continue;
+          }
+        }
       }
-      chosen[visible++] = candidates[i];
+      chosen[visible++] = candidate;
     }
     if (visible == 0)
     {
