@@ -1316,13 +1316,30 @@ struct LightFieldSampler
    */
   double DepthAt(int view, const glm::dvec2& uv) const
   {
-    const long x = std::lround(uv.x);
-    const long y = std::lround(uv.y);
-    if (!(x >= 0 && y >= 0 && x < this->Depth.Width && y < this->Depth.Height))
+    int x, y;
+    return this->DepthPixel(uv, x, y) ? *this->Depth.Pixel(view, x, y) : 0.0;
+  }
+
+  /**
+   * The depth maps' pixel (x, y) nearest to `uv`, std::lround's (halves away
+   * from zero) without its library call, which the walk would pay at every
+   * step; false outside the maps.
+   */
+  bool DepthPixel(const glm::dvec2& uv, int& x, int& y) const
+  {
+    // Also keeps NaN and far points from the conversions below.
+    if (!(uv.x > -1.0 && uv.y > -1.0 && uv.x < this->Depth.Width && uv.y < this->Depth.Height))
     {
-      return 0.0;
+      return false;
     }
-    return *this->Depth.Pixel(view, static_cast<int>(x), static_cast<int>(y));
+    // Truncation, then the fraction (exact: uv minus its integer part).
+    const int tx = static_cast<int>(uv.x);
+    const int ty = static_cast<int>(uv.y);
+    const double fx = uv.x - tx;
+    const double fy = uv.y - ty;
+    x = tx + (fx >= 0.5) - (fx <= -0.5);
+    y = ty + (fy >= 0.5) - (fy <= -0.5);
+    return x >= 0 && y >= 0 && x < this->Depth.Width && y < this->Depth.Height;
   }
 
   /**
@@ -1518,9 +1535,8 @@ struct LightFieldSampler
       {
         continue;
       }
-      const long px = std::lround(uv.x);
-      const long py = std::lround(uv.y);
-      if (px >= 0 && py >= 0 && px < this->Depth.Width && py < this->Depth.Height)
+      int px, py;
+      if (this->DepthPixel(uv, px, py))
       {
         // The nearest depth of the pixel's tile bounds the pixel's from
         // below: a point no deeper than it (with the tolerance) is seen, and
@@ -1529,11 +1545,9 @@ struct LightFieldSampler
         const double z = glm::dot(camera.Forward(), x) + camera.t.z;
         const double tolerance = 1.0 + this->OcclusionTolerance;
         const int view = candidate.View;
-        if (!(this->DepthTiles &&
-              z <=
-                this->DepthTiles->At(view, static_cast<int>(px), static_cast<int>(py)) * tolerance))
+        if (!(this->DepthTiles && z <= this->DepthTiles->At(view, px, py) * tolerance))
         {
-          const double seen = *this->Depth.Pixel(view, static_cast<int>(px), static_cast<int>(py));
+          const double seen = *this->Depth.Pixel(view, px, py);
           if (seen > 0.0 && z > seen * tolerance)
           {
             continue;
