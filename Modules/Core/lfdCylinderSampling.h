@@ -1124,6 +1124,13 @@ struct NearestDepthTiles
     }
     return nearest;
   }
+
+  /// The nearest depth of the tile of `view` that holds pixel (x, y).
+  float At(int view, int x, int y) const
+  {
+    return this
+      ->Depth[(static_cast<std::size_t>(view) * this->Rows + y / Size) * this->Columns + x / Size];
+  }
 };
 
 /// Weighted vote of the samples' labels; -1 when there is no sample.
@@ -1309,13 +1316,30 @@ struct LightFieldSampler
    */
   double DepthAt(int view, const glm::dvec2& uv) const
   {
-    const long x = std::lround(uv.x);
-    const long y = std::lround(uv.y);
-    if (!(x >= 0 && y >= 0 && x < this->Depth.Width && y < this->Depth.Height))
+    int x, y;
+    return this->DepthPixel(uv, x, y) ? *this->Depth.Pixel(view, x, y) : 0.0;
+  }
+
+  /**
+   * The depth maps' pixel (x, y) nearest to `uv`, std::lround's (halves away
+   * from zero) without its library call, which the walk would pay at every
+   * step; false outside the maps.
+   */
+  bool DepthPixel(const glm::dvec2& uv, int& x, int& y) const
+  {
+    // Also keeps NaN and far points from the conversions below.
+    if (!(uv.x > -1.0 && uv.y > -1.0 && uv.x < this->Depth.Width && uv.y < this->Depth.Height))
     {
-      return 0.0;
+      return false;
     }
-    return *this->Depth.Pixel(view, static_cast<int>(x), static_cast<int>(y));
+    // Truncation, then the fraction (exact: uv minus its integer part).
+    const int tx = static_cast<int>(uv.x);
+    const int ty = static_cast<int>(uv.y);
+    const double fx = uv.x - tx;
+    const double fy = uv.y - ty;
+    x = tx + (fx >= 0.5) - (fx <= -0.5);
+    y = ty + (fy >= 0.5) - (fy <= -0.5);
+    return x >= 0 && y >= 0 && x < this->Depth.Width && y < this->Depth.Height;
   }
 
   /**
@@ -1384,7 +1408,9 @@ struct LightFieldSampler
       const int last = std::min(first + CoarseDepthSteps, steps);
       const double sLast = s0 + (s1 - s0) * last / steps;
       glm::dvec2 uvLast;
-      const bool lastProjected = this->DepthTiles && camera.Project(o + sLast * d, uvLast);
+      // The walk's end is projected already (most walks are one run).
+      const bool lastProjected = this->DepthTiles &&
+        (sLast == s1 ? (uvLast = uv1, true) : camera.Project(o + sLast * d, uvLast));
       // A projection bends (lens distortion) far less than the margin of
       // one pixel over a run, and each step reads its nearest pixel.
       if (firstProjected && lastProjected &&
@@ -1502,19 +1528,33 @@ struct LightFieldSampler
     int visible = 0;
     for (int i = 0; i < n && visible <= k; ++i)
     {
-      const PinholeCamera& camera = this->Cameras[candidates[i].View];
+      const Candidate& candidate = candidates[i];
+      const PinholeCamera& camera = this->Cameras[candidate.View];
       glm::dvec2 uv;
       if (!camera.Project(x, uv))
       {
         continue;
       }
-      const double seen = this->DepthAt(candidates[i].View, uv);
-      const double z = glm::dot(camera.Forward(), x) + camera.t.z;
-      if (seen > 0.0 && z > seen * (1.0 + this->OcclusionTolerance))
+      int px, py;
+      if (this->DepthPixel(uv, px, py))
       {
-        continue;
+        // The nearest depth of the pixel's tile bounds the pixel's from
+        // below: a point no deeper than it (with the tolerance) is seen, and
+        // the small tiles spare most reads of the large depth maps, whose
+        // misses cost the proxy path more than its arithmetic.
+        const double z = glm::dot(camera.Forward(), x) + camera.t.z;
+        const double tolerance = 1.0 + this->OcclusionTolerance;
+        const int view = candidate.View;
+        if (!(this->DepthTiles && z <= this->DepthTiles->At(view, px, py) * tolerance))
+        {
+          const double seen = *this->Depth.Pixel(view, px, py);
+          if (seen > 0.0 && z > seen * tolerance)
+          {
+            continue;
+          }
+        }
       }
-      chosen[visible++] = candidates[i];
+      chosen[visible++] = candidate;
     }
     if (visible == 0)
     {

@@ -172,6 +172,20 @@ void ProxySurface()
     "the ray meets view 2's depth map", sampler.IntersectDepthMap(2, o, d, 0.0, 100.0, hit), 1.0);
   Expect("... 1 before the axis (10 - 1)", hit, 9.0, 0.01);
   ProxyCoarseWalk(sampler, views);
+  // DepthPixel: std::lround's pixel and bounds, halves and the edges included.
+  int agree = 0, inside = 0;
+  for (int i = -80; i <= 4 * size + 80; ++i)
+  {
+    const glm::dvec2 uv(0.25 * i - 10.0, std::nextafter(0.25 * i - 10.0, 0.0));
+    int x = -1, y = -1;
+    const bool found = sampler.DepthPixel(uv, x, y);
+    const long lx = std::lround(uv.x), ly = std::lround(uv.y);
+    const bool in = lx >= 0 && ly >= 0 && lx < size && ly < size;
+    agree += found == in && (!in || (x == lx && y == ly));
+    inside += in;
+  }
+  Expect("DepthPixel agrees with std::lround", agree, 4 * size + 161.0);
+  Expect("... inside the map (-0.25 to 63.25)", inside, 4.0 * size - 1);
   lfd::RaySamples samples;
   sampler.ProxyViews = 1;
   Expect("proxy gather", sampler.Gather(o, d, samples), 1.0);
