@@ -33,6 +33,7 @@
 
 #include "lfdPinholeCamera.h"
 #include "lfdTexelSource.h"
+#include "lfdTrilinear.h"
 
 #include <glm/glm.hpp>
 
@@ -1598,24 +1599,8 @@ struct LightFieldSampler
    */
   bool SurfaceStretch(const glm::dvec3& o, const glm::dvec3& d, double& enter, double& leave) const
   {
-    enter = 0.0;
-    leave = std::numeric_limits<double>::infinity();
-    for (int a = 0; a < 3; ++a)
-    {
-      if (d[a] == 0.0)
-      {
-        if (o[a] < this->SurfaceLow[a] || o[a] > this->SurfaceHigh[a])
-        {
-          return false;
-        }
-        continue;
-      }
-      const double s0 = (this->SurfaceLow[a] - o[a]) / d[a];
-      const double s1 = (this->SurfaceHigh[a] - o[a]) / d[a];
-      enter = std::max(enter, std::min(s0, s1));
-      leave = std::min(leave, std::max(s0, s1));
-    }
-    return enter <= leave;
+    return RayStretchInBounds(
+      o, d, AxisBounds{ this->SurfaceLow, this->SurfaceHigh }, enter, leave);
   }
 
   /**

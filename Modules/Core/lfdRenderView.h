@@ -148,33 +148,8 @@ inline bool RayEntersBounds(const glm::dvec3& o,
   const AxisBounds& bounds,
   double& tEnter)
 {
-  double t0 = 0.0;
-  double t1 = std::numeric_limits<double>::infinity();
-  for (int a = 0; a < 3; ++a)
-  {
-    if (d[a] == 0.0)
-    {
-      if (o[a] < bounds.Min[a] || o[a] > bounds.Max[a])
-      {
-        return false;
-      }
-      continue;
-    }
-    double near = (bounds.Min[a] - o[a]) / d[a];
-    double far = (bounds.Max[a] - o[a]) / d[a];
-    if (near > far)
-    {
-      std::swap(near, far);
-    }
-    t0 = std::max(t0, near);
-    t1 = std::min(t1, far);
-    if (t0 > t1)
-    {
-      return false;
-    }
-  }
-  tEnter = t0;
-  return true;
+  double tLeave;
+  return RayStretchInBounds(o, d, bounds, tEnter, tLeave);
 }
 
 /// Slab test of the half-line o + t d (t >= 0) against axis-aligned bounds.

@@ -21,6 +21,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace lfd
 {
@@ -68,6 +70,43 @@ inline AxisBounds BoxBounds(const Hexahedron& box)
     bounds.Max = glm::max(bounds.Max, c);
   }
   return bounds;
+}
+
+/// Slab test of the half-line o + t d (t >= 0) against axis-aligned bounds:
+/// the stretch [enter, leave] of it inside them (enter 0 when o is inside);
+/// false when it misses them (enter and leave then mean nothing).
+inline bool RayStretchInBounds(const glm::dvec3& o,
+  const glm::dvec3& d,
+  const AxisBounds& bounds,
+  double& enter,
+  double& leave)
+{
+  enter = 0.0;
+  leave = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3; ++a)
+  {
+    if (d[a] == 0.0)
+    {
+      if (o[a] < bounds.Min[a] || o[a] > bounds.Max[a])
+      {
+        return false;
+      }
+      continue;
+    }
+    double near = (bounds.Min[a] - o[a]) / d[a];
+    double far = (bounds.Max[a] - o[a]) / d[a];
+    if (near > far)
+    {
+      std::swap(near, far);
+    }
+    enter = std::max(enter, near);
+    leave = std::min(leave, far);
+    if (enter > leave)
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 /// Eq. (2): the point of the box at parametric coordinates uvw.
