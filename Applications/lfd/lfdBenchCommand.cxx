@@ -221,48 +221,31 @@ Measure MedianTimes(int repeat, Work&& work)
   return Median(std::move(runs));
 }
 
-/// Median times of `repeat` updates of the renderer after a warm-up, and
-/// the peak memory over them.
-Measure MeasureRender(vtkLightFieldRenderer* renderer, int repeat, PeakMemory& peak)
-{
-  peak.Reset();
-  const long long start = peak.Resident();
-  Run(renderer, "rendering"); // warm-up (rig layout, threads)
-  Measure figures = MedianTimes(repeat,
-    [renderer]
-    {
-      renderer->Modified();
-      renderer->Update();
-    });
-  figures.StartBytes = start;
-  figures.PeakBytes = peak.Read();
-  return figures;
-}
-
 /**
- * Median times of `repeat` updates each of two renderers, updated in turn
- * (a, b, a, b, ...) after a warm-up each, and the peak memory over them.
- * A ratio of the two holds while the machine's speed drifts (other jobs,
- * the host changing the core's clock): measured one after the other, two
- * configurations of a few ms each can see different machines.
+ * Median times of `repeat` updates of each renderer after a warm-up of
+ * each, the renderers updated in turn (a, b, a, b, ...), and the peak
+ * memory over them. A ratio of two holds while the machine's speed drifts
+ * (other jobs, the host changing the core's clock): measured one after the
+ * other, two configurations of a few ms each can see different machines.
  */
-std::pair<Measure, Measure> MeasureInTurn(vtkLightFieldRenderer* a,
-  vtkLightFieldRenderer* b,
+std::vector<Measure> MeasureRenders(const std::vector<vtkLightFieldRenderer*>& renderers,
   int repeat,
   PeakMemory& peak)
 {
   peak.Reset();
   const long long start = peak.Resident();
-  Run(a, "rendering");
-  Run(b, "rendering");
-  std::vector<Measure> runs[2];
+  for (vtkLightFieldRenderer* renderer : renderers)
+  {
+    Run(renderer, "rendering"); // warm-up (rig layout, threads)
+  }
+  std::vector<std::vector<Measure>> runs(renderers.size());
   const RunQueueWait queue;
   for (int i = 0; i < repeat; ++i)
   {
-    int k = 0;
-    for (vtkLightFieldRenderer* renderer : { a, b })
+    for (std::size_t k = 0; k < renderers.size(); ++k)
     {
-      runs[k++].push_back(TimeOnce(queue,
+      vtkLightFieldRenderer* renderer = renderers[k];
+      runs[k].push_back(TimeOnce(queue,
         [renderer]
         {
           renderer->Modified();
@@ -270,13 +253,30 @@ std::pair<Measure, Measure> MeasureInTurn(vtkLightFieldRenderer* a,
         }));
     }
   }
-  std::pair<Measure, Measure> figures{ Median(std::move(runs[0])), Median(std::move(runs[1])) };
-  for (Measure* measure : { &figures.first, &figures.second })
+  std::vector<Measure> figures;
+  for (std::vector<Measure>& times : runs)
   {
-    measure->StartBytes = start;
-    measure->PeakBytes = peak.Read();
+    figures.push_back(Median(std::move(times)));
+    figures.back().StartBytes = start;
+    figures.back().PeakBytes = peak.Read();
   }
   return figures;
+}
+
+/// MeasureRenders of one renderer.
+Measure MeasureRender(vtkLightFieldRenderer* renderer, int repeat, PeakMemory& peak)
+{
+  return MeasureRenders({ renderer }, repeat, peak).front();
+}
+
+/// MeasureRenders of two renderers in turn.
+std::pair<Measure, Measure> MeasureInTurn(vtkLightFieldRenderer* a,
+  vtkLightFieldRenderer* b,
+  int repeat,
+  PeakMemory& peak)
+{
+  const std::vector<Measure> figures = MeasureRenders({ a, b }, repeat, peak);
+  return { figures[0], figures[1] };
 }
 
 /// A renderer of `lightField` at `size` x `size` from the bench's orbit camera.
