@@ -866,9 +866,7 @@ private:
     double t0 = std::numeric_limits<double>::infinity(), t1 = 0.0;
     for (int k = 0; k < 8; ++k)
     {
-      const glm::dvec3 corner(k & 1 ? surfaceHigh.x : surfaceLow.x,
-        k & 2 ? surfaceHigh.y : surfaceLow.y,
-        k & 4 ? surfaceHigh.z : surfaceLow.z);
+      const glm::dvec3 corner = BoundsCorner(AxisBounds{ surfaceLow, surfaceHigh }, k);
       const glm::dvec3 c = toCamera * (corner - eye);
       if (!(c.z > 1e-9 * glm::length(corner - eye)))
       {
@@ -903,9 +901,7 @@ private:
     glm::dvec3 high3 = -low3;
     for (int k = 0; k < 8; ++k)
     {
-      const glm::dvec3 corner(k & 1 ? hullHigh.x : hullLow.x,
-        k & 2 ? hullHigh.y : hullLow.y,
-        k & 4 ? hullHigh.z : hullLow.z);
+      const glm::dvec3 corner = BoundsCorner(AxisBounds{ hullLow, hullHigh }, k);
       const glm::dvec3 q = ToRig(layout, corner - layout.Cyl.Center);
       low3 = glm::min(low3, q);
       high3 = glm::max(high3, q);

@@ -72,6 +72,14 @@ inline AxisBounds BoxBounds(const Hexahedron& box)
   return bounds;
 }
 
+/// Corner `k` (0..7) of axis-aligned bounds: bit a of k picks Max along axis a.
+inline glm::dvec3 BoundsCorner(const AxisBounds& bounds, int k)
+{
+  return glm::dvec3(k & 1 ? bounds.Max.x : bounds.Min.x,
+    k & 2 ? bounds.Max.y : bounds.Min.y,
+    k & 4 ? bounds.Max.z : bounds.Min.z);
+}
+
 /// Slab test of the half-line o + t d (t >= 0) against axis-aligned bounds:
 /// the stretch [enter, leave] of it inside them (enter 0 when o is inside);
 /// false when it misses them (enter and leave then mean nothing).
