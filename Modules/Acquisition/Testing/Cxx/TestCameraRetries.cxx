@@ -54,10 +54,12 @@ int TestCameraRetries(int, char*[])
   // that frame and discards it instead of taking it for its own (on a rig,
   // a frame exposed under the previous pass's lights).
   // (The fake camera answers no control packet while it fills a frame:
-  // the delay stays under its 3 s heartbeat timeout, past which it would
-  // drop its controller.)
-  camera->SetFrameTimeout(1000);
-  simulated->DelayFrames(1, 1800);
+  // the delay and the frame's render, several times slower under the
+  // sanitizers on a loaded machine, stay under its 3 s heartbeat timeout,
+  // past which it would drop its controller: a delay of 1800 ms left too
+  // little for the render there.)
+  camera->SetFrameTimeout(600);
+  simulated->DelayFrames(1, 1200);
   const int retriesBefore = camera->GetNumberOfRetries();
   const int renderedBefore = simulated->GetNumberOfFramesRendered();
   const bool slow = camera->Acquire(frame);
