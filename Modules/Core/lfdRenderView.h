@@ -301,6 +301,26 @@ struct ScreenHull
     }
     return true;
   }
+
+  /**
+   * False when MayHold is false at every pixel of the rectangle [x0, x1] x
+   * [y0, y1]: an edge's distance is linear, so it is below -Margin all over
+   * the rectangle when it is at its 4 corners (by twice the margin, which
+   * is far more than the rounding of evaluating it in between).
+   */
+  bool MayHoldAny(double x0, double y0, double x1, double y1) const
+  {
+    for (int i = 0; i < this->Count; ++i)
+    {
+      const glm::dvec3& e = this->Edges[i];
+      const double farthest = std::max(e.x * x0, e.x * x1) + std::max(e.y * y0, e.y * y1) + e.z;
+      if (farthest < -2.0 * Margin)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
 };
 
 /**
@@ -375,6 +395,8 @@ struct FrameRayScratch
   glm::dvec2 Pixel{ 0.0 }; ///< the pixel of the ray (StartWalk)
   /// Per box, the number of the last ray that left it out (FrameCage::LeaveOut).
   std::vector<unsigned> Skipped;
+  /// Per box, the number of the last ray whose pixel its projected hull holds (StartWalk).
+  std::vector<unsigned> Held;
   unsigned Ray = 0;                       ///< this ray's number
   const BoxSegment* RunSkipped = nullptr; ///< the interval whose run LeaveOut last left out
   int Landing = -1;       ///< the box where the run left out ahead of an interval goes on
@@ -396,14 +418,14 @@ struct FrameRayScratch
  *   face, which the warp then does not intersect (a ray across a thin slab
  *   meets its 2 wide faces, and is outside the slivers of its 4 sides);
  * - a culling structure: the image is cut into square tiles and each box is
- *   listed in the tiles its screen-space bounding rectangle overlaps (the
+ *   listed in the tiles of its screen-space bounding rectangle (the
  *   projection of its bounds' 8 corners, one pixel wider on every side; a
  *   box with a corner at or behind the eye plane has no bounded projection
- *   and goes into every tile). A ray then tries only its tile's boxes. A ray
- *   that meets a box's bounds passes through the bounds' projection, so
- *   every box that the ray's bounds test would let through is in its tile:
- *   the intervals, and so the pixels, are exactly those of CollectSegments
- *   over every box;
+ *   and goes into every tile) that its projected hull may reach. A ray then
+ *   tries only its tile's boxes. A ray that meets a box passes through its
+ *   projected hull and the bounds' projection, so every box that the ray's
+ *   hull and bounds tests would let through is in its tile: the intervals,
+ *   and so the pixels, are exactly those of CollectSegments over every box;
  * - the bounds of each box widened by 1e-6 of their diagonal, which order
  *   the boxes along a ray: an interval of a box starts on its faces or at
  *   the eye, inside the widened bounds, so never before the ray enters them.
@@ -436,7 +458,7 @@ struct FrameCage
   int TilesX = 1;
   int TilesY = 1;
   std::vector<int> TileStart; ///< tile i lists TileBoxes[TileStart[i], TileStart[i + 1])
-  std::vector<int> TileBoxes; ///< box indices, ascending within a tile
+  std::vector<int> TileBoxes; ///< box indices, nearest first within a tile (BinBoxes)
 
   /// Tile side (pixels) that the renderer uses: small enough that a tile of
   /// the fish's 100-slab cage at 512x512 lists a few boxes (about 3.5 per
@@ -482,22 +504,7 @@ struct FrameCage
     this->TileSize = tileSize > 0 ? tileSize : std::max(width, height);
     this->TilesX = (width + this->TileSize - 1) / this->TileSize;
     this->TilesY = (height + this->TileSize - 1) / this->TileSize;
-    // Tile ranges x0, y0, x1, y1 (inclusive); without culling, the one tile.
-    std::vector<glm::ivec4> rects(boxes.size(), glm::ivec4(0));
-    for (std::size_t b = 0; b < boxes.size() && tileSize > 0; ++b)
-    {
-      rects[b] = this->TileRange(boxes[b].Bounds, width, height);
-    }
-    // Two passes (count, then fill) list each tile's boxes in ascending order.
-    this->TileStart.assign(static_cast<std::size_t>(this->TilesX) * this->TilesY + 1, 0);
-    this->ForEachBinning(rects, [this](int tile, int) { ++this->TileStart[tile + 1]; });
-    for (std::size_t i = 1; i < this->TileStart.size(); ++i)
-    {
-      this->TileStart[i] += this->TileStart[i - 1];
-    }
-    this->TileBoxes.resize(this->TileStart.back());
-    std::vector<int> next(this->TileStart.begin(), this->TileStart.end() - 1);
-    this->ForEachBinning(rects, [&](int tile, int b) { this->TileBoxes[next[tile]++] = b; });
+    this->BinBoxes(boxes, width, height, tileSize > 0);
   }
 
   /// The direction of the ray through pixel (x, y) (OpenCV pixel coordinates).
@@ -527,14 +534,29 @@ struct FrameCage
     scratch.NextEntry = 0;
     scratch.Pixel = glm::dvec2(x, y);
     const int tile = this->TileOf(x, y);
+    if (this->TileStart[tile] == this->TileStart[tile + 1])
+    {
+      return 0; // (most rays of a frame)
+    }
+    if (scratch.Skipped.size() != this->Boxes->size() || ++scratch.Ray == 0)
+    {
+      scratch.Skipped.assign(this->Boxes->size(), 0);
+      scratch.Held.assign(this->Boxes->size(), 0);
+      scratch.Ray = 1;
+    }
     for (int i = this->TileStart[tile]; i < this->TileStart[tile + 1]; ++i)
     {
       const int b = this->TileBoxes[i];
+      if (!this->Hulls[b].MayHold(x, y))
+      {
+        continue;
+      }
+      scratch.Held[b] = scratch.Ray;
       // The widened bounds hold the bounds: a ray that meets only them (by
       // less than their margin) crosses the box for no interval the warp keeps.
       double entry = 0.0;
       double oriented = 0.0;
-      if (this->Hulls[b].MayHold(x, y) && RayEntersBounds(this->Eye, d, this->Widened[b], entry) &&
+      if (RayEntersBounds(this->Eye, d, this->Widened[b], entry) &&
         this->Oriented[b].Entry(d, oriented))
       {
         scratch.Entries.emplace_back(std::max(entry, oriented), b);
@@ -542,16 +564,11 @@ struct FrameCage
     }
     if (scratch.Entries.empty())
     {
-      return 0; // (most rays of a frame)
+      return 0;
     }
     std::sort(scratch.Entries.begin(), scratch.Entries.end());
     scratch.RunSkipped = nullptr;
     scratch.Landing = -1;
-    if (scratch.Skipped.size() != this->Boxes->size() || ++scratch.Ray == 0)
-    {
-      scratch.Skipped.assign(this->Boxes->size(), 0);
-      scratch.Ray = 1;
-    }
     // NextSegment's intervals never move: ShadeSegments holds one back.
     scratch.Segments.reserve(scratch.Entries.size() * MaxWarpedSegments);
     return scratch.Entries.size();
@@ -640,8 +657,7 @@ struct FrameCage
       }
       b = link / 6;
       face = (link % 6) ^ 1; // the opposite face of the one shared
-      if (!boxes[b].Moved || boxes[b].Label != label ||
-        !this->Hulls[b].MayHold(scratch.Pixel.x, scratch.Pixel.y))
+      if (!boxes[b].Moved || boxes[b].Label != label || scratch.Held[b] != scratch.Ray)
       {
         break;
       }
@@ -775,20 +791,62 @@ private:
       static_cast<int>(y1) / this->TileSize };
   }
 
-  /// Calls bin(tile, box) for every box and every tile of its range.
-  template<typename Bin>
-  void ForEachBinning(const std::vector<glm::ivec4>& rects, Bin&& bin) const
+  /**
+   * Lists each box in the tiles of its bounds' TileRange that its projected
+   * hull may reach (ScreenHull::MayHoldAny over the tile's pixels): a thin
+   * slab turned across the view is listed along its sliver, not over its
+   * bounds' whole rectangle. Each tile lists its boxes nearest first (by the
+   * depth of their bounds' centres), so that the entries of a ray, where it
+   * enters each box's bounds, come nearly sorted. Without culling, every box
+   * goes into the one tile.
+   */
+  void BinBoxes(const std::vector<RenderBox>& boxes, int width, int height, bool culling)
   {
-    for (std::size_t b = 0; b < rects.size(); ++b)
+    const glm::dmat3 toPixel = glm::inverse(this->PixelToDirection);
+    std::vector<std::pair<double, int>> nearest(boxes.size());
+    for (std::size_t b = 0; b < boxes.size(); ++b)
     {
-      const glm::ivec4& r = rects[b];
+      const glm::dvec3 centre = 0.5 * (boxes[b].Bounds.Min + boxes[b].Bounds.Max);
+      nearest[b] = { (toPixel * (centre - this->Eye)).z, static_cast<int>(b) };
+    }
+    std::sort(nearest.begin(), nearest.end());
+    // (tile, box) pairs, nearest box first, then counted into place by tile.
+    std::vector<std::pair<int, int>> binned;
+    for (const auto& [depth, b] : nearest)
+    {
+      // Tile ranges x0, y0, x1, y1 (inclusive); without culling, the one tile.
+      const glm::ivec4 r =
+        culling ? this->TileRange(boxes[b].Bounds, width, height) : glm::ivec4(0);
       for (int ty = r.y; ty <= r.w; ++ty)
       {
         for (int tx = r.x; tx <= r.z; ++tx)
         {
-          bin(ty * this->TilesX + tx, static_cast<int>(b));
+          const int x0 = tx * this->TileSize, y0 = ty * this->TileSize;
+          if (!culling ||
+            this->Hulls[b].MayHoldAny(x0,
+              y0,
+              std::min(x0 + this->TileSize, width) - 1,
+              std::min(y0 + this->TileSize, height) - 1))
+          {
+            binned.emplace_back(ty * this->TilesX + tx, b);
+          }
         }
       }
+    }
+    this->TileStart.assign(static_cast<std::size_t>(this->TilesX) * this->TilesY + 1, 0);
+    for (const auto& [tile, b] : binned)
+    {
+      ++this->TileStart[tile + 1];
+    }
+    for (std::size_t i = 1; i < this->TileStart.size(); ++i)
+    {
+      this->TileStart[i] += this->TileStart[i - 1];
+    }
+    this->TileBoxes.resize(binned.size());
+    std::vector<int> next(this->TileStart.begin(), this->TileStart.end() - 1);
+    for (const auto& [tile, b] : binned)
+    {
+      this->TileBoxes[next[tile]++] = b;
     }
   }
 };
