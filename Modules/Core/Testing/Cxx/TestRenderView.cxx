@@ -420,13 +420,16 @@ void TiltedSlabs()
   const glm::dvec3 eye(0.5, 0.5, -3.0);
   lfd::PlaceEye(boxes, eye);
   const glm::dmat3 pixelToDirection = PixelToDirection(16.0, 64.0);
-  // `unoriented` enters every box where its axis-aligned bounds begin.
+  // `unoriented` enters every box where its axis-aligned bounds begin (the
+  // world's axes, the same margin).
   lfd::FrameCage oriented, unoriented;
   oriented.Build(boxes, eye, pixelToDirection, 32, 32, 8);
   unoriented.Build(boxes, eye, pixelToDirection, 32, 32, 8);
-  for (lfd::OrientedBounds& bounds : unoriented.Oriented)
+  for (std::size_t b = 0; b < boxes.size(); ++b)
   {
-    bounds.Bounds = { glm::dvec3(-HUGE_VAL), glm::dvec3(HUGE_VAL) };
+    const lfd::AxisBounds& bounds = boxes[b].Bounds;
+    const glm::dvec3 margin(1e-6 * glm::distance(bounds.Min, bounds.Max));
+    unoriented.Oriented[b] = { glm::dmat3(1.0), eye, { bounds.Min - margin, bounds.Max + margin } };
   }
   lfd::RenderViewSettings settings = SettingsFor(boxes);
   settings.FocalBeforeLookup = true;
