@@ -400,7 +400,7 @@ struct FrameRayScratch
   unsigned Ray = 0;                       ///< this ray's number
   const BoxSegment* RunSkipped = nullptr; ///< the interval whose run LeaveOut last left out
   int Landing = -1;       ///< the box where the run left out ahead of an interval goes on
-  std::vector<int> Chain; ///< FrameCage::LeaveOut's chain of boxes
+  std::vector<int> Chain; ///< FrameCage::FollowRun's chain of boxes
 };
 
 /**
@@ -628,19 +628,14 @@ struct FrameCage
   }
 
   /**
-   * Leaves out of the ray's walk (RenderViewSettings::FocalBeforeLookup; see
-   * ShadeSegments) up to `count` boxes that go on with the run of `from`:
-   * from the face `from` leaves by, the chain of face neighbours straight
-   * through (each entered by one face, left by the opposite one, as through
-   * a stack of slabs) while they are moved boxes of its part whose projected
-   * hull holds the pixel. With `keepLast`, the chain's last box is kept even
-   * within `count` (the run's last piece is looked up when the focal point
-   * lies beyond it). Returns the chain's box after those left out (-1: none).
+   * The boxes that go on with the run of `from` (RenderViewSettings::
+   * FocalBeforeLookup; see ShadeSegments), at most `limit`, into
+   * scratch.Chain: from the face `from` leaves by, the chain of face
+   * neighbours straight through (each entered by one face, left by the
+   * opposite one, as through a stack of slabs) while they are moved boxes
+   * of its part whose projected hull holds the pixel.
    */
-  int LeaveOut(const BoxSegment& from,
-    std::size_t count,
-    bool keepLast,
-    FrameRayScratch& scratch) const
+  void FollowRun(const BoxSegment& from, std::size_t limit, FrameRayScratch& scratch) const
   {
     const std::vector<RenderBox>& boxes = *this->Boxes;
     const int label = boxes[from.Box].Label;
@@ -648,7 +643,7 @@ struct FrameCage
     chain.clear();
     int b = from.Box;
     int face = from.Segment.FaceExit;
-    while (face >= 0 && chain.size() <= std::min(count, boxes.size()))
+    while (face >= 0 && chain.size() < std::min(limit, boxes.size()))
     {
       const int link = this->Neighbors[b][face];
       if (link < 0)
@@ -663,13 +658,21 @@ struct FrameCage
       }
       chain.push_back(b);
     }
-    const std::size_t left =
-      std::min(count, keepLast && !chain.empty() ? chain.size() - 1 : chain.size());
-    for (std::size_t i = 0; i < left; ++i)
+  }
+
+  /**
+   * Leaves the first `count` boxes of scratch.Chain (FollowRun) out of the
+   * ray's walk: they are not warped. Returns the chain's box after them
+   * (-1: none).
+   */
+  int LeaveOut(std::size_t count, FrameRayScratch& scratch) const
+  {
+    const std::vector<int>& chain = scratch.Chain;
+    for (std::size_t i = 0; i < count; ++i)
     {
       scratch.Skipped[chain[i]] = scratch.Ray;
     }
-    return left < chain.size() ? chain[left] : -1;
+    return count < chain.size() ? chain[count] : -1;
   }
 
 private:
@@ -1141,6 +1144,20 @@ inline std::size_t PiecesAhead(double focal)
 }
 
 /**
+ * How many of the `following` pieces that go on with the run of an interval
+ * whose focal point lies `focal` rest segments along its warped ray the
+ * walk jumps over: PiecesAhead, but never the run's last (it is looked up
+ * when the focal point lies beyond it). The one rule of both walks: the
+ * frame cage's, whose pieces follow along face neighbours
+ * (FrameCage::FollowRun), and RenderView's over every interval, whose
+ * pieces follow in the sorted intervals (GoesOn).
+ */
+inline std::size_t PiecesLeftOut(double focal, std::size_t following)
+{
+  return std::min(PiecesAhead(focal), following - (following > 0));
+}
+
+/**
  * One ray's walk through its intervals, front to back (ShadeSegments):
  * composited by label coverage (RenderViewSettings::AntiAliasing) into
  * Composite; the first interval whose warped ray shows its box's label
@@ -1535,7 +1552,6 @@ ViewSample RenderView(const glm::dvec3& o,
     {
       if (run.Deferred && run.Deferred != jumped && detail::PiecesAhead(run.Focal) > 0)
       {
-        // As FrameCage::LeaveOut, over the intervals that go on with the run.
         jumped = run.Deferred;
         std::size_t last = k; // one past the run's pieces that follow
         while (last < segments.size() &&
@@ -1543,7 +1559,7 @@ ViewSample RenderView(const glm::dvec3& o,
         {
           ++last;
         }
-        const std::size_t left = std::min(detail::PiecesAhead(run.Focal), last - k - (last > k));
+        const std::size_t left = detail::PiecesLeftOut(run.Focal, last - k);
         k += left;
         segments[std::min(k, segments.size() - 1)].Joins = left > 0;
       }
@@ -1583,14 +1599,17 @@ ViewSample RenderView(const FrameCage& cage,
       if (run.Looked && run.Looked != scratch.RunSkipped)
       {
         // The run was looked up: its pieces behind are not warped either.
-        cage.LeaveOut(*run.Looked, cage.Boxes->size(), false, scratch);
+        cage.FollowRun(*run.Looked, cage.Boxes->size(), scratch);
+        cage.LeaveOut(scratch.Chain.size(), scratch);
         scratch.RunSkipped = run.Looked;
       }
       else if (run.Deferred && run.Deferred != scratch.RunSkipped &&
         detail::PiecesAhead(run.Focal) > 0)
       {
+        // (One piece more than the jump: the run's last is never left out.)
+        cage.FollowRun(*run.Deferred, detail::PiecesAhead(run.Focal) + 1, scratch);
         scratch.Landing =
-          cage.LeaveOut(*run.Deferred, detail::PiecesAhead(run.Focal), true, scratch);
+          cage.LeaveOut(detail::PiecesLeftOut(run.Focal, scratch.Chain.size()), scratch);
         scratch.RunSkipped = run.Deferred;
       }
       // A box that did not move shows the view ray's own label (ShadeSegments):

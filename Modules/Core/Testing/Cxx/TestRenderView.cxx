@@ -534,7 +534,7 @@ void RunOfSlabs()
  * z, all shifted by 0.1 along x, over a light field without parts (every
  * lookup sees background). The focal point (z = 0) is in the third: the two
  * in front wait for it, the three behind go on with the run and are neither
- * looked up nor, through a FrameCage, warped (FrameCage::LeaveOut: face
+ * looked up nor, through a FrameCage, warped (FrameCage::FollowRun, LeaveOut: face
  * neighbours straight through). The one other lookup is the view ray's.
  */
 void RunLookedUpOnce()
