@@ -91,7 +91,7 @@ inside.SetViewAngle(60.0)
 # (Fewer since a run of slabs is looked up once, from its focal piece: the
 # pieces behind it no longer add the part's coverage again at its silhouette.)
 # Pixels that differ: a run's jump ahead of its focal piece follows face
-# neighbours with the acceleration (lfd::FrameCage::LeaveOut), the intervals
+# neighbours with the acceleration (lfd::FrameCage::FollowRun), the intervals
 # themselves without it; they part where a ray leaves the slabs by a side
 # inside the pieces jumped over (5 pixels of the bent cage from outside).
 for name, scene, camera, expected_parts, differ in (
