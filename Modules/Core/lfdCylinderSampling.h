@@ -116,6 +116,39 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
 }
 
 /**
+ * The bilinear footprint of the continuous position `uv` (pixel centres at
+ * integers) in a width x height image: its top-left pixel (x0, y0), which
+ * may lie outside the image by one, and the weights of the pixels (x0, y0),
+ * (x0 + 1, y0), (x0, y0 + 1), (x0 + 1, y0 + 1). False when no pixel of the
+ * footprint is inside the image.
+ */
+inline bool BilinearFootprint(const glm::dvec2& uv,
+  int width,
+  int height,
+  int& x0,
+  int& y0,
+  double weights[4])
+{
+  // floor(u) >= -1 and floor(u) < width hold exactly when u does (width is
+  // an integer); inside that range the floor is the truncation, one lower
+  // for a negative fraction: without SSE4.1 (the baseline x86-64 build)
+  // std::floor is a software sequence that cost a tenth of a lookup.
+  if (!(uv.x >= -1.0 && uv.y >= -1.0 && uv.x < width && uv.y < height))
+  {
+    return false;
+  }
+  x0 = static_cast<int>(uv.x) - (uv.x < static_cast<int>(uv.x) ? 1 : 0);
+  y0 = static_cast<int>(uv.y) - (uv.y < static_cast<int>(uv.y) ? 1 : 0);
+  const double ax = uv.x - x0;
+  const double ay = uv.y - y0;
+  weights[0] = (1.0 - ax) * (1.0 - ay);
+  weights[1] = ax * (1.0 - ay);
+  weights[2] = (1.0 - ax) * ay;
+  weights[3] = ax * ay;
+  return true;
+}
+
+/**
  * Calls add(px, py, weight) for the (up to) 4 pixels of a width x height
  * image around the continuous position `uv` (pixel centres at integers),
  * with their bilinear weights; pixels outside the image and zero weights are
@@ -124,28 +157,20 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
 template<typename Add>
 inline void ForEachBilinearPixel(const glm::dvec2& uv, int width, int height, Add&& add)
 {
-  // floor(u) >= -1 and floor(u) < width hold exactly when u does (width is
-  // an integer); inside that range the floor is the truncation, one lower
-  // for a negative fraction: without SSE4.1 (the baseline x86-64 build)
-  // std::floor is a software sequence that cost a tenth of a lookup.
-  if (!(uv.x >= -1.0 && uv.y >= -1.0 && uv.x < width && uv.y < height))
+  int x0, y0;
+  double weights[4];
+  if (!BilinearFootprint(uv, width, height, x0, y0, weights))
   {
     return;
   }
-  const int x0 = static_cast<int>(uv.x) - (uv.x < static_cast<int>(uv.x) ? 1 : 0);
-  const int y0 = static_cast<int>(uv.y) - (uv.y < static_cast<int>(uv.y) ? 1 : 0);
-  const double ax = uv.x - x0;
-  const double ay = uv.y - y0;
   for (int corner = 0; corner < 4; ++corner)
   {
     const int px = x0 + (corner & 1);
     const int py = y0 + (corner >> 1);
-    const double bw = ((corner & 1) ? ax : 1.0 - ax) * ((corner >> 1) ? ay : 1.0 - ay);
-    if (px < 0 || py < 0 || px >= width || py >= height || bw <= 0.0)
+    if (px >= 0 && py >= 0 && px < width && py < height && weights[corner] > 0.0)
     {
-      continue;
+      add(px, py, weights[corner]);
     }
-    add(px, py, bw);
   }
 }
 
@@ -248,8 +273,9 @@ inline int BracketAzimuth(const RingRow& row, double azimuth, double rowWeight, 
     count -= half;
   }
   const std::size_t upper = (first - row.Azimuth.data()) + (*first <= azimuth ? 1 : 0);
-  const std::size_t hi = upper % n;
-  const std::size_t lo = (upper + n - 1) % n;
+  // upper is in [0, n]: the neighbours wrap without a division.
+  const std::size_t hi = upper == n ? 0 : upper;
+  const std::size_t lo = upper == 0 ? n - 1 : upper - 1;
   double span = row.Azimuth[hi] - row.Azimuth[lo];
   double offset = azimuth - row.Azimuth[lo];
   if (span <= 0.0)
@@ -452,6 +478,8 @@ struct LabelHull
 
   glm::dvec3 Low{ 0.0 };      ///< grid corner in the rig frame
   glm::dvec3 CellSize{ 1.0 }; ///< per axis
+  /// 1 / CellSize: Cell() multiplies (a division per axis cost every looked-up ray).
+  glm::dvec3 InverseCellSize{ 1.0 };
   /// Per sector, Cells^3 flags (1: a label cone touches the voxel); empty: no grid.
   std::vector<std::uint8_t> Marks;
   /// Cells^3 flags, the union of the sectors' (Unite()): a focal point in an
@@ -495,6 +523,7 @@ struct LabelHull
     this->Low = glm::dvec3(-reach, -reach, layout.Rows.front().Height - reach);
     const glm::dvec3 high(reach, reach, layout.Rows.back().Height + reach);
     this->CellSize = (high - this->Low) / double(Cells);
+    this->InverseCellSize = 1.0 / this->CellSize;
     this->Marks.assign(static_cast<std::size_t>(Sectors) * Cells * Cells * Cells, 0);
     return true;
   }
@@ -573,8 +602,8 @@ struct LabelHull
     const glm::dvec3 q =
       (glm::dvec3(
          glm::dot(v, layout.RefX), glm::dot(v, layout.RefY), glm::dot(v, layout.Cyl.Axis)) -
-        this->Low) /
-      this->CellSize;
+        this->Low) *
+      this->InverseCellSize;
     if (!(q.x >= 0.0 && q.y >= 0.0 && q.z >= 0.0 && q.x < Cells && q.y < Cells && q.z < Cells))
     {
       return -1;
@@ -1280,18 +1309,38 @@ struct LightFieldSampler
       // test of Source per texel (which `out` might alias, for the compiler).
       const ViewStack<std::uint8_t> radiance = this->Radiance;
       const std::uint8_t* labels = this->Labels.Data;
+      auto add = [&](std::size_t index, double bw)
+      {
+        const std::uint8_t* rgb = radiance.Data + 3 * index;
+        RaySample& sample = out.Samples[out.Count++];
+        sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+        sample.Weight = weight * bw;
+        sample.Label = labels ? labels[index] : 0;
+      };
+      int x0, y0;
+      double weights[4];
+      if (BilinearFootprint(uv, radiance.Width, radiance.Height, x0, y0, weights) && x0 >= 0 &&
+        y0 >= 0 && x0 + 1 < radiance.Width && y0 + 1 < radiance.Height)
+      {
+        // Most footprints lie inside the image: their 4 texels are addressed
+        // from the first one's index (rows in VTK order: y0 + 1 is the row
+        // before y0's), without ForEachBilinearPixel's tests per corner.
+        const std::size_t first = radiance.Index(view, x0, y0);
+        const std::size_t below = first - radiance.Width;
+        const std::size_t indices[4] = { first, first + 1, below, below + 1 };
+        for (int corner = 0; corner < 4; ++corner)
+        {
+          if (weights[corner] > 0.0)
+          {
+            add(indices[corner], weights[corner]);
+          }
+        }
+        return;
+      }
       ForEachBilinearPixel(uv,
         radiance.Width,
         radiance.Height,
-        [&](int px, int py, double bw)
-        {
-          const std::size_t index = radiance.Index(view, px, py);
-          const std::uint8_t* rgb = radiance.Data + 3 * index;
-          RaySample& sample = out.Samples[out.Count++];
-          sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
-          sample.Weight = weight * bw;
-          sample.Label = labels ? labels[index] : 0;
-        });
+        [&](int px, int py, double bw) { add(radiance.Index(view, px, py), bw); });
       return;
     }
     ForEachBilinearPixel(uv,
