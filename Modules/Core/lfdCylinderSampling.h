@@ -1291,9 +1291,15 @@ struct LightFieldSampler
   }
 
   /**
-   * Appends the (up to) 4 bilinear samples of `view` around the projection
-   * of `x`, weighted `weight` x the bilinear weight; nothing when `x` projects
-   * outside the view.
+   * Appends the bilinear samples of `view` around the projection of `x`,
+   * weighted `weight` x the bilinear weight; nothing when `x` projects
+   * outside the view. The 4 texels of a footprint inside the view that
+   * carry one label (most do) are one sample: their bilinear blend, weighing
+   * `weight` (the bilinear weights sum to 1), as the two-plane sampler
+   * merges its samples per label. A label's vote, blend and coverage are
+   * those of the 4 samples up to rounding, and a ray has about 4 samples
+   * instead of 16 to store, vote on and blend. The other footprints give a
+   * sample per texel inside the view.
    */
   void AddBilinear(int view, double weight, const glm::dvec3& x, RaySamples& out) const
   {
@@ -1303,49 +1309,40 @@ struct LightFieldSampler
     {
       return;
     }
-    if (this->Radiance.Data && (this->Labels.Data || !this->Labels.Present()))
+    const int width = this->Radiance.Width;
+    const int height = this->Radiance.Height;
+    int x0, y0;
+    double weights[4];
+    if (!BilinearFootprint(uv, width, height, x0, y0, weights))
     {
-      // In memory: the texels' addresses from locals, without Pixel()'s
-      // test of Source per texel (which `out` might alias, for the compiler).
-      const ViewStack<std::uint8_t> radiance = this->Radiance;
-      const std::uint8_t* labels = this->Labels.Data;
-      auto add = [&](std::size_t index, double bw)
+      return;
+    }
+    if (x0 >= 0 && y0 >= 0 && x0 + 1 < width && y0 + 1 < height)
+    {
+      glm::dvec3 colors[4];
+      int labels[4];
+      this->Footprint(view, x0, y0, colors, labels);
+      if (labels[0] == labels[1] && labels[0] == labels[2] && labels[0] == labels[3])
       {
-        const std::uint8_t* rgb = radiance.Data + 3 * index;
         RaySample& sample = out.Samples[out.Count++];
-        sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
-        sample.Weight = weight * bw;
-        sample.Label = labels ? labels[index] : 0;
-      };
-      int x0, y0;
-      double weights[4];
-      if (BilinearFootprint(uv, radiance.Width, radiance.Height, x0, y0, weights) && x0 >= 0 &&
-        y0 >= 0 && x0 + 1 < radiance.Width && y0 + 1 < radiance.Height)
-      {
-        // Most footprints lie inside the image: their 4 texels are addressed
-        // from the first one's index (rows in VTK order: y0 + 1 is the row
-        // before y0's), without ForEachBilinearPixel's tests per corner.
-        const std::size_t first = radiance.Index(view, x0, y0);
-        const std::size_t below = first - radiance.Width;
-        const std::size_t indices[4] = { first, first + 1, below, below + 1 };
-        for (int corner = 0; corner < 4; ++corner)
-        {
-          if (weights[corner] > 0.0)
-          {
-            add(indices[corner], weights[corner]);
-          }
-        }
+        sample.Color = weights[0] * colors[0] + weights[1] * colors[1] + weights[2] * colors[2] +
+          weights[3] * colors[3];
+        sample.Weight = weight;
+        sample.Label = labels[0];
         return;
       }
-      ForEachBilinearPixel(uv,
-        radiance.Width,
-        radiance.Height,
-        [&](int px, int py, double bw) { add(radiance.Index(view, px, py), bw); });
+      for (int corner = 0; corner < 4; ++corner)
+      {
+        if (weights[corner] > 0.0)
+        {
+          out.Samples[out.Count++] = { colors[corner], weight * weights[corner], labels[corner] };
+        }
+      }
       return;
     }
     ForEachBilinearPixel(uv,
-      this->Radiance.Width,
-      this->Radiance.Height,
+      width,
+      height,
       [&](int px, int py, double bw)
       {
         RaySample& sample = out.Samples[out.Count++];
@@ -1354,6 +1351,39 @@ struct LightFieldSampler
         sample.Weight = weight * bw;
         sample.Label = this->Labels.Present() ? *this->Labels.Pixel(view, px, py) : 0;
       });
+  }
+
+  /**
+   * The colours and labels (0 without a Label pass) of the texels (x0, y0),
+   * (x0 + 1, y0), (x0, y0 + 1) and (x0 + 1, y0 + 1) of `view`, all inside
+   * it: in memory or out of core, the same values.
+   */
+  void Footprint(int view, int x0, int y0, glm::dvec3 colors[4], int labels[4]) const
+  {
+    if (this->Radiance.Data && (this->Labels.Data || !this->Labels.Present()))
+    {
+      // In memory: the 4 texels from the first one's index (rows in VTK
+      // order: y0 + 1 is the row before y0's), without Pixel()'s test of
+      // Source per texel.
+      const std::size_t first = this->Radiance.Index(view, x0, y0);
+      const std::size_t below = first - this->Radiance.Width;
+      const std::size_t indices[4] = { first, first + 1, below, below + 1 };
+      for (int corner = 0; corner < 4; ++corner)
+      {
+        const std::uint8_t* rgb = this->Radiance.Data + 3 * indices[corner];
+        colors[corner] = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+        labels[corner] = this->Labels.Data ? this->Labels.Data[indices[corner]] : 0;
+      }
+      return;
+    }
+    for (int corner = 0; corner < 4; ++corner)
+    {
+      const int px = x0 + (corner & 1);
+      const int py = y0 + (corner >> 1);
+      const std::uint8_t* rgb = this->Radiance.Pixel(view, px, py);
+      colors[corner] = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+      labels[corner] = this->Labels.Present() ? *this->Labels.Pixel(view, px, py) : 0;
+    }
   }
 
   /**
