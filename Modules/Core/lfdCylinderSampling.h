@@ -118,15 +118,16 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
 /**
  * The bilinear footprint of the continuous position `uv` (pixel centres at
  * integers) in a width x height image: its top-left pixel (x0, y0), which
- * may lie outside the image by one, and the weights of the pixels (x0, y0),
- * (x0 + 1, y0), (x0, y0 + 1), (x0 + 1, y0 + 1). False when no pixel of the
- * footprint is inside the image.
+ * may lie outside the image by one, the fraction uv - (x0, y0) and the
+ * weights of the pixels (x0, y0), (x0 + 1, y0), (x0, y0 + 1), (x0 + 1,
+ * y0 + 1). False when no pixel of the footprint is inside the image.
  */
 inline bool BilinearFootprint(const glm::dvec2& uv,
   int width,
   int height,
   int& x0,
   int& y0,
+  glm::dvec2& fraction,
   double weights[4])
 {
   // floor(u) >= -1 and floor(u) < width hold exactly when u does (width is
@@ -141,6 +142,7 @@ inline bool BilinearFootprint(const glm::dvec2& uv,
   y0 = static_cast<int>(uv.y) - (uv.y < static_cast<int>(uv.y) ? 1 : 0);
   const double ax = uv.x - x0;
   const double ay = uv.y - y0;
+  fraction = glm::dvec2(ax, ay);
   weights[0] = (1.0 - ax) * (1.0 - ay);
   weights[1] = ax * (1.0 - ay);
   weights[2] = (1.0 - ax) * ay;
@@ -158,8 +160,9 @@ template<typename Add>
 inline void ForEachBilinearPixel(const glm::dvec2& uv, int width, int height, Add&& add)
 {
   int x0, y0;
+  glm::dvec2 fraction;
   double weights[4];
-  if (!BilinearFootprint(uv, width, height, x0, y0, weights))
+  if (!BilinearFootprint(uv, width, height, x0, y0, fraction, weights))
   {
     return;
   }
@@ -1294,8 +1297,8 @@ struct LightFieldSampler
    * Appends the bilinear samples of `view` around the projection of `x`,
    * weighted `weight` x the bilinear weight; nothing when `x` projects
    * outside the view. The 4 texels of a footprint inside the view that
-   * carry one label (most do) are one sample: their bilinear blend, weighing
-   * `weight` (the bilinear weights sum to 1), as the two-plane sampler
+   * carry one label (most do) are one sample: their bilinear interpolation,
+   * weighing `weight` (the bilinear weights sum to 1), as the two-plane sampler
    * merges its samples per label. A label's vote, blend and coverage are
    * those of the 4 samples up to rounding, and a ray has about 4 samples
    * instead of 16 to store, vote on and blend. The other footprints give a
@@ -1312,8 +1315,9 @@ struct LightFieldSampler
     const int width = this->Radiance.Width;
     const int height = this->Radiance.Height;
     int x0, y0;
+    glm::dvec2 a;
     double weights[4];
-    if (!BilinearFootprint(uv, width, height, x0, y0, weights))
+    if (!BilinearFootprint(uv, width, height, x0, y0, a, weights))
     {
       return;
     }
@@ -1324,9 +1328,11 @@ struct LightFieldSampler
       this->Footprint(view, x0, y0, colors, labels);
       if (labels[0] == labels[1] && labels[0] == labels[2] && labels[0] == labels[3])
       {
+        // In lerp form, which keeps a flat colour exact.
+        const glm::dvec3 top = colors[0] + a.x * (colors[1] - colors[0]);
+        const glm::dvec3 bottom = colors[2] + a.x * (colors[3] - colors[2]);
         RaySample& sample = out.Samples[out.Count++];
-        sample.Color = weights[0] * colors[0] + weights[1] * colors[1] + weights[2] * colors[2] +
-          weights[3] * colors[3];
+        sample.Color = top + a.y * (bottom - top);
         sample.Weight = weight;
         sample.Label = labels[0];
         return;
