@@ -116,6 +116,41 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
 }
 
 /**
+ * The bilinear footprint of the continuous position `uv` (pixel centres at
+ * integers) in a width x height image: its top-left pixel (x0, y0), which
+ * may lie outside the image by one, the fraction uv - (x0, y0) and the
+ * weights of the pixels (x0, y0), (x0 + 1, y0), (x0, y0 + 1), (x0 + 1,
+ * y0 + 1). False when no pixel of the footprint is inside the image.
+ */
+inline bool BilinearFootprint(const glm::dvec2& uv,
+  int width,
+  int height,
+  int& x0,
+  int& y0,
+  glm::dvec2& fraction,
+  double weights[4])
+{
+  // floor(u) >= -1 and floor(u) < width hold exactly when u does (width is
+  // an integer); inside that range the floor is the truncation, one lower
+  // for a negative fraction: without SSE4.1 (the baseline x86-64 build)
+  // std::floor is a software sequence that cost a tenth of a lookup.
+  if (!(uv.x >= -1.0 && uv.y >= -1.0 && uv.x < width && uv.y < height))
+  {
+    return false;
+  }
+  x0 = static_cast<int>(uv.x) - (uv.x < static_cast<int>(uv.x) ? 1 : 0);
+  y0 = static_cast<int>(uv.y) - (uv.y < static_cast<int>(uv.y) ? 1 : 0);
+  const double ax = uv.x - x0;
+  const double ay = uv.y - y0;
+  fraction = glm::dvec2(ax, ay);
+  weights[0] = (1.0 - ax) * (1.0 - ay);
+  weights[1] = ax * (1.0 - ay);
+  weights[2] = (1.0 - ax) * ay;
+  weights[3] = ax * ay;
+  return true;
+}
+
+/**
  * Calls add(px, py, weight) for the (up to) 4 pixels of a width x height
  * image around the continuous position `uv` (pixel centres at integers),
  * with their bilinear weights; pixels outside the image and zero weights are
@@ -124,28 +159,21 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
 template<typename Add>
 inline void ForEachBilinearPixel(const glm::dvec2& uv, int width, int height, Add&& add)
 {
-  // floor(u) >= -1 and floor(u) < width hold exactly when u does (width is
-  // an integer); inside that range the floor is the truncation, one lower
-  // for a negative fraction: without SSE4.1 (the baseline x86-64 build)
-  // std::floor is a software sequence that cost a tenth of a lookup.
-  if (!(uv.x >= -1.0 && uv.y >= -1.0 && uv.x < width && uv.y < height))
+  int x0, y0;
+  glm::dvec2 fraction;
+  double weights[4];
+  if (!BilinearFootprint(uv, width, height, x0, y0, fraction, weights))
   {
     return;
   }
-  const int x0 = static_cast<int>(uv.x) - (uv.x < static_cast<int>(uv.x) ? 1 : 0);
-  const int y0 = static_cast<int>(uv.y) - (uv.y < static_cast<int>(uv.y) ? 1 : 0);
-  const double ax = uv.x - x0;
-  const double ay = uv.y - y0;
   for (int corner = 0; corner < 4; ++corner)
   {
     const int px = x0 + (corner & 1);
     const int py = y0 + (corner >> 1);
-    const double bw = ((corner & 1) ? ax : 1.0 - ax) * ((corner >> 1) ? ay : 1.0 - ay);
-    if (px < 0 || py < 0 || px >= width || py >= height || bw <= 0.0)
+    if (px >= 0 && py >= 0 && px < width && py < height && weights[corner] > 0.0)
     {
-      continue;
+      add(px, py, weights[corner]);
     }
-    add(px, py, bw);
   }
 }
 
@@ -248,8 +276,9 @@ inline int BracketAzimuth(const RingRow& row, double azimuth, double rowWeight, 
     count -= half;
   }
   const std::size_t upper = (first - row.Azimuth.data()) + (*first <= azimuth ? 1 : 0);
-  const std::size_t hi = upper % n;
-  const std::size_t lo = (upper + n - 1) % n;
+  // upper is in [0, n]: the neighbours wrap without a division.
+  const std::size_t hi = upper == n ? 0 : upper;
+  const std::size_t lo = upper == 0 ? n - 1 : upper - 1;
   double span = row.Azimuth[hi] - row.Azimuth[lo];
   double offset = azimuth - row.Azimuth[lo];
   if (span <= 0.0)
@@ -452,6 +481,8 @@ struct LabelHull
 
   glm::dvec3 Low{ 0.0 };      ///< grid corner in the rig frame
   glm::dvec3 CellSize{ 1.0 }; ///< per axis
+  /// 1 / CellSize: Cell() multiplies (a division per axis cost every looked-up ray).
+  glm::dvec3 InverseCellSize{ 1.0 };
   /// Per sector, Cells^3 flags (1: a label cone touches the voxel); empty: no grid.
   std::vector<std::uint8_t> Marks;
   /// Cells^3 flags, the union of the sectors' (Unite()): a focal point in an
@@ -495,6 +526,7 @@ struct LabelHull
     this->Low = glm::dvec3(-reach, -reach, layout.Rows.front().Height - reach);
     const glm::dvec3 high(reach, reach, layout.Rows.back().Height + reach);
     this->CellSize = (high - this->Low) / double(Cells);
+    this->InverseCellSize = 1.0 / this->CellSize;
     this->Marks.assign(static_cast<std::size_t>(Sectors) * Cells * Cells * Cells, 0);
     return true;
   }
@@ -573,8 +605,8 @@ struct LabelHull
     const glm::dvec3 q =
       (glm::dvec3(
          glm::dot(v, layout.RefX), glm::dot(v, layout.RefY), glm::dot(v, layout.Cyl.Axis)) -
-        this->Low) /
-      this->CellSize;
+        this->Low) *
+      this->InverseCellSize;
     if (!(q.x >= 0.0 && q.y >= 0.0 && q.z >= 0.0 && q.x < Cells && q.y < Cells && q.z < Cells))
     {
       return -1;
@@ -1262,9 +1294,15 @@ struct LightFieldSampler
   }
 
   /**
-   * Appends the (up to) 4 bilinear samples of `view` around the projection
-   * of `x`, weighted `weight` x the bilinear weight; nothing when `x` projects
-   * outside the view.
+   * Appends the bilinear samples of `view` around the projection of `x`,
+   * weighted `weight` x the bilinear weight; nothing when `x` projects
+   * outside the view. The 4 texels of a footprint inside the view that
+   * carry one label (most do) are one sample: their bilinear interpolation,
+   * weighing `weight` (the bilinear weights sum to 1), as the two-plane sampler
+   * merges its samples per label. A label's vote, blend and coverage are
+   * those of the 4 samples up to rounding, and a ray has about 4 samples
+   * instead of 16 to store, vote on and blend. The other footprints give a
+   * sample per texel inside the view.
    */
   void AddBilinear(int view, double weight, const glm::dvec3& x, RaySamples& out) const
   {
@@ -1274,29 +1312,43 @@ struct LightFieldSampler
     {
       return;
     }
-    if (this->Radiance.Data && (this->Labels.Data || !this->Labels.Present()))
+    const int width = this->Radiance.Width;
+    const int height = this->Radiance.Height;
+    int x0, y0;
+    glm::dvec2 a;
+    double weights[4];
+    if (!BilinearFootprint(uv, width, height, x0, y0, a, weights))
     {
-      // In memory: the texels' addresses from locals, without Pixel()'s
-      // test of Source per texel (which `out` might alias, for the compiler).
-      const ViewStack<std::uint8_t> radiance = this->Radiance;
-      const std::uint8_t* labels = this->Labels.Data;
-      ForEachBilinearPixel(uv,
-        radiance.Width,
-        radiance.Height,
-        [&](int px, int py, double bw)
+      return;
+    }
+    if (x0 >= 0 && y0 >= 0 && x0 + 1 < width && y0 + 1 < height)
+    {
+      glm::dvec3 colors[4];
+      int labels[4];
+      this->Footprint(view, x0, y0, colors, labels);
+      if (labels[0] == labels[1] && labels[0] == labels[2] && labels[0] == labels[3])
+      {
+        // In lerp form, which keeps a flat colour exact.
+        const glm::dvec3 top = colors[0] + a.x * (colors[1] - colors[0]);
+        const glm::dvec3 bottom = colors[2] + a.x * (colors[3] - colors[2]);
+        RaySample& sample = out.Samples[out.Count++];
+        sample.Color = top + a.y * (bottom - top);
+        sample.Weight = weight;
+        sample.Label = labels[0];
+        return;
+      }
+      for (int corner = 0; corner < 4; ++corner)
+      {
+        if (weights[corner] > 0.0)
         {
-          const std::size_t index = radiance.Index(view, px, py);
-          const std::uint8_t* rgb = radiance.Data + 3 * index;
-          RaySample& sample = out.Samples[out.Count++];
-          sample.Color = glm::dvec3(rgb[0], rgb[1], rgb[2]);
-          sample.Weight = weight * bw;
-          sample.Label = labels ? labels[index] : 0;
-        });
+          out.Samples[out.Count++] = { colors[corner], weight * weights[corner], labels[corner] };
+        }
+      }
       return;
     }
     ForEachBilinearPixel(uv,
-      this->Radiance.Width,
-      this->Radiance.Height,
+      width,
+      height,
       [&](int px, int py, double bw)
       {
         RaySample& sample = out.Samples[out.Count++];
@@ -1305,6 +1357,39 @@ struct LightFieldSampler
         sample.Weight = weight * bw;
         sample.Label = this->Labels.Present() ? *this->Labels.Pixel(view, px, py) : 0;
       });
+  }
+
+  /**
+   * The colours and labels (0 without a Label pass) of the texels (x0, y0),
+   * (x0 + 1, y0), (x0, y0 + 1) and (x0 + 1, y0 + 1) of `view`, all inside
+   * it: in memory or out of core, the same values.
+   */
+  void Footprint(int view, int x0, int y0, glm::dvec3 colors[4], int labels[4]) const
+  {
+    if (this->Radiance.Data && (this->Labels.Data || !this->Labels.Present()))
+    {
+      // In memory: the 4 texels from the first one's index (rows in VTK
+      // order: y0 + 1 is the row before y0's), without Pixel()'s test of
+      // Source per texel.
+      const std::size_t first = this->Radiance.Index(view, x0, y0);
+      const std::size_t below = first - this->Radiance.Width;
+      const std::size_t indices[4] = { first, first + 1, below, below + 1 };
+      for (int corner = 0; corner < 4; ++corner)
+      {
+        const std::uint8_t* rgb = this->Radiance.Data + 3 * indices[corner];
+        colors[corner] = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+        labels[corner] = this->Labels.Data ? this->Labels.Data[indices[corner]] : 0;
+      }
+      return;
+    }
+    for (int corner = 0; corner < 4; ++corner)
+    {
+      const int px = x0 + (corner & 1);
+      const int py = y0 + (corner >> 1);
+      const std::uint8_t* rgb = this->Radiance.Pixel(view, px, py);
+      colors[corner] = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+      labels[corner] = this->Labels.Present() ? *this->Labels.Pixel(view, px, py) : 0;
+    }
   }
 
   /**
