@@ -1262,6 +1262,18 @@ struct LightFieldSampler
   }
 
   /**
+   * Projects the world point `x` into `view` (PinholeCamera::Project): with
+   * the view's 3x4 matrix when the sampler has them (Projections), one
+   * division instead of two, else with its camera. False when `x` is not in
+   * front of the view.
+   */
+  bool Project(int view, const glm::dvec3& x, glm::dvec2& uv) const
+  {
+    return this->Projections ? this->Projections[view].Project(x, uv)
+                             : this->Cameras[view].Project(x, uv);
+  }
+
+  /**
    * Appends the (up to) 4 bilinear samples of `view` around the projection
    * of `x`, weighted `weight` x the bilinear weight; nothing when `x` projects
    * outside the view.
@@ -1269,8 +1281,7 @@ struct LightFieldSampler
   void AddBilinear(int view, double weight, const glm::dvec3& x, RaySamples& out) const
   {
     glm::dvec2 uv;
-    if (!(this->Projections ? this->Projections[view].Project(x, uv)
-                            : this->Cameras[view].Project(x, uv)))
+    if (!this->Project(view, x, uv))
     {
       return;
     }
@@ -1386,7 +1397,8 @@ struct LightFieldSampler
     s0 = std::max(s0, start);
     s1 = std::min(s1, end);
     glm::dvec2 uv0, uv1;
-    if (!(s0 < s1) || !camera.Project(o + s0 * d, uv0) || !camera.Project(o + s1 * d, uv1))
+    if (!(s0 < s1) || !this->Project(view, o + s0 * d, uv0) ||
+      !this->Project(view, o + s1 * d, uv1))
     {
       return false;
     }
@@ -1407,7 +1419,7 @@ struct LightFieldSampler
       glm::dvec2 uvLast;
       // The walk's end is projected already (most walks are one run).
       const bool lastProjected = this->DepthTiles &&
-        (sLast == s1 ? (uvLast = uv1, true) : camera.Project(o + sLast * d, uvLast));
+        (sLast == s1 ? (uvLast = uv1, true) : this->Project(view, o + sLast * d, uvLast));
       // A projection bends (lens distortion) far less than the margin of
       // one pixel over a run, and each step reads its nearest pixel.
       if (firstProjected && lastProjected &&
@@ -1428,7 +1440,7 @@ struct LightFieldSampler
           glm::dvec2 uv = i == last ? uvLast : uvFirst;
           const bool projected = (i == last && lastProjected) || (i == first && firstProjected);
           const double surface =
-            projected || camera.Project(o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
+            projected || this->Project(view, o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
           const double gap =
             surface > 0.0 ? co + s * cd - surface : std::numeric_limits<double>::quiet_NaN();
           if (gap >= 0.0)
@@ -1528,7 +1540,7 @@ struct LightFieldSampler
       const Candidate& candidate = candidates[i];
       const PinholeCamera& camera = this->Cameras[candidate.View];
       glm::dvec2 uv;
-      if (!camera.Project(x, uv))
+      if (!this->Project(candidate.View, x, uv))
       {
         continue;
       }
