@@ -1521,26 +1521,43 @@ struct LightFieldSampler
       return false;
     }
     const glm::dvec3 x = o + surface * d;
-    struct Candidate
+    const glm::dvec3 toEye = -glm::normalize(d);
+    ProxyCandidate candidates[16];
+    const int n = this->ProxyCandidates(azimuth, height, x, toEye, candidates);
+    // The visible candidates, nearest first (ties in the order of
+    // ProxyCandidates), up to one more than blended. Each is the nearest of
+    // those not examined yet, picked when it is needed: a ray examines about
+    // 4 of its 12 candidates, so neither sorting them all nor the penalties
+    // of the others pay. (The running maximum, not the nearest's index,
+    // carries the scan: one maxsd per candidate on its critical path.)
+    const int k = std::clamp(this->ProxyViews, 1, 4);
+    struct Chosen
     {
       double Penalty;
       int View;
     };
-    Candidate candidates[16];
-    const int n = this->ProxyCandidates(azimuth, height, x, -glm::normalize(d), candidates);
-    std::sort(candidates,
-      candidates + n,
-      [](const Candidate& a, const Candidate& b) { return a.Penalty < b.Penalty; });
-    // The visible candidates, nearest first, up to one more than blended.
-    const int k = std::clamp(this->ProxyViews, 1, 4);
-    Candidate chosen[5];
+    Chosen chosen[5];
     int visible = 0;
-    for (int i = 0; i < n && visible <= k; ++i)
+    constexpr double examined = -std::numeric_limits<double>::infinity();
+    while (visible <= k)
     {
-      const Candidate& candidate = candidates[i];
-      const PinholeCamera& camera = this->Cameras[candidate.View];
+      int nearest = -1;
+      double nearness = examined;
+      for (int i = 0; i < n; ++i)
+      {
+        const bool nearer = candidates[i].Nearness > nearness;
+        nearest = nearer ? i : nearest;
+        nearness = nearer ? candidates[i].Nearness : nearness;
+      }
+      if (nearest < 0)
+      {
+        break;
+      }
+      candidates[nearest].Nearness = examined;
+      const int view = candidates[nearest].View;
+      const PinholeCamera& camera = this->Cameras[view];
       glm::dvec2 uv;
-      if (!this->Project(candidate.View, x, uv))
+      if (!this->Project(view, x, uv))
       {
         continue;
       }
@@ -1553,7 +1570,6 @@ struct LightFieldSampler
         // misses cost the proxy path more than its arithmetic.
         const double z = glm::dot(camera.Forward(), x) + camera.t.z;
         const double tolerance = 1.0 + this->OcclusionTolerance;
-        const int view = candidate.View;
         if (!(this->DepthTiles && z <= this->DepthTiles->At(view, px, py) * tolerance))
         {
           const double seen = *this->Depth.Pixel(view, px, py);
@@ -1563,7 +1579,9 @@ struct LightFieldSampler
           }
         }
       }
-      chosen[visible++] = candidate;
+      // ULR's angular penalty: the chord between the unit directions.
+      chosen[visible++] = { glm::distance(glm::normalize(this->CameraCenter(view) - x), toEye),
+        view };
     }
     if (visible == 0)
     {
@@ -1611,18 +1629,28 @@ struct LightFieldSampler
       o, d, AxisBounds{ this->SurfaceLow, this->SurfaceHigh }, enter, leave);
   }
 
+  /// A candidate camera of GatherOnSurface (ProxyCandidates()).
+  struct ProxyCandidate
+  {
+    int View;
+    /// The squared cosine, with its sign, of the angle at the surface point
+    /// between the directions to the camera and to the eye: the larger, the
+    /// smaller ULR's angular penalty (the chord 2 sin(angle / 2)), without
+    /// the penalty's square roots.
+    double Nearness;
+  };
+
   /**
    * The candidate cameras of GatherOnSurface: in each row from the one below
    * `height` minus one to the one above plus one, the 4 views around
-   * `azimuth` (all of a row of fewer), each with its angular penalty at `x`
-   * for the unit direction `toEye`. Returns their number (at most 16).
+   * `azimuth` (all of a row of fewer), each with its nearness in angle at
+   * `x` to the unit direction `toEye`. Returns their number (at most 16).
    */
-  template<typename Candidate>
   int ProxyCandidates(double azimuth,
     double height,
     const glm::dvec3& x,
     const glm::dvec3& toEye,
-    Candidate* out) const
+    ProxyCandidate* out) const
   {
     const int rows = static_cast<int>(this->Layout->Rows.size());
     int below = 0;
@@ -1635,17 +1663,30 @@ struct LightFieldSampler
     {
       const RingRow& row = this->Layout->Rows[r];
       const int views = static_cast<int>(row.Azimuth.size());
+      if (views == 0)
+      {
+        continue;
+      }
       const int upper = static_cast<int>(
         std::upper_bound(row.Azimuth.begin(), row.Azimuth.end(), azimuth) - row.Azimuth.begin());
+      // The first of the 4 (cyclically); the others wrap at most once.
+      const int start = ((upper - 2) % views + views) % views;
       for (int i = 0; i < std::min(views, 4); ++i)
       {
-        const int view = row.View[((upper - 2 + i) % views + views) % views];
-        const glm::dvec3 toCamera = glm::normalize(
-          (this->CameraCenters ? this->CameraCenters[view] : this->Cameras[view].Center()) - x);
-        out[n++] = { glm::distance(toCamera, toEye), view };
+        const int index = start + i;
+        const int view = row.View[index < views ? index : index - views];
+        const glm::dvec3 toCamera = this->CameraCenter(view) - x;
+        const double along = glm::dot(toCamera, toEye);
+        out[n++] = { view, along * std::abs(along) / glm::dot(toCamera, toCamera) };
       }
     }
     return n;
+  }
+
+  /// The centre of `view`'s camera (from CameraCenters when given).
+  glm::dvec3 CameraCenter(int view) const
+  {
+    return this->CameraCenters ? this->CameraCenters[view] : this->Cameras[view].Center();
   }
 
   /**
