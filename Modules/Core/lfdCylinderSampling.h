@@ -1608,8 +1608,15 @@ struct LightFieldSampler
     }
     // Near a silhouette the depth maps are least certain (one depth per
     // pixel, nearest pixel): where the focused samples vote for background,
-    // the ray is looked up as without a proxy, through the plane.
-    if (out.Count == 0 || (this->Labels.Present() && VoteLabel(out) == 0))
+    // the ray is looked up as without a proxy, through the plane. Only
+    // samples with a background one can (fish at rest: 6% of them), so the
+    // others skip the vote, whose sums cost more than this scan.
+    bool background = false;
+    for (int i = 0; i < out.Count; ++i)
+    {
+      background |= out.Samples[i].Label == 0;
+    }
+    if (out.Count == 0 || (this->Labels.Present() && background && VoteLabel(out) == 0))
     {
       out.Count = 0;
       return false;
