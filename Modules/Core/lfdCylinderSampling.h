@@ -1384,7 +1384,7 @@ struct LightFieldSampler
     const glm::dvec3 forward = camera.Forward();
     const double co = glm::dot(forward, o) + camera.t.z; // camera z along the ray
     const double cd = glm::dot(forward, d);
-    if (!(std::abs(cd) > 1e-12 * glm::length(d)))
+    if (!(cd * cd > 1e-24 * glm::dot(d, d)))
     {
       return false; // parallel to the image plane: no bounded stretch
     }
@@ -1433,10 +1433,12 @@ struct LightFieldSampler
       {
         for (int i = walked ? first + 1 : first; i <= last; ++i)
         {
-          const double s = s0 + (s1 - s0) * i / steps;
-          // The run's ends are projected already (the same s, so the same
-          // pixel): most walks are a step or two long (the views nearest
-          // in angle see the ray nearly end on).
+          // The run's ends are stepped and projected already (the same s,
+          // so the same pixel): most walks are a step or two long (the
+          // views nearest in angle see the ray nearly end on). Step first's
+          // s is previousS (s0 + 0 at step 0).
+          const double s =
+            i == first ? previousS : (i == last ? sLast : s0 + (s1 - s0) * i / steps);
           glm::dvec2 uv = i == last ? uvLast : uvFirst;
           const bool projected = (i == last && lastProjected) || (i == first && firstProjected);
           const double surface =
