@@ -1294,6 +1294,18 @@ struct LightFieldSampler
   }
 
   /**
+   * Projects the world point `x` into `view` (PinholeCamera::Project): with
+   * the view's 3x4 matrix when the sampler has them (Projections), one
+   * division instead of two, else with its camera. False when `x` is not in
+   * front of the view.
+   */
+  bool Project(int view, const glm::dvec3& x, glm::dvec2& uv) const
+  {
+    return this->Projections ? this->Projections[view].Project(x, uv)
+                             : this->Cameras[view].Project(x, uv);
+  }
+
+  /**
    * Appends the bilinear samples of `view` around the projection of `x`,
    * weighted `weight` x the bilinear weight; nothing when `x` projects
    * outside the view. The 4 texels of a footprint inside the view that
@@ -1307,8 +1319,7 @@ struct LightFieldSampler
   void AddBilinear(int view, double weight, const glm::dvec3& x, RaySamples& out) const
   {
     glm::dvec2 uv;
-    if (!(this->Projections ? this->Projections[view].Project(x, uv)
-                            : this->Cameras[view].Project(x, uv)))
+    if (!this->Project(view, x, uv))
     {
       return;
     }
@@ -1458,7 +1469,7 @@ struct LightFieldSampler
     const glm::dvec3 forward = camera.Forward();
     const double co = glm::dot(forward, o) + camera.t.z; // camera z along the ray
     const double cd = glm::dot(forward, d);
-    if (!(std::abs(cd) > 1e-12 * glm::length(d)))
+    if (!(cd * cd > 1e-24 * glm::dot(d, d)))
     {
       return false; // parallel to the image plane: no bounded stretch
     }
@@ -1471,7 +1482,8 @@ struct LightFieldSampler
     s0 = std::max(s0, start);
     s1 = std::min(s1, end);
     glm::dvec2 uv0, uv1;
-    if (!(s0 < s1) || !camera.Project(o + s0 * d, uv0) || !camera.Project(o + s1 * d, uv1))
+    if (!(s0 < s1) || !this->Project(view, o + s0 * d, uv0) ||
+      !this->Project(view, o + s1 * d, uv1))
     {
       return false;
     }
@@ -1492,7 +1504,7 @@ struct LightFieldSampler
       glm::dvec2 uvLast;
       // The walk's end is projected already (most walks are one run).
       const bool lastProjected = this->DepthTiles &&
-        (sLast == s1 ? (uvLast = uv1, true) : camera.Project(o + sLast * d, uvLast));
+        (sLast == s1 ? (uvLast = uv1, true) : this->Project(view, o + sLast * d, uvLast));
       // A projection bends (lens distortion) far less than the margin of
       // one pixel over a run, and each step reads its nearest pixel.
       if (firstProjected && lastProjected &&
@@ -1506,14 +1518,16 @@ struct LightFieldSampler
       {
         for (int i = walked ? first + 1 : first; i <= last; ++i)
         {
-          const double s = s0 + (s1 - s0) * i / steps;
-          // The run's ends are projected already (the same s, so the same
-          // pixel): most walks are a step or two long (the views nearest
-          // in angle see the ray nearly end on).
+          // The run's ends are stepped and projected already (the same s,
+          // so the same pixel): most walks are a step or two long (the
+          // views nearest in angle see the ray nearly end on). Step first's
+          // s is previousS (s0 + 0 at step 0).
+          const double s =
+            i == first ? previousS : (i == last ? sLast : s0 + (s1 - s0) * i / steps);
           glm::dvec2 uv = i == last ? uvLast : uvFirst;
           const bool projected = (i == last && lastProjected) || (i == first && firstProjected);
           const double surface =
-            projected || camera.Project(o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
+            projected || this->Project(view, o + s * d, uv) ? this->DepthAt(view, uv) : 0.0;
           const double gap =
             surface > 0.0 ? co + s * cd - surface : std::numeric_limits<double>::quiet_NaN();
           if (gap >= 0.0)
@@ -1594,26 +1608,43 @@ struct LightFieldSampler
       return false;
     }
     const glm::dvec3 x = o + surface * d;
-    struct Candidate
+    const glm::dvec3 toEye = -glm::normalize(d);
+    ProxyCandidate candidates[16];
+    const int n = this->ProxyCandidates(azimuth, height, x, toEye, candidates);
+    // The visible candidates, nearest first (ties in the order of
+    // ProxyCandidates), up to one more than blended. Each is the nearest of
+    // those not examined yet, picked when it is needed: a ray examines about
+    // 4 of its 12 candidates, so neither sorting them all nor the penalties
+    // of the others pay. (The running maximum, not the nearest's index,
+    // carries the scan: one maxsd per candidate on its critical path.)
+    const int k = std::clamp(this->ProxyViews, 1, 4);
+    struct Chosen
     {
       double Penalty;
       int View;
     };
-    Candidate candidates[16];
-    const int n = this->ProxyCandidates(azimuth, height, x, -glm::normalize(d), candidates);
-    std::sort(candidates,
-      candidates + n,
-      [](const Candidate& a, const Candidate& b) { return a.Penalty < b.Penalty; });
-    // The visible candidates, nearest first, up to one more than blended.
-    const int k = std::clamp(this->ProxyViews, 1, 4);
-    Candidate chosen[5];
+    Chosen chosen[5];
     int visible = 0;
-    for (int i = 0; i < n && visible <= k; ++i)
+    constexpr double examined = -std::numeric_limits<double>::infinity();
+    while (visible <= k)
     {
-      const Candidate& candidate = candidates[i];
-      const PinholeCamera& camera = this->Cameras[candidate.View];
+      int nearest = -1;
+      double nearness = examined;
+      for (int i = 0; i < n; ++i)
+      {
+        const bool nearer = candidates[i].Nearness > nearness;
+        nearest = nearer ? i : nearest;
+        nearness = nearer ? candidates[i].Nearness : nearness;
+      }
+      if (nearest < 0)
+      {
+        break;
+      }
+      candidates[nearest].Nearness = examined;
+      const int view = candidates[nearest].View;
+      const PinholeCamera& camera = this->Cameras[view];
       glm::dvec2 uv;
-      if (!camera.Project(x, uv))
+      if (!this->Project(view, x, uv))
       {
         continue;
       }
@@ -1626,7 +1657,6 @@ struct LightFieldSampler
         // misses cost the proxy path more than its arithmetic.
         const double z = glm::dot(camera.Forward(), x) + camera.t.z;
         const double tolerance = 1.0 + this->OcclusionTolerance;
-        const int view = candidate.View;
         if (!(this->DepthTiles && z <= this->DepthTiles->At(view, px, py) * tolerance))
         {
           const double seen = *this->Depth.Pixel(view, px, py);
@@ -1636,7 +1666,9 @@ struct LightFieldSampler
           }
         }
       }
-      chosen[visible++] = candidate;
+      // ULR's angular penalty: the chord between the unit directions.
+      chosen[visible++] = { glm::distance(glm::normalize(this->CameraCenter(view) - x), toEye),
+        view };
     }
     if (visible == 0)
     {
@@ -1663,8 +1695,15 @@ struct LightFieldSampler
     }
     // Near a silhouette the depth maps are least certain (one depth per
     // pixel, nearest pixel): where the focused samples vote for background,
-    // the ray is looked up as without a proxy, through the plane.
-    if (out.Count == 0 || (this->Labels.Present() && VoteLabel(out) == 0))
+    // the ray is looked up as without a proxy, through the plane. Only
+    // samples with a background one can (fish at rest: 6% of them), so the
+    // others skip the vote, whose sums cost more than this scan.
+    bool background = false;
+    for (int i = 0; i < out.Count; ++i)
+    {
+      background |= out.Samples[i].Label == 0;
+    }
+    if (out.Count == 0 || (this->Labels.Present() && background && VoteLabel(out) == 0))
     {
       out.Count = 0;
       return false;
@@ -1684,18 +1723,28 @@ struct LightFieldSampler
       o, d, AxisBounds{ this->SurfaceLow, this->SurfaceHigh }, enter, leave);
   }
 
+  /// A candidate camera of GatherOnSurface (ProxyCandidates()).
+  struct ProxyCandidate
+  {
+    int View;
+    /// The squared cosine, with its sign, of the angle at the surface point
+    /// between the directions to the camera and to the eye: the larger, the
+    /// smaller ULR's angular penalty (the chord 2 sin(angle / 2)), without
+    /// the penalty's square roots.
+    double Nearness;
+  };
+
   /**
    * The candidate cameras of GatherOnSurface: in each row from the one below
    * `height` minus one to the one above plus one, the 4 views around
-   * `azimuth` (all of a row of fewer), each with its angular penalty at `x`
-   * for the unit direction `toEye`. Returns their number (at most 16).
+   * `azimuth` (all of a row of fewer), each with its nearness in angle at
+   * `x` to the unit direction `toEye`. Returns their number (at most 16).
    */
-  template<typename Candidate>
   int ProxyCandidates(double azimuth,
     double height,
     const glm::dvec3& x,
     const glm::dvec3& toEye,
-    Candidate* out) const
+    ProxyCandidate* out) const
   {
     const int rows = static_cast<int>(this->Layout->Rows.size());
     int below = 0;
@@ -1708,17 +1757,30 @@ struct LightFieldSampler
     {
       const RingRow& row = this->Layout->Rows[r];
       const int views = static_cast<int>(row.Azimuth.size());
+      if (views == 0)
+      {
+        continue;
+      }
       const int upper = static_cast<int>(
         std::upper_bound(row.Azimuth.begin(), row.Azimuth.end(), azimuth) - row.Azimuth.begin());
+      // The first of the 4 (cyclically); the others wrap at most once.
+      const int start = ((upper - 2) % views + views) % views;
       for (int i = 0; i < std::min(views, 4); ++i)
       {
-        const int view = row.View[((upper - 2 + i) % views + views) % views];
-        const glm::dvec3 toCamera = glm::normalize(
-          (this->CameraCenters ? this->CameraCenters[view] : this->Cameras[view].Center()) - x);
-        out[n++] = { glm::distance(toCamera, toEye), view };
+        const int index = start + i;
+        const int view = row.View[index < views ? index : index - views];
+        const glm::dvec3 toCamera = this->CameraCenter(view) - x;
+        const double along = glm::dot(toCamera, toEye);
+        out[n++] = { view, along * std::abs(along) / glm::dot(toCamera, toCamera) };
       }
     }
     return n;
+  }
+
+  /// The centre of `view`'s camera (from CameraCenters when given).
+  glm::dvec3 CameraCenter(int view) const
+  {
+    return this->CameraCenters ? this->CameraCenters[view] : this->Cameras[view].Center();
   }
 
   /**

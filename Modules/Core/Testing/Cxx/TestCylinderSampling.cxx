@@ -312,15 +312,10 @@ int ProvenStretch(const lfd::LightFieldSampler& sampler,
   {
     return 0;
   }
-  struct Candidate
-  {
-    double Penalty;
-    int View;
-  };
   for (int k = 0; k <= 64; ++k)
   {
     const glm::dvec3 x = o + (enter + (leave - enter) * k / 64.0) * d;
-    Candidate candidates[16];
+    lfd::LightFieldSampler::ProxyCandidate candidates[16];
     const int n = sampler.ProxyCandidates(azimuth, height, x, -glm::normalize(d), candidates);
     for (int c = 0; c < n; ++c)
     {
