@@ -1301,8 +1301,16 @@ struct LightFieldSampler
    */
   bool Project(int view, const glm::dvec3& x, glm::dvec2& uv) const
   {
-    return this->Projections ? this->Projections[view].Project(x, uv)
-                             : this->Cameras[view].Project(x, uv);
+    double z;
+    return this->Project(view, x, uv, z);
+  }
+
+  /// Project() that also gives the camera z of `x` (the projection's
+  /// homogeneous w, set even when false).
+  bool Project(int view, const glm::dvec3& x, glm::dvec2& uv, double& z) const
+  {
+    return this->Projections ? this->Projections[view].Project(x, uv, z)
+                             : this->Cameras[view].Project(x, uv, z);
   }
 
   /**
@@ -1487,8 +1495,14 @@ struct LightFieldSampler
     {
       return false;
     }
-    const int steps = static_cast<int>(
-      std::clamp(std::ceil(glm::distance(uv0, uv1)), 1.0, double(MaximumDepthSteps)));
+    // One step per pixel of the projection's length, at least one: a walk
+    // of a pixel or less (most are) needs no square root, as sqrt(q) <= 1
+    // exactly when q <= 1.
+    const glm::dvec2 span = uv1 - uv0;
+    const double squared = glm::dot(span, span);
+    const int steps = squared <= 1.0
+      ? 1
+      : static_cast<int>(std::clamp(std::ceil(std::sqrt(squared)), 1.0, double(MaximumDepthSteps)));
     double previousS = s0;
     double previousGap = std::numeric_limits<double>::quiet_NaN(); // NaN: no surface there
     // Steps first to last of the current run; previousGap is step first's
@@ -1642,9 +1656,9 @@ struct LightFieldSampler
       }
       candidates[nearest].Nearness = examined;
       const int view = candidates[nearest].View;
-      const PinholeCamera& camera = this->Cameras[view];
       glm::dvec2 uv;
-      if (!this->Project(view, x, uv))
+      double z; // X's camera z, for the visibility test
+      if (!this->Project(view, x, uv, z))
       {
         continue;
       }
@@ -1655,7 +1669,6 @@ struct LightFieldSampler
         // below: a point no deeper than it (with the tolerance) is seen, and
         // the small tiles spare most reads of the large depth maps, whose
         // misses cost the proxy path more than its arithmetic.
-        const double z = glm::dot(camera.Forward(), x) + camera.t.z;
         const double tolerance = 1.0 + this->OcclusionTolerance;
         if (!(this->DepthTiles && z <= this->DepthTiles->At(view, px, py) * tolerance))
         {

@@ -87,7 +87,19 @@ struct PinholeCamera
    */
   bool Project(const glm::dvec3& X, glm::dvec2& pixel) const
   {
+    double z;
+    return this->Project(X, pixel, z);
+  }
+
+  /**
+   * Project() that also gives the point's camera z (its depth along
+   * Forward(), dot(Forward(), X) + t.z to the bit), set even when the point
+   * is not in front of the camera.
+   */
+  bool Project(const glm::dvec3& X, glm::dvec2& pixel, double& z) const
+  {
     const glm::dvec3 c = this->R * X + this->t;
+    z = c.z;
     if (!(c.z > 0.0))
     {
       return false;
@@ -205,8 +217,16 @@ struct ProjectionMatrix
   /// for a point not in front of the camera.
   bool Project(const glm::dvec3& X, glm::dvec2& pixel) const
   {
-    const double z =
-      this->Rows[2][0] * X.x + this->Rows[2][1] * X.y + this->Rows[2][2] * X.z + this->Rows[2][3];
+    double z;
+    return this->Project(X, pixel, z);
+  }
+
+  /// Project() that also gives the point's camera z, the homogeneous w
+  /// (PinholeCamera's to the bit: the same products, summed in the same
+  /// order), set even when the point is not in front of the camera.
+  bool Project(const glm::dvec3& X, glm::dvec2& pixel, double& z) const
+  {
+    z = this->Rows[2][0] * X.x + this->Rows[2][1] * X.y + this->Rows[2][2] * X.z + this->Rows[2][3];
     if (!(z > 0.0))
     {
       return false;
