@@ -1514,7 +1514,9 @@ struct LightFieldSampler
     while (first < steps)
     {
       const int last = std::min(first + CoarseDepthSteps, steps);
-      const double sLast = s0 + (s1 - s0) * last / steps;
+      // (s1 - s0) * 1 / 1 is s1 - s0 exactly: a walk of one step (most
+      // are) skips the division.
+      const double sLast = s0 + (steps == 1 ? s1 - s0 : (s1 - s0) * last / steps);
       glm::dvec2 uvLast;
       // The walk's end is projected already (most walks are one run).
       const bool lastProjected = this->DepthTiles &&
