@@ -53,13 +53,17 @@ int TestCameraRetries(int, char*[])
   // retry's trigger is answered as well, later. The next Acquire() waits for
   // that frame and discards it instead of taking it for its own (on a rig,
   // a frame exposed under the previous pass's lights).
-  // (The fake camera answers no control packet while it fills a frame:
-  // the delay and the frame's render, several times slower under the
-  // sanitizers on a loaded machine, stay under its 3 s heartbeat timeout,
-  // past which it would drop its controller: a delay of 1800 ms left too
-  // little for the render there.)
-  camera->SetFrameTimeout(600);
-  simulated->DelayFrames(1, 1200);
+  // (The fake camera answers no control packet while it fills a frame, so
+  // the retry's trigger returns once the late frame is sent, and that
+  // attempt takes it. Two budgets bound the render R of a frame, several
+  // times slower under the sanitizers on a loaded machine: the retry's own
+  // frame must come within the frame timeout of the next Acquire (R <
+  // 1200 ms), and the delay plus a render must stay under the fake
+  // camera's 3 s heartbeat timeout, past which it drops its controller
+  // (R < 1600 ms); 1000 / 1800 ms left R < 1000 and 1200 ms, and failed
+  // under ASan at load 4.)
+  camera->SetFrameTimeout(1200);
+  simulated->DelayFrames(1, 1400);
   const int retriesBefore = camera->GetNumberOfRetries();
   const int renderedBefore = simulated->GetNumberOfFramesRendered();
   const bool slow = camera->Acquire(frame);
