@@ -14,6 +14,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <array>
 #include <cctype>
 #include <string>
 
@@ -174,10 +175,19 @@ bool vtkLightField::HasLabel(int label)
     this->LabelsPresent.assign(256, false);
     if (auto* bytes = vtkUnsignedCharArray::SafeDownCast(labels))
     {
+      // A plain byte table, not the vector<bool>'s bit operations: every
+      // label texel of every view passes through this loop (23.6 M for the
+      // demo's fish, about 80 ms of the first deformed render before).
+      std::array<unsigned char, 256> seen{};
       const unsigned char* values = bytes->GetPointer(0);
-      for (vtkIdType i = 0; i < bytes->GetNumberOfValues(); ++i)
+      const vtkIdType count = bytes->GetNumberOfValues();
+      for (vtkIdType i = 0; i < count; ++i)
       {
-        this->LabelsPresent[values[i]] = true;
+        seen[values[i]] = 1;
+      }
+      for (int value = 0; value < 256; ++value)
+      {
+        this->LabelsPresent[value] = seen[value] != 0;
       }
     }
     else
