@@ -71,6 +71,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <tuple>
@@ -290,11 +291,19 @@ struct ScreenHull
   }
 
   /// False when the ray through pixel (x, y) surely misses the box.
-  bool MayHold(double x, double y) const
+  bool MayHold(double x, double y) const { return this->MayHold(x, y, (1u << this->Count) - 1); }
+
+  /**
+   * MayHold testing only the edges in `edges` (bit i: Edges[i]), the others
+   * known to let the pixel through (EdgesAcross): the same answer when
+   * `edges` holds every edge that EdgesAcross gives for a rectangle around
+   * the pixel.
+   */
+  bool MayHold(double x, double y, unsigned edges) const
   {
-    for (int i = 0; i < this->Count; ++i)
+    for (int i = 0; edges != 0; ++i, edges >>= 1)
     {
-      if (this->Edges[i].x * x + this->Edges[i].y * y + this->Edges[i].z < -Margin)
+      if ((edges & 1) && this->Edges[i].x * x + this->Edges[i].y * y + this->Edges[i].z < -Margin)
       {
         return false;
       }
@@ -303,24 +312,50 @@ struct ScreenHull
   }
 
   /**
-   * False when MayHold is false at every pixel of the rectangle [x0, x1] x
-   * [y0, y1]: an edge's distance is linear, so it is below -Margin all over
-   * the rectangle when it is at its 4 corners (by twice the margin, which
-   * is far more than the rounding of evaluating it in between).
+   * The edges whose test in MayHold may fail at some pixel of the rectangle
+   * [x0, x1] x [y0, y1] (bit i: Edges[i]), or -1 when MayHold is false at
+   * every one. An edge's distance is linear, so its extremes over the
+   * rectangle are at its 4 corners: an edge at least 0 at every corner
+   * passes MayHold's test (>= -Margin) all over the rectangle, and one below
+   * -2 Margin at every corner fails it all over (the margin is far more than
+   * the rounding of evaluating the distance in between).
    */
-  bool MayHoldAny(double x0, double y0, double x1, double y1) const
+  int EdgesAcross(double x0, double y0, double x1, double y1) const
   {
+    int across = 0;
     for (int i = 0; i < this->Count; ++i)
     {
       const glm::dvec3& e = this->Edges[i];
       const double farthest = std::max(e.x * x0, e.x * x1) + std::max(e.y * y0, e.y * y1) + e.z;
       if (farthest < -2.0 * Margin)
       {
-        return false;
+        return -1;
       }
+      const double nearest = std::min(e.x * x0, e.x * x1) + std::min(e.y * y0, e.y * y1) + e.z;
+      across |= (nearest < 0.0) << i;
     }
-    return true;
+    return across;
   }
+
+  /// False when MayHold is false at every pixel of the rectangle [x0, x1] x [y0, y1].
+  bool MayHoldAny(double x0, double y0, double x1, double y1) const
+  {
+    return this->EdgesAcross(x0, y0, x1, y1) >= 0;
+  }
+};
+
+/**
+ * How the projected hulls of a box and of its faces (ScreenHull) meet a tile
+ * of a frame: the edges that each must test at the tile's pixels
+ * (ScreenHull::EdgesAcross). Most pixels of a tile that lists a box lie
+ * well inside its hull and inside or outside each face's, where the
+ * per-pixel tests answer without evaluating an edge.
+ */
+struct HullsInTile
+{
+  std::uint8_t Box = 0;      ///< the box's hull's edges that cross the tile
+  std::uint8_t FacesOut = 0; ///< the faces (bit k: face k) whose hull misses the whole tile
+  std::uint8_t Faces[6] = { 0, 0, 0, 0, 0, 0 }; ///< per face, its hull's edges that cross the tile
 };
 
 /**
@@ -381,6 +416,20 @@ struct OrientedBounds
   }
 };
 
+/// A box a ray of a frame may meet (FrameCage::StartWalk).
+struct WalkEntry
+{
+  double T; ///< where the ray enters the box's widened oriented bounds
+  int Box;
+  int Listed; ///< the box's place in the ray's tile (FrameCage::TileBoxes)
+
+  /// Nearer first, then by box index.
+  bool operator<(const WalkEntry& other) const
+  {
+    return this->T < other.T || (this->T == other.T && this->Box < other.Box);
+  }
+};
+
 /// One thread's scratch space for the rays of a frame (FrameCage::NextSegment),
 /// reused from ray to ray: a ray allocates nothing once it has grown.
 struct FrameRayScratch
@@ -388,9 +437,8 @@ struct FrameRayScratch
   std::vector<BoxSegment> Segments; ///< the ray's intervals handed out, front to back
   std::vector<BoxSegment> Pending;  ///< warped, not handed out yet: sorted from PendingHead
   std::size_t PendingHead = 0;
-  /// The boxes still to warp: where the ray enters their widened bounds, and
-  /// their index; sorted from NextEntry.
-  std::vector<std::pair<double, int>> Entries;
+  /// The boxes still to warp, sorted from NextEntry.
+  std::vector<WalkEntry> Entries;
   std::size_t NextEntry = 0;
   glm::dvec2 Pixel{ 0.0 }; ///< the pixel of the ray (StartWalk)
   /// Per box, the number of the last ray that left it out (FrameCage::LeaveOut).
@@ -463,6 +511,8 @@ struct FrameCage
   int TilesY = 1;
   std::vector<int> TileStart; ///< tile i lists TileBoxes[TileStart[i], TileStart[i + 1])
   std::vector<int> TileBoxes; ///< box indices, nearest first within a tile (BinBoxes)
+  /// Per entry of TileBoxes, how the box's projected hulls meet the tile.
+  std::vector<HullsInTile> TileHulls;
 
   /// Tile side (pixels) that the renderer uses: small enough that a tile of
   /// the fish's 100-slab cage at 512x512 lists a few boxes (about 2.4 per
@@ -552,7 +602,7 @@ struct FrameCage
     for (int i = this->TileStart[tile]; i < this->TileStart[tile + 1]; ++i)
     {
       const int b = this->TileBoxes[i];
-      if (!this->Hulls[b].MayHold(x, y))
+      if (!this->Hulls[b].MayHold(x, y, this->TileHulls[i].Box))
       {
         continue;
       }
@@ -562,7 +612,7 @@ struct FrameCage
       double oriented = 0.0;
       if (this->Oriented[b].Entry(d, oriented))
       {
-        scratch.Entries.emplace_back(oriented, b);
+        scratch.Entries.push_back({ oriented, b, i });
       }
     }
     if (scratch.Entries.empty())
@@ -590,18 +640,23 @@ struct FrameCage
     // Warp every box the ray enters no later than the nearest pending interval.
     while (scratch.NextEntry < scratch.Entries.size() &&
       (scratch.PendingHead == pending.size() ||
-        !(scratch.Entries[scratch.NextEntry].first > pending[scratch.PendingHead].Segment.TEnter)))
+        !(scratch.Entries[scratch.NextEntry].T > pending[scratch.PendingHead].Segment.TEnter)))
     {
-      const int b = scratch.Entries[scratch.NextEntry++].second;
+      const WalkEntry& entry = scratch.Entries[scratch.NextEntry++];
+      const int b = entry.Box;
       if (scratch.Skipped[b] == scratch.Ray || skip(b))
       {
         continue;
       }
       const RenderBox& box = (*this->Boxes)[b];
+      const HullsInTile& hulls = this->TileHulls[entry.Listed];
       int faces = 0;
       for (int face = 0; face < 6; ++face)
       {
-        faces |= this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y) << face;
+        faces |=
+          (!(hulls.FacesOut & (1 << face)) &&
+            this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y, hulls.Faces[face]))
+          << face;
       }
       WarpedSegment found[MaxWarpedSegments];
       const int n = WarpRayThroughBox(this->Seen[b],
@@ -849,10 +904,27 @@ private:
       this->TileStart[i] += this->TileStart[i - 1];
     }
     this->TileBoxes.resize(binned.size());
+    this->TileHulls.resize(binned.size());
     std::vector<int> next(this->TileStart.begin(), this->TileStart.end() - 1);
     for (const auto& [tile, b] : binned)
     {
-      this->TileBoxes[next[tile]++] = b;
+      const int i = next[tile]++;
+      this->TileBoxes[i] = b;
+      // The tile's pixels (x0, y0) to (x1, y1).
+      const int x0 = tile % this->TilesX * this->TileSize;
+      const int y0 = tile / this->TilesX * this->TileSize;
+      const int x1 = std::min(x0 + this->TileSize, width) - 1;
+      const int y1 = std::min(y0 + this->TileSize, height) - 1;
+      HullsInTile& hulls = this->TileHulls[i];
+      // (Without culling, a box whose hull misses the tile tests every edge.)
+      const int across = this->Hulls[b].EdgesAcross(x0, y0, x1, y1);
+      hulls.Box = static_cast<std::uint8_t>(across >= 0 ? across : (1 << this->Hulls[b].Count) - 1);
+      for (int face = 0; face < 6; ++face)
+      {
+        const int across = this->FaceHulls[b][face].EdgesAcross(x0, y0, x1, y1);
+        hulls.FacesOut |= (across < 0) << face;
+        hulls.Faces[face] = static_cast<std::uint8_t>(std::max(across, 0));
+      }
     }
   }
 };

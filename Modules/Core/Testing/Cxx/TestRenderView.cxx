@@ -454,7 +454,7 @@ void TiltedSlabs()
         // whose projected hull holds the pixel.
         for (std::size_t i = 0; i < scratch.NextEntry; ++i)
         {
-          const int b = scratch.Entries[i].second;
+          const int b = scratch.Entries[i].Box;
           if (scratch.Skipped[b] == scratch.Ray)
           {
             continue;
@@ -570,7 +570,7 @@ void RunLookedUpOnce()
   int skipped = 0;
   for (std::size_t i = 0; i < scratch.NextEntry; ++i)
   {
-    skipped += scratch.Skipped[scratch.Entries[i].second] == scratch.Ray;
+    skipped += scratch.Skipped[scratch.Entries[i].Box] == scratch.Ray;
   }
   Expect("  cubes behind the looked-up one left out unwarped", skipped, 3);
   Expect("  the third cube's neighbour through its top (w = 1)", cage.Neighbors[2][5], 6 * 3 + 4);
