@@ -353,8 +353,9 @@ struct ScreenHull
  */
 struct HullsInTile
 {
-  std::uint8_t Box = 0;      ///< the box's hull's edges that cross the tile
-  std::uint8_t FacesOut = 0; ///< the faces (bit k: face k) whose hull misses the whole tile
+  std::uint8_t Box = 0;         ///< the box's hull's edges that cross the tile
+  std::uint8_t FacesIn = 0;     ///< the faces (bit k: face k) whose hull holds the whole tile
+  std::uint8_t FacesAcross = 0; ///< the faces whose hull's edges cross the tile
   std::uint8_t Faces[6] = { 0, 0, 0, 0, 0, 0 }; ///< per face, its hull's edges that cross the tile
 };
 
@@ -434,9 +435,11 @@ struct WalkEntry
 /// reused from ray to ray: a ray allocates nothing once it has grown.
 struct FrameRayScratch
 {
-  std::vector<BoxSegment> Segments; ///< the ray's intervals handed out, front to back
-  std::vector<BoxSegment> Pending;  ///< warped, not handed out yet: sorted from PendingHead
-  std::size_t PendingHead = 0;
+  /// The ray's intervals: [0, Handed) handed out, front to back; then those
+  /// warped and not handed out yet, sorted. A warp writes its intervals here
+  /// once, where they stay (StartWalk reserves room for the most there can be).
+  std::vector<BoxSegment> Segments;
+  std::size_t Handed = 0;
   /// The boxes still to warp, sorted from NextEntry.
   std::vector<WalkEntry> Entries;
   std::size_t NextEntry = 0;
@@ -583,8 +586,7 @@ struct FrameCage
   std::size_t StartWalk(int x, int y, const glm::dvec3& d, FrameRayScratch& scratch) const
   {
     scratch.Segments.clear();
-    scratch.Pending.clear();
-    scratch.PendingHead = 0;
+    scratch.Handed = 0;
     scratch.Entries.clear();
     scratch.NextEntry = 0;
     scratch.Pixel = glm::dvec2(x, y);
@@ -629,18 +631,18 @@ struct FrameCage
 
   /**
    * The next interval, front to back (in CollectSegments' order), of the ray
-   * StartWalk started, appended to scratch.Segments; nullptr after the last.
+   * StartWalk started, handed out of scratch.Segments; nullptr after the last.
    * Boxes for which `skip(box index)` is true are not warped: their
    * intervals are left out.
    */
   template<typename Skip>
   BoxSegment* NextSegment(const glm::dvec3& d, FrameRayScratch& scratch, Skip&& skip) const
   {
-    std::vector<BoxSegment>& pending = scratch.Pending;
+    std::vector<BoxSegment>& segments = scratch.Segments;
     // Warp every box the ray enters no later than the nearest pending interval.
     while (scratch.NextEntry < scratch.Entries.size() &&
-      (scratch.PendingHead == pending.size() ||
-        !(scratch.Entries[scratch.NextEntry].T > pending[scratch.PendingHead].Segment.TEnter)))
+      (scratch.Handed == segments.size() ||
+        !(scratch.Entries[scratch.NextEntry].T > segments[scratch.Handed].Segment.TEnter)))
     {
       const WalkEntry& entry = scratch.Entries[scratch.NextEntry++];
       const int b = entry.Box;
@@ -650,13 +652,14 @@ struct FrameCage
       }
       const RenderBox& box = (*this->Boxes)[b];
       const HullsInTile& hulls = this->TileHulls[entry.Listed];
-      int faces = 0;
-      for (int face = 0; face < 6; ++face)
+      int faces = hulls.FacesIn;
+      for (int face = 0, across = hulls.FacesAcross; across != 0; ++face, across >>= 1)
       {
-        faces |=
-          (!(hulls.FacesOut & (1 << face)) &&
-            this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y, hulls.Faces[face]))
-          << face;
+        if ((across & 1) &&
+          this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y, hulls.Faces[face]))
+        {
+          faces |= 1 << face;
+        }
       }
       WarpedSegment found[MaxWarpedSegments];
       const int n = WarpRayThroughBox(this->Seen[b],
@@ -670,19 +673,21 @@ struct FrameCage
         faces);
       for (int k = 0; k < n; ++k)
       {
-        const BoxSegment segment{ found[k], b, -1, b == scratch.Landing };
-        pending.insert(
-          std::upper_bound(
-            pending.begin() + scratch.PendingHead, pending.end(), segment, detail::NearerSegment),
-          segment);
+        // Into its place among the pending intervals, after those of equal order.
+        segments.push_back({ found[k], b, -1, b == scratch.Landing });
+        std::rotate(std::upper_bound(segments.begin() + scratch.Handed,
+                      segments.end() - 1,
+                      segments.back(),
+                      detail::NearerSegment),
+          segments.end() - 1,
+          segments.end());
       }
     }
-    if (scratch.PendingHead == pending.size())
+    if (scratch.Handed == segments.size())
     {
       return nullptr;
     }
-    scratch.Segments.push_back(pending[scratch.PendingHead++]);
-    return &scratch.Segments.back();
+    return &segments[scratch.Handed++];
   }
 
   /**
@@ -922,7 +927,8 @@ private:
       for (int face = 0; face < 6; ++face)
       {
         const int across = this->FaceHulls[b][face].EdgesAcross(x0, y0, x1, y1);
-        hulls.FacesOut |= (across < 0) << face;
+        hulls.FacesIn |= (across == 0) << face;
+        hulls.FacesAcross |= (across > 0) << face;
         hulls.Faces[face] = static_cast<std::uint8_t>(std::max(across, 0));
       }
     }
@@ -1647,10 +1653,10 @@ ViewSample RenderView(const glm::dvec3& o,
 /**
  * RenderView for the ray through pixel (x, y) of a frame: the same result,
  * with the boxes tried and warped through `cage` (FrameCage), front to back
- * and only as far as needed. On return scratch.Segments holds the ray's
- * intervals up to the one that gave the pixel (all of them when none did),
- * but those of boxes that did not move and whose label the view ray does not
- * show.
+ * and only as far as needed. On return the first scratch.Handed of
+ * scratch.Segments are the ray's intervals up to the one that gave the pixel
+ * (all of them when none did), but those of boxes that did not move and whose
+ * label the view ray does not show.
  */
 template<typename Lookup>
 ViewSample RenderView(const FrameCage& cage,
@@ -1665,8 +1671,11 @@ ViewSample RenderView(const FrameCage& cage,
   // 3-box swim): tested here, inlined, they skip the call that starts a walk
   // (the swim's frame 239.4 -> 228.4 M instructions).
   scratch.Segments.clear();
+  scratch.Handed = 0;
   const bool any = settings.UseLabels && !cage.Boxes->empty() && cage.CountCandidates(x, y) > 0 &&
     cage.StartWalk(x, y, d, scratch) > 0;
+  // (The widened search reads scratch.Segments when no interval matched: the
+  // walk then handed every one out.)
   return detail::ShadeView(
     cage.Eye,
     d,

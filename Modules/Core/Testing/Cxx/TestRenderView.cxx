@@ -350,9 +350,9 @@ void HundredBoxFrame()
         // The walk hands the intervals out up to the one that gave the pixel.
         const std::vector<lfd::BoxSegment>& segments = scratch.Segments;
         bool same = seen.Label == expected.Label && seen.Color == expected.Color &&
-          seen.Depth == expected.Depth && segments.size() <= kept.size() &&
-          (seen.Label > 0 || segments.size() == kept.size());
-        for (std::size_t k = 0; same && k < segments.size(); ++k)
+          seen.Depth == expected.Depth && scratch.Handed <= kept.size() &&
+          (seen.Label > 0 || scratch.Handed == kept.size());
+        for (std::size_t k = 0; same && k < scratch.Handed; ++k)
         {
           same = segments[k].Box == kept[k].Box &&
             segments[k].Segment.TEnter == kept[k].Segment.TEnter &&
