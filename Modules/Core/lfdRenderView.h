@@ -621,7 +621,10 @@ struct FrameCage
     {
       return 0;
     }
-    std::sort(scratch.Entries.begin(), scratch.Entries.end());
+    if (scratch.Entries.size() > 1) // (most rays that meet a box of the swim meet one)
+    {
+      std::sort(scratch.Entries.begin(), scratch.Entries.end());
+    }
     scratch.RunSkipped = nullptr;
     scratch.Landing = -1;
     // NextSegment's intervals never move: ShadeSegments holds one back.
@@ -1306,8 +1309,12 @@ struct SegmentWalk
     return GoesOn(this->Boxes, entry, next);
   }
 
-  /// Looks `entry` up and composites it (records what it showed in BoxSegment::Seen).
-  void Shade(BoxSegment& entry)
+  /**
+   * Looks `entry` up and composites it (records what it showed in
+   * BoxSegment::Seen); `known` is Focal(entry), so that a focal point found
+   * before the lookup is not found again.
+   */
+  void Shade(BoxSegment& entry, double known)
   {
     const RenderBox& box = this->Boxes[entry.Box];
     if (this->Held.Label >= 0 && box.Label != this->Held.Label)
@@ -1366,9 +1373,9 @@ struct SegmentWalk
       // neither gives the pixel nor replaces the held interval.
       return;
     }
-    const double focal = candidate.OnSurface
-      ? seenSamples->Surface
-      : this->Light.FocalParameter(segment.RestEnter, direction);
+    const double focal = candidate.OnSurface ? seenSamples->Surface
+      : std::isnan(known) ? this->Light.FocalParameter(segment.RestEnter, direction)
+                          : known;
     if (box.Moved && focal > 1.0)
     {
       this->Held = candidate;
@@ -1428,7 +1435,7 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
     if (deferred && !(handed && walk.Continues(*deferred, *handed)))
     {
       // The run ends with the deferred interval: it is looked up after all.
-      walk.Shade(*deferred);
+      walk.Shade(*deferred, deferredFocal);
       if (!walk.Going())
       {
         break;
@@ -1455,7 +1462,7 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
       looked = nullptr;
       continue;
     }
-    walk.Shade(*handed);
+    walk.Shade(*handed, focal);
     // A run entered behind its focal point is looked up from its first piece:
     // the pieces behind sample the cameras near where it did too (against
     // the ground truth, looking each up was worse: a dragged slab corner,
