@@ -468,6 +468,9 @@ struct FrameRayScratch
  *   convex hull of its 4 corners, so a ray outside that hull misses the
  *   face, which the warp then does not intersect (a ray across a thin slab
  *   meets its 2 wide faces, and is outside the slivers of its 4 sides);
+ *   per tile that lists the box, the edges of these hulls that cross the
+ *   tile (HullsInTile): a ray tests only those (the 3-box swim's frame
+ *   195.3 -> 189.0 M instructions);
  * - a culling structure: the image is cut into square tiles and each box is
  *   listed in the tiles of its screen-space bounding rectangle (the
  *   projection of its bounds' 8 corners, one pixel wider on every side; a
@@ -925,8 +928,9 @@ private:
       const int y1 = std::min(y0 + this->TileSize, height) - 1;
       HullsInTile& hulls = this->TileHulls[i];
       // (Without culling, a box whose hull misses the tile tests every edge.)
-      const int across = this->Hulls[b].EdgesAcross(x0, y0, x1, y1);
-      hulls.Box = static_cast<std::uint8_t>(across >= 0 ? across : (1 << this->Hulls[b].Count) - 1);
+      const int boxAcross = this->Hulls[b].EdgesAcross(x0, y0, x1, y1);
+      hulls.Box =
+        static_cast<std::uint8_t>(boxAcross >= 0 ? boxAcross : (1 << this->Hulls[b].Count) - 1);
       for (int face = 0; face < 6; ++face)
       {
         const int across = this->FaceHulls[b][face].EdgesAcross(x0, y0, x1, y1);
