@@ -277,12 +277,16 @@ constexpr int HexFacePatch[6][4] = { { 0, 3, 4, 7 },
 /// The box parametric point of face `face` at patch parameters `st`.
 inline glm::dvec3 FaceToBox(int face, const glm::dvec2& st)
 {
-  const int axis = face / 2;
-  glm::dvec3 uvw;
-  uvw[axis] = face % 2;
-  uvw[axis == 0 ? 1 : 0] = st.x;
-  uvw[axis == 2 ? 1 : 2] = st.y;
-  return uvw;
+  const double side = face % 2;
+  switch (face / 2)
+  {
+    case 0:
+      return { side, st.x, st.y };
+    case 1:
+      return { st.x, side, st.y };
+    default:
+      return { st.x, st.y, side };
+  }
 }
 
 /// Rest image of a deformed-space point: the rest map at the deformed map's
@@ -498,8 +502,10 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
     segment.UvwEnter = enter.Uvw;
     segment.UvwExit = exit.Uvw;
     segment.FaceExit = exit.Face;
-    segment.RestEnter = TrilinearMap(rest, enter.Uvw);
-    segment.RestExit = TrilinearMap(rest, exit.Uvw);
+    // (Only the point at tMin is off the faces.)
+    segment.RestEnter = enter.OnFace ? TrilinearMapOnFace(rest, enter.Face, enter.Uvw)
+                                     : TrilinearMap(rest, enter.Uvw);
+    segment.RestExit = TrilinearMapOnFace(rest, exit.Face, exit.Uvw);
   }
   return written;
 }

@@ -117,18 +117,72 @@ inline bool RayStretchInBounds(const glm::dvec3& o,
   return true;
 }
 
+namespace detail
+{
+/// The term of corner i in Eq. (2): its basis function at uvw times the corner.
+inline glm::dvec3 TrilinearTerm(const Hexahedron& box, const glm::dvec3& uvw, int i)
+{
+  const double bu = HexCorner[i][0] ? uvw.x : 1.0 - uvw.x;
+  const double bv = HexCorner[i][1] ? uvw.y : 1.0 - uvw.y;
+  const double bw = HexCorner[i][2] ? uvw.z : 1.0 - uvw.z;
+  return (bu * bv * bw) * box.Corners[i];
+}
+} // namespace detail
+
 /// Eq. (2): the point of the box at parametric coordinates uvw.
 inline glm::dvec3 TrilinearMap(const Hexahedron& box, const glm::dvec3& uvw)
 {
   glm::dvec3 p(0.0);
   for (int i = 0; i < 8; ++i)
   {
-    const double bu = HexCorner[i][0] ? uvw.x : 1.0 - uvw.x;
-    const double bv = HexCorner[i][1] ? uvw.y : 1.0 - uvw.y;
-    const double bw = HexCorner[i][2] ? uvw.z : 1.0 - uvw.z;
-    p += (bu * bv * bw) * box.Corners[i];
+    p += detail::TrilinearTerm(box, uvw, i);
   }
   return p;
+}
+
+namespace detail
+{
+/// TrilinearMapOnFace on face `Face` (VTK's hexahedron face order: axis Face / 2, side Face % 2).
+template<int Face>
+glm::dvec3 TrilinearMapOnFace(const Hexahedron& box, const glm::dvec3& uvw)
+{
+  glm::dvec3 p(0.0);
+  for (int i = 0; i < 8; ++i)
+  {
+    if (HexCorner[i][Face / 2] == Face % 2)
+    {
+      p += TrilinearTerm(box, uvw, i);
+    }
+  }
+  return p;
+}
+} // namespace detail
+
+/**
+ * TrilinearMap of a point on face `face` of the box (VTK's hexahedron face
+ * order: 0 is u = 0, 1 is u = 1, 2 is v = 0, ...): its coordinate there is
+ * exactly 0 or 1 and the others lie in [0, 1]. The 4 corners of the
+ * opposite face weigh exactly +0, and adding their +-0 terms leaves a sum
+ * that starts at +0 unchanged, so the sum of the other 4, in the same
+ * order, is the same point to the bit at half the cost.
+ */
+inline glm::dvec3 TrilinearMapOnFace(const Hexahedron& box, int face, const glm::dvec3& uvw)
+{
+  switch (face)
+  {
+    case 0:
+      return detail::TrilinearMapOnFace<0>(box, uvw);
+    case 1:
+      return detail::TrilinearMapOnFace<1>(box, uvw);
+    case 2:
+      return detail::TrilinearMapOnFace<2>(box, uvw);
+    case 3:
+      return detail::TrilinearMapOnFace<3>(box, uvw);
+    case 4:
+      return detail::TrilinearMapOnFace<4>(box, uvw);
+    default:
+      return detail::TrilinearMapOnFace<5>(box, uvw);
+  }
 }
 
 /// Jacobian d p / d (u,v,w) of the map; column k is the derivative along k.

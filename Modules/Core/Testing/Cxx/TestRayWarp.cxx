@@ -3,12 +3,14 @@
 // of the deformed ones, and the segments are exactly the inside of the box;
 // rays through edges and corners and rays grazing a face give the right
 // number of segments and no NaN; a twisted box is entered twice; a ray
-// leaving one box enters its face neighbour at the same point.
+// leaving one box enters its face neighbour at the same point; a point of a
+// face maps into the rest box as well through the face's 4 corners alone.
 #include "lfdRayWarp.h"
 #include "lfdTestChecks.h"
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <random>
 
@@ -389,9 +391,44 @@ void SharedFace()
 }
 }
 
+/**
+ * The warp maps its face crossings into the rest box with TrilinearMapOnFace:
+ * the same points, to the bit, as TrilinearMap, on random boxes (corners
+ * anywhere, of either sign) at random points of every face, its edges and
+ * its corners.
+ */
+void MapOnFaces()
+{
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), corner(-3.0, 3.0);
+  int different = 0;
+  for (int trial = 0; trial < 2000; ++trial)
+  {
+    lfd::Hexahedron box;
+    for (auto& c : box.Corners)
+    {
+      c = glm::dvec3(corner(rng), corner(rng), corner(rng));
+    }
+    // Every fourth point on an edge or a corner of the face.
+    const glm::dvec2 st = trial % 4 == 0
+      ? glm::dvec2(
+          std::floor(2.0 * unit(rng)), trial % 8 == 0 ? std::floor(2.0 * unit(rng)) : unit(rng))
+      : glm::dvec2(unit(rng), unit(rng));
+    for (int face = 0; face < 6; ++face)
+    {
+      const glm::dvec3 uvw = lfd::FaceToBox(face, st);
+      const glm::dvec3 onFace = lfd::TrilinearMapOnFace(box, face, uvw);
+      const glm::dvec3 anywhere = lfd::TrilinearMap(box, uvw);
+      different += std::memcmp(&onFace, &anywhere, sizeof(onFace)) != 0;
+    }
+  }
+  Expect("points of faces (12000) mapped unlike TrilinearMap, bitwise", different, 0);
+}
+
 int TestRayWarp(int, char*[])
 {
   using namespace TestRayWarpHelpers;
+  MapOnFaces();
   RandomBoxes();
   EdgesCornersAndGrazing();
   TwistedBox();

@@ -350,9 +350,9 @@ void HundredBoxFrame()
         // The walk hands the intervals out up to the one that gave the pixel.
         const std::vector<lfd::BoxSegment>& segments = scratch.Segments;
         bool same = seen.Label == expected.Label && seen.Color == expected.Color &&
-          seen.Depth == expected.Depth && segments.size() <= kept.size() &&
-          (seen.Label > 0 || segments.size() == kept.size());
-        for (std::size_t k = 0; same && k < segments.size(); ++k)
+          seen.Depth == expected.Depth && scratch.Handed <= kept.size() &&
+          (seen.Label > 0 || scratch.Handed == kept.size());
+        for (std::size_t k = 0; same && k < scratch.Handed; ++k)
         {
           same = segments[k].Box == kept[k].Box &&
             segments[k].Segment.TEnter == kept[k].Segment.TEnter &&
@@ -454,7 +454,7 @@ void TiltedSlabs()
         // whose projected hull holds the pixel.
         for (std::size_t i = 0; i < scratch.NextEntry; ++i)
         {
-          const int b = scratch.Entries[i].second;
+          const int b = scratch.Entries[i].Box;
           if (scratch.Skipped[b] == scratch.Ray)
           {
             continue;
@@ -570,7 +570,7 @@ void RunLookedUpOnce()
   int skipped = 0;
   for (std::size_t i = 0; i < scratch.NextEntry; ++i)
   {
-    skipped += scratch.Skipped[scratch.Entries[i].second] == scratch.Ray;
+    skipped += scratch.Skipped[scratch.Entries[i].Box] == scratch.Ray;
   }
   Expect("  cubes behind the looked-up one left out unwarped", skipped, 3);
   Expect("  the third cube's neighbour through its top (w = 1)", cage.Neighbors[2][5], 6 * 3 + 4);
