@@ -6,7 +6,7 @@
  * 94 MB). Filled on 4 KiB pages, each page costs the kernel a fault, and on
  * a virtual machine a fault is slow: reading the fish (vtkLightFieldReader)
  * took 47 000 faults and 1.05 s of CPU, of which about 0.24 s went to the
- * 24 000 faults of its passes. Where the kernel gives transparent huge pages
+ * 22 000 faults of its passes. Where the kernel gives transparent huge pages
  * to the ranges that ask for them (THP in `madvise` mode, the default of most
  * distributions), asking before the first write makes each 2 MiB fault in
  * at once: 25 000 faults and 0.82 s (README, Benchmarks).
@@ -14,7 +14,7 @@
  * vtkLightField::AllocatePass() asks for every pass it allocates, before
  * filling it, which covers every reader, importer, synthesizer and filter of
  * lfd. The lookup itself does not read faster from huge pages on the
- * machines measured (the same frame from the same bytes on 4 KiB pages, on
+ * machine measured (the same frame from the same bytes on 4 KiB pages, on
  * huge pages and in numpy's memory took the same CPU time), so memory that
  * came from elsewhere (a DeepCopy, numpy) is not moved onto them.
  */
