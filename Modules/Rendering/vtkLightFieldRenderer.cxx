@@ -346,10 +346,10 @@ struct FrameSettings
  * frame's when nothing but the renderer and `output` still holds it,
  * otherwise a new array. A frame's arrays are 2 MB at 512x512, and glibc
  * gives blocks that large back to the kernel when they are freed (mmap, or
- * the top of the heap trimmed): allocated anew, every frame faulted in 480
- * fresh pages again, every other frame at least, 1/3 of a 512x512 frame's CPU
- * time on a virtual machine (README, Benchmarks). Every pixel is written
- * (RenderRows), so the previous frame's values never show.
+ * the top of the heap trimmed): allocated anew, they faulted in 480 fresh
+ * pages every other frame, about 5 of a 512x512 frame's 20 ms of CPU on a
+ * virtual machine (README, Benchmarks). Every pixel is written (RenderRows),
+ * so the previous frame's values never show.
  */
 template<typename ArrayT>
 ArrayT* FrameArray(vtkSmartPointer<ArrayT>& array,
