@@ -1,5 +1,7 @@
 #include "vtkLightField.h"
 
+#include "lfdHugePages.h"
+
 #include "vtkCameraRig.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
@@ -228,6 +230,11 @@ vtkDataArray* vtkLightField::AllocatePass(int pass)
   array->SetName(name);
   array->SetNumberOfComponents(GetPassComponents(pass));
   array->SetNumberOfTuples(this->GetNumberOfPoints());
+  // Before the first write (Fill), so that the pass faults in 2 MiB at a
+  // time instead of 4 KiB (lfdHugePages.h).
+  lfd::AdviseHugePages(array->GetVoidPointer(0),
+    static_cast<std::size_t>(array->GetNumberOfValues()) *
+      static_cast<std::size_t>(array->GetDataTypeSize()));
   array->Fill(0.0);
   this->GetPointData()->AddArray(array);
   if (pass == COAXIAL)

@@ -327,49 +327,58 @@ bool OwnsEveryPart(const lfd::RenderViewSettings& settings, vtkLightField* light
   return true;
 }
 
-/// What a frame is rendered with, besides the light field and the cage.
+/// What a frame is rendered with, besides the light field and the cage,
+/// and into which arrays.
 struct FrameSettings
 {
   bool Accelerated; // through the frame cage, or every ray through every box
   int Width;
   int Height;
   std::uint8_t Background[3];
+  std::uint8_t* Radiance; // Width x Height RGB, VTK row order
+  std::uint8_t* Labels;
+  float* Depths;
 };
 
-/// The Width x Height output image with its Radiance, Label and Depth
-/// arrays, and `functor` pointed at them.
-template<typename Lookup>
-void AllocateImage(vtkImageData* output, int width, int height, RenderRows<Lookup>& functor)
+/**
+ * `array` (the renderer's array of one output pass, named `name`) sized for
+ * `tuples` pixels of `components` values and marked modified: the previous
+ * frame's when nothing but the renderer and `output` still holds it,
+ * otherwise a new array. A frame's arrays are 2 MB at 512x512, and glibc
+ * gives blocks that large back to the kernel when they are freed (mmap, or
+ * the top of the heap trimmed): allocated anew, they faulted in 480 fresh
+ * pages every other frame, about 5 of a 512x512 frame's 20 ms of CPU on a
+ * virtual machine (README, Benchmarks). Every pixel is written (RenderRows),
+ * so the previous frame's values never show.
+ */
+template<typename ArrayT>
+ArrayT* FrameArray(vtkSmartPointer<ArrayT>& array,
+  vtkImageData* output,
+  const char* name,
+  int components,
+  vtkIdType tuples)
 {
-  output->SetExtent(0, width - 1, 0, height - 1, 0, 0);
-  output->SetSpacing(1.0, 1.0, 1.0);
-  output->SetOrigin(0.0, 0.0, 0.0);
-  vtkNew<vtkUnsignedCharArray> image;
-  image->SetName("Radiance");
-  image->SetNumberOfComponents(3);
-  image->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
-  vtkNew<vtkUnsignedCharArray> labels;
-  labels->SetName("Label");
-  labels->SetNumberOfTuples(image->GetNumberOfTuples());
-  vtkNew<vtkFloatArray> depths;
-  depths->SetName("Depth");
-  depths->SetNumberOfTuples(image->GetNumberOfTuples());
-  output->GetPointData()->SetScalars(image);
-  output->GetPointData()->AddArray(labels);
-  output->GetPointData()->AddArray(depths);
-  functor.Radiance = image->GetPointer(0);
-  functor.Labels = labels->GetPointer(0);
-  functor.Depths = depths->GetPointer(0);
+  // vtkImageData::PrepareForNewData keeps the output's scalars, and drops
+  // its other arrays, before the request.
+  const bool outputHolds = output->GetPointData()->GetAbstractArray(name) == array.Get();
+  if (!array || array->GetReferenceCount() != (outputHolds ? 2 : 1))
+  {
+    array = vtkSmartPointer<ArrayT>::New();
+    array->SetName(name);
+  }
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  array->Modified();
+  return array;
 }
 
-/// Renders `output` through `cage`, one ray per pixel looked up through
-/// `lookup` (ring or two-plane), rows in parallel.
+/// Renders `frame`'s arrays through `cage`, one ray per pixel looked up
+/// through `lookup` (ring or two-plane), rows in parallel.
 template<typename Lookup>
 void RenderFrame(const Lookup& lookup,
   const lfd::FrameCage& cage,
   const lfd::RenderViewSettings& settings,
   const FrameSettings& frame,
-  vtkImageData* output,
   std::vector<std::uint8_t> tiles = {})
 {
   RenderRows<Lookup> functor{ lookup,
@@ -379,13 +388,12 @@ void RenderFrame(const Lookup& lookup,
     frame.Width,
     frame.Height,
     { frame.Background[0], frame.Background[1], frame.Background[2] },
-    nullptr,
-    nullptr,
-    nullptr,
+    frame.Radiance,
+    frame.Labels,
+    frame.Depths,
     {},
     std::move(tiles),
     lfd::FrameCage::DefaultTileSize };
-  AllocateImage(output, frame.Width, frame.Height, functor);
   vtkSMPTools::For(0, frame.Height, functor);
 }
 }
@@ -644,8 +652,14 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     this->Width,
     this->Height,
     lfd::FrameCage::DefaultTileSize);
-  vtkImageData* output = vtkImageData::GetData(outputVector);
-  FrameSettings frame{ this->CageAcceleration, this->Width, this->Height, {} };
+  this->AllocateOutput(vtkImageData::GetData(outputVector));
+  FrameSettings frame{ this->CageAcceleration,
+    this->Width,
+    this->Height,
+    {},
+    this->FrameRadiance->GetPointer(0),
+    this->FrameLabels->GetPointer(0),
+    this->FrameDepths->GetPointer(0) };
   for (int c = 0; c < 3; ++c)
   {
     frame.Background[c] =
@@ -657,7 +671,7 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     const lfd::TwoPlaneSampler twoPlane{
       &plane, cameras.data(), sampler.Radiance, sampler.Labels, this->FocalDepth, this->Aperture
     };
-    RenderFrame(lfd::TwoPlaneLookup{ twoPlane, eye.Forward() }, cage, settings, frame, output);
+    RenderFrame(lfd::TwoPlaneLookup{ twoPlane, eye.Forward() }, cage, settings, frame);
   }
   else
   {
@@ -690,7 +704,6 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
       cage,
       settings,
       frame,
-      output,
       std::move(tiles));
   }
   return 1;
@@ -723,6 +736,19 @@ void vtkLightFieldRenderer::GetEyePinhole(double K[9], double R[9], double t[3])
   std::copy(this->PinholeK, this->PinholeK + 9, K);
   std::copy(this->PinholeR, this->PinholeR + 9, R);
   std::copy(this->PinholeT, this->PinholeT + 3, t);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldRenderer::AllocateOutput(vtkImageData* output)
+{
+  output->SetExtent(0, this->Width - 1, 0, this->Height - 1, 0, 0);
+  output->SetSpacing(1.0, 1.0, 1.0);
+  output->SetOrigin(0.0, 0.0, 0.0);
+  const vtkIdType pixels = static_cast<vtkIdType>(this->Width) * this->Height;
+  output->GetPointData()->SetScalars(
+    FrameArray(this->FrameRadiance, output, "Radiance", 3, pixels));
+  output->GetPointData()->AddArray(FrameArray(this->FrameLabels, output, "Label", 1, pixels));
+  output->GetPointData()->AddArray(FrameArray(this->FrameDepths, output, "Depth", 1, pixels));
 }
 
 //------------------------------------------------------------------------------

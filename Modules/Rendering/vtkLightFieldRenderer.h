@@ -76,7 +76,10 @@ class vtkCamera;
 class vtkCameraRig;
 class vtkDataArray;
 class vtkDeformationCage;
+class vtkFloatArray;
+class vtkImageData;
 class vtkLightField;
+class vtkUnsignedCharArray;
 class vtkUnstructuredGrid;
 
 class LFDRENDERING_EXPORT vtkLightFieldRenderer : public vtkImageAlgorithm
@@ -438,6 +441,19 @@ private:
   std::unique_ptr<lfd::NearestDepthTiles> ProxyTiles;
   vtkObject* ProxyExtentArray = nullptr; // compared, never dereferenced
   vtkTimeStamp ProxyExtentTime;
+
+  /**
+   * Gives `output` its Width x Height Radiance, Label and Depth arrays: the
+   * last frame's (FrameRadiance, FrameLabels, FrameDepths) when nothing else
+   * holds them, so that a frame's memory is not handed back to the kernel
+   * and faulted in again by the next (FrameArray in the .cxx); otherwise new
+   * ones, which become the renderer's.
+   */
+  void AllocateOutput(vtkImageData* output);
+
+  vtkSmartPointer<vtkUnsignedCharArray> FrameRadiance;
+  vtkSmartPointer<vtkUnsignedCharArray> FrameLabels;
+  vtkSmartPointer<vtkFloatArray> FrameDepths;
 
   vtkSmartPointer<vtkLightField> Parts; // the derived light field of OnePart()
   vtkLightField* PartsInput = nullptr;  // compared, never dereferenced

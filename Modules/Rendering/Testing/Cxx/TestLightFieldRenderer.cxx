@@ -4,6 +4,7 @@
 // on the cylinder, so all the weight goes to that view). (2) A novel view
 // between the captured ones matches the analytic image of the square.
 // (3) Leaving views out and label-aware background behave as documented.
+// (4) A frame kept by the caller is not overwritten by the next.
 #include "lfdPinholeCamera.h"
 #include "lfdTestChecks.h"
 #include "vtkCamera.h"
@@ -14,9 +15,11 @@
 #include "vtkLightFieldRenderer.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -151,5 +154,33 @@ int TestLightFieldRenderer(int, char*[])
   const unsigned char* corner = image->GetPointer(0);
   Expect(
     corner[0] == 0 && corner[1] == 255 && corner[2] == 0, "background pixel is green", corner[1]);
+
+  // (4) A frame the caller keeps is never overwritten: the next frame gets
+  // new arrays. A frame nobody keeps lends its arrays to the next (no fresh
+  // memory to fault in at each frame), every pixel rewritten.
+  vtkSmartPointer<vtkUnsignedCharArray> kept = image;
+  const std::vector<unsigned char> keptPixels(
+    kept->GetPointer(0), kept->GetPointer(3 * size * size));
+  renderer->SetBackground(0.0, 0.0, 1.0);
+  renderer->Update();
+  vtkPointData* frame = renderer->GetOutput()->GetPointData();
+  const vtkDataArray* blue = frame->GetScalars();
+  const vtkDataArray* labels = frame->GetArray("Label");
+  const vtkDataArray* depths = frame->GetArray("Depth");
+  Expect(
+    blue != kept.Get() && std::equal(keptPixels.begin(), keptPixels.end(), kept->GetPointer(0)),
+    "the kept frame keeps its pixels (its first, green)",
+    static_cast<int>(kept->GetPointer(0)[1]));
+  kept = nullptr;
+  renderer->SetBackground(1.0, 0.0, 0.0);
+  renderer->Update();
+  Expect(frame->GetScalars() == blue && frame->GetArray("Label") == labels &&
+      frame->GetArray("Depth") == depths,
+    "the next frame reuses the arrays nobody kept",
+    frame->GetScalars() == blue);
+  image = vtkUnsignedCharArray::SafeDownCast(frame->GetScalars());
+  Expect(image->GetPointer(0)[0] == 255 && image->GetPointer(0)[2] == 0,
+    "and rewrites them: the background pixel is red",
+    static_cast<int>(image->GetPointer(0)[0]));
   return lfdtest::Result();
 }
