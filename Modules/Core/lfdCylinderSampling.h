@@ -1166,6 +1166,25 @@ struct NearestDepthTiles
 inline int VoteLabel(const RaySamples& samples);
 
 /**
+ * Where LightFieldSampler::Gather samples a ray, from its first stage
+ * (LightFieldSampler::Aim()): the focal point, the proxy's stretch and the
+ * views around the ray's entry into the rig.
+ */
+struct RayAim
+{
+  glm::dvec3 Focal; ///< the focal point (FocalPoint()), where the views are sampled
+  /// With a proxy, the stretch [Enter, Leave] of the ray its walk may focus
+  /// on (LightFieldSampler::SurfaceStretch()); Stretch: there is one.
+  bool Stretch;
+  double Enter = 0.0;
+  double Leave = -1.0;
+  double Azimuth; ///< of the ray's entry into the rig cylinder
+  double Height;  ///< of the ray's entry along the rig axis
+  WeightedView Views[4];
+  int Count; ///< views in Views (ChooseViews())
+};
+
+/**
  * The light field as the sampler sees it: the rig layout, one camera per
  * view, the radiance pass and (optionally) the label pass.
  */
@@ -1248,20 +1267,38 @@ struct LightFieldSampler
    */
   bool Gather(const glm::dvec3& o, const glm::dvec3& d, RaySamples& out) const
   {
-    out.Count = 0;
-    out.Surface = std::numeric_limits<double>::quiet_NaN();
-    const glm::dvec3 x = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
+    RayAim aim;
+    if (!this->Aim(o, d, aim))
+    {
+      out.Count = 0;
+      out.Surface = std::numeric_limits<double>::quiet_NaN();
+      return false;
+    }
+    return this->Sample(o, d, aim, out);
+  }
+
+  /**
+   * The first stage of Gather(): the ray's geometry up to its views (focal
+   * point, the Hull's tests, cylinder entry, azimuth and height, the views
+   * around them), no texel read. False when the ray has no sample for sure
+   * (Gather's false before any lookup). A batch of rays runs this stage for
+   * every ray before Sample() for any (see RenderPlainViews): each ray's
+   * stage is a long dependent chain of divisions and square roots, and the
+   * chains of neighbouring rays then overlap in the processor.
+   */
+  bool Aim(const glm::dvec3& o, const glm::dvec3& d, RayAim& aim) const
+  {
+    aim.Focal = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
     const bool hull = this->Hull && !this->Hull->Marks.empty();
-    const long cell = hull ? this->Hull->Cell(x, *this->Layout) : -1;
+    const long cell = hull ? this->Hull->Cell(aim.Focal, *this->Layout) : -1;
     // With a proxy, the stretch [enter, leave] of the ray that its walk may
     // focus on; the ray is skipped when neither it nor the focal point can
-    // have a labelled sample (see above).
-    double enter = 0.0, leave = -1.0;
-    const bool stretch = this->Depth.Present() && this->SurfaceStretch(o, d, enter, leave);
+    // have a labelled sample (see Gather()).
+    aim.Stretch = this->Depth.Present() && this->SurfaceStretch(o, d, aim.Enter, aim.Leave);
     // Most skipped rays are unmarked in every sector: they skip the cylinder
     // entry and the atan2 of the azimuth too (a ray that misses the cylinder
     // returns false as well).
-    if (cell >= 0 && !this->Hull->Union.empty() && !this->Hull->Union[cell] && !stretch)
+    if (cell >= 0 && !this->Hull->Union.empty() && !this->Hull->Union[cell] && !aim.Stretch)
     {
       return false;
     }
@@ -1270,24 +1307,36 @@ struct LightFieldSampler
     {
       return false;
     }
-    double azimuth, height;
-    this->Layout->Locate(o + s * d, azimuth, height);
-    if (hull && !this->Hull->MayMeetPart(azimuth, cell) &&
-      !(stretch && this->Hull->MaySeePart(azimuth, o + enter * d, o + leave * d, *this->Layout)))
+    this->Layout->Locate(o + s * d, aim.Azimuth, aim.Height);
+    if (hull && !this->Hull->MayMeetPart(aim.Azimuth, cell) &&
+      !(aim.Stretch &&
+        this->Hull->MaySeePart(aim.Azimuth, o + aim.Enter * d, o + aim.Leave * d, *this->Layout)))
     {
       return false;
     }
-    WeightedView views[4];
-    const int nviews = ChooseViews(*this->Layout, azimuth, height, views);
-    if (stretch && this->GatherOnSurface(o, d, enter, leave, azimuth, height, views, nviews, out))
+    aim.Count = ChooseViews(*this->Layout, aim.Azimuth, aim.Height, aim.Views);
+    return true;
+  }
+
+  /**
+   * The second stage of Gather(): the samples of the ray `o + s d` that
+   * Aim() aimed (true), into `out`; Gather()'s result.
+   */
+  bool Sample(const glm::dvec3& o, const glm::dvec3& d, const RayAim& aim, RaySamples& out) const
+  {
+    out.Count = 0;
+    out.Surface = std::numeric_limits<double>::quiet_NaN();
+    if (aim.Stretch &&
+      this->GatherOnSurface(
+        o, d, aim.Enter, aim.Leave, aim.Azimuth, aim.Height, aim.Views, aim.Count, out))
     {
       return true;
     }
-    for (int i = 0; i < nviews; ++i)
+    for (int i = 0; i < aim.Count; ++i)
     {
-      if (views[i].Weight > 0.0)
+      if (aim.Views[i].Weight > 0.0)
       {
-        this->AddBilinear(views[i].View, views[i].Weight, x, out);
+        this->AddBilinear(aim.Views[i].View, aim.Views[i].Weight, aim.Focal, out);
       }
     }
     return out.Count > 0;
