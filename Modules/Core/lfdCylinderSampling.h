@@ -116,6 +116,18 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
 }
 
 /**
+ * std::lround(v) (halves away from zero) for |v| < 2^31, without its library
+ * call: the truncation, moved by the fraction (exact: v minus its integer
+ * part).
+ */
+inline int RoundHalfAway(double v)
+{
+  const int t = static_cast<int>(v);
+  const double f = v - t;
+  return t + (f >= 0.5) - (f <= -0.5);
+}
+
+/**
  * The bilinear footprint of the continuous position `uv` (pixel centres at
  * integers) in a width x height image: its top-left pixel (x0, y0), which
  * may lie outside the image by one, the fraction uv - (x0, y0) and the
@@ -1482,13 +1494,8 @@ struct LightFieldSampler
     {
       return false;
     }
-    // Truncation, then the fraction (exact: uv minus its integer part).
-    const int tx = static_cast<int>(uv.x);
-    const int ty = static_cast<int>(uv.y);
-    const double fx = uv.x - tx;
-    const double fy = uv.y - ty;
-    x = tx + (fx >= 0.5) - (fx <= -0.5);
-    y = ty + (fy >= 0.5) - (fy <= -0.5);
+    x = RoundHalfAway(uv.x);
+    y = RoundHalfAway(uv.y);
     return x >= 0 && y >= 0 && x < this->Depth.Width && y < this->Depth.Height;
   }
 

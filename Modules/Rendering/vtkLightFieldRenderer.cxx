@@ -262,7 +262,7 @@ struct RenderRows
     }
     for (int c = 0; c < 3; ++c)
     {
-      rgb[c] = static_cast<std::uint8_t>(std::clamp(std::lround(seen.Color[c]), 0L, 255L));
+      rgb[c] = static_cast<std::uint8_t>(lfd::RoundHalfAway(std::clamp(seen.Color[c], 0.0, 255.0)));
     }
   }
 };
