@@ -39,6 +39,11 @@
  *     the cameras at on its focal plane or cylinder (with a proxy, the
  *     samples' own RaySamples::Surface is used instead when it is set).
  *
+ * and may gather in two stages, which RenderPlainViews() then runs over a
+ * batch of rays (SamplerLookup does): a type Aimed, Aim(o, d, Aimed&) (the
+ * ray's geometry; false: no sample), Sample(o, d, Aimed&, RaySamples&)
+ * (Gather's result) and FocalDepth(o, const Aimed&).
+ *
  * A lookup sees the first surface along the whole line of a warped ray, not
  * only along its interval, and it samples the cameras at the line's focal
  * point. In a tessellated box (lfdTessellation.h) the intervals in front of
