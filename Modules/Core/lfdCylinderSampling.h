@@ -116,6 +116,18 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
 }
 
 /**
+ * std::lround(v) (halves away from zero) for |v| < 2^31, without its library
+ * call: the truncation, moved by the fraction (exact: v minus its integer
+ * part).
+ */
+inline int RoundHalfAway(double v)
+{
+  const int t = static_cast<int>(v);
+  const double f = v - t;
+  return t + (f >= 0.5) - (f <= -0.5);
+}
+
+/**
  * The bilinear footprint of the continuous position `uv` (pixel centres at
  * integers) in a width x height image: its top-left pixel (x0, y0), which
  * may lie outside the image by one, the fraction uv - (x0, y0) and the
@@ -216,6 +228,48 @@ struct RingRow
   double Height = 0.0;
   std::vector<double> Azimuth;
   std::vector<int> View;
+  /// Per bucket k of [0, 2 pi) cut in Buckets.size() equal parts, the
+  /// number of views whose azimuth is at most the bucket's start (Index()).
+  std::vector<int> Buckets;
+  double BucketsPerRadian = 0.0;
+
+  /// Fills Buckets, 4 per view, once Azimuth holds the row's views.
+  void Index()
+  {
+    this->Buckets.resize(4 * this->Azimuth.size());
+    this->BucketsPerRadian = this->Buckets.size() / TwoPi;
+    for (std::size_t k = 0; k < this->Buckets.size(); ++k)
+    {
+      this->Buckets[k] = static_cast<int>(
+        std::upper_bound(this->Azimuth.begin(), this->Azimuth.end(), k / this->BucketsPerRadian) -
+        this->Azimuth.begin());
+    }
+  }
+
+  /// The number of views whose azimuth is at most `azimuth`
+  /// (std::upper_bound's index).
+  std::size_t Upper(double azimuth) const
+  {
+    // From the azimuth's bucket (without Index(), from the first view):
+    // with 4 buckets per view, most rays' answer is their bucket's, the
+    // others' one view on; the walks make it exact however the bucket
+    // rounds. A chain of a multiplication and a load or two, where a search
+    // by halves is 7 dependent loads (120 views).
+    const std::size_t n = this->Azimuth.size();
+    const int last = static_cast<int>(this->Buckets.size()) - 1;
+    std::size_t upper = last < 0
+      ? 0
+      : this->Buckets[std::clamp(static_cast<int>(azimuth * this->BucketsPerRadian), 0, last)];
+    while (upper > 0 && this->Azimuth[upper - 1] > azimuth)
+    {
+      --upper;
+    }
+    while (upper < n && this->Azimuth[upper] <= azimuth)
+    {
+      ++upper;
+    }
+    return upper;
+  }
 };
 
 /**
@@ -263,19 +317,8 @@ inline int BracketAzimuth(const RingRow& row, double azimuth, double rowWeight, 
     return 1;
   }
   // First view with an azimuth greater than the query (std::upper_bound's
-  // answer), the one before it (cyclically) the lower neighbour. Halved
-  // without a branch: neighbouring rays' azimuths fall on either side of
-  // the probes at random, and std::upper_bound's mispredicted branches cost
-  // more cycles than its comparisons.
-  const double* first = row.Azimuth.data();
-  std::size_t count = n;
-  while (count > 1)
-  {
-    const std::size_t half = count / 2;
-    first = first[half] <= azimuth ? first + half : first;
-    count -= half;
-  }
-  const std::size_t upper = (first - row.Azimuth.data()) + (*first <= azimuth ? 1 : 0);
+  // answer), the one before it (cyclically) the lower neighbour.
+  const std::size_t upper = row.Upper(azimuth);
   // upper is in [0, n]: the neighbours wrap without a division.
   const std::size_t hi = upper == n ? 0 : upper;
   const std::size_t lo = upper == 0 ? n - 1 : upper - 1;
@@ -1166,6 +1209,25 @@ struct NearestDepthTiles
 inline int VoteLabel(const RaySamples& samples);
 
 /**
+ * Where LightFieldSampler::Gather samples a ray, from its first stage
+ * (LightFieldSampler::Aim()): the focal point, the proxy's stretch and the
+ * views around the ray's entry into the rig.
+ */
+struct RayAim
+{
+  glm::dvec3 Focal; ///< the focal point (FocalPoint()), where the views are sampled
+  /// With a proxy, the stretch [Enter, Leave] of the ray its walk may focus
+  /// on (LightFieldSampler::SurfaceStretch()); Stretch: there is one.
+  bool Stretch;
+  double Enter = 0.0;
+  double Leave = -1.0;
+  double Azimuth; ///< of the ray's entry into the rig cylinder
+  double Height;  ///< of the ray's entry along the rig axis
+  WeightedView Views[4];
+  int Count; ///< views in Views (ChooseViews())
+};
+
+/**
  * The light field as the sampler sees it: the rig layout, one camera per
  * view, the radiance pass and (optionally) the label pass.
  */
@@ -1248,20 +1310,38 @@ struct LightFieldSampler
    */
   bool Gather(const glm::dvec3& o, const glm::dvec3& d, RaySamples& out) const
   {
-    out.Count = 0;
-    out.Surface = std::numeric_limits<double>::quiet_NaN();
-    const glm::dvec3 x = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
+    RayAim aim;
+    if (!this->Aim(o, d, aim))
+    {
+      out.Count = 0;
+      out.Surface = std::numeric_limits<double>::quiet_NaN();
+      return false;
+    }
+    return this->Sample(o, d, aim, out);
+  }
+
+  /**
+   * The first stage of Gather(): the ray's geometry up to its views (focal
+   * point, the Hull's tests, cylinder entry, azimuth and height, the views
+   * around them), no texel read. False when the ray has no sample for sure
+   * (Gather's false before any lookup). A batch of rays runs this stage for
+   * every ray before Sample() for any (see RenderPlainViews): each ray's
+   * stage is a long dependent chain of divisions and square roots, and the
+   * chains of neighbouring rays then overlap in the processor.
+   */
+  bool Aim(const glm::dvec3& o, const glm::dvec3& d, RayAim& aim) const
+  {
+    aim.Focal = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
     const bool hull = this->Hull && !this->Hull->Marks.empty();
-    const long cell = hull ? this->Hull->Cell(x, *this->Layout) : -1;
+    const long cell = hull ? this->Hull->Cell(aim.Focal, *this->Layout) : -1;
     // With a proxy, the stretch [enter, leave] of the ray that its walk may
     // focus on; the ray is skipped when neither it nor the focal point can
-    // have a labelled sample (see above).
-    double enter = 0.0, leave = -1.0;
-    const bool stretch = this->Depth.Present() && this->SurfaceStretch(o, d, enter, leave);
+    // have a labelled sample (see Gather()).
+    aim.Stretch = this->Depth.Present() && this->SurfaceStretch(o, d, aim.Enter, aim.Leave);
     // Most skipped rays are unmarked in every sector: they skip the cylinder
     // entry and the atan2 of the azimuth too (a ray that misses the cylinder
     // returns false as well).
-    if (cell >= 0 && !this->Hull->Union.empty() && !this->Hull->Union[cell] && !stretch)
+    if (cell >= 0 && !this->Hull->Union.empty() && !this->Hull->Union[cell] && !aim.Stretch)
     {
       return false;
     }
@@ -1270,24 +1350,36 @@ struct LightFieldSampler
     {
       return false;
     }
-    double azimuth, height;
-    this->Layout->Locate(o + s * d, azimuth, height);
-    if (hull && !this->Hull->MayMeetPart(azimuth, cell) &&
-      !(stretch && this->Hull->MaySeePart(azimuth, o + enter * d, o + leave * d, *this->Layout)))
+    this->Layout->Locate(o + s * d, aim.Azimuth, aim.Height);
+    if (hull && !this->Hull->MayMeetPart(aim.Azimuth, cell) &&
+      !(aim.Stretch &&
+        this->Hull->MaySeePart(aim.Azimuth, o + aim.Enter * d, o + aim.Leave * d, *this->Layout)))
     {
       return false;
     }
-    WeightedView views[4];
-    const int nviews = ChooseViews(*this->Layout, azimuth, height, views);
-    if (stretch && this->GatherOnSurface(o, d, enter, leave, azimuth, height, views, nviews, out))
+    aim.Count = ChooseViews(*this->Layout, aim.Azimuth, aim.Height, aim.Views);
+    return true;
+  }
+
+  /**
+   * The second stage of Gather(): the samples of the ray `o + s d` that
+   * Aim() aimed (true), into `out`; Gather()'s result.
+   */
+  bool Sample(const glm::dvec3& o, const glm::dvec3& d, const RayAim& aim, RaySamples& out) const
+  {
+    out.Count = 0;
+    out.Surface = std::numeric_limits<double>::quiet_NaN();
+    if (aim.Stretch &&
+      this->GatherOnSurface(
+        o, d, aim.Enter, aim.Leave, aim.Azimuth, aim.Height, aim.Views, aim.Count, out))
     {
       return true;
     }
-    for (int i = 0; i < nviews; ++i)
+    for (int i = 0; i < aim.Count; ++i)
     {
-      if (views[i].Weight > 0.0)
+      if (aim.Views[i].Weight > 0.0)
       {
-        this->AddBilinear(views[i].View, views[i].Weight, x, out);
+        this->AddBilinear(aim.Views[i].View, aim.Views[i].Weight, aim.Focal, out);
       }
     }
     return out.Count > 0;
@@ -1433,13 +1525,8 @@ struct LightFieldSampler
     {
       return false;
     }
-    // Truncation, then the fraction (exact: uv minus its integer part).
-    const int tx = static_cast<int>(uv.x);
-    const int ty = static_cast<int>(uv.y);
-    const double fx = uv.x - tx;
-    const double fy = uv.y - ty;
-    x = tx + (fx >= 0.5) - (fx <= -0.5);
-    y = ty + (fy >= 0.5) - (fy <= -0.5);
+    x = RoundHalfAway(uv.x);
+    y = RoundHalfAway(uv.y);
     return x >= 0 && y >= 0 && x < this->Depth.Width && y < this->Depth.Height;
   }
 

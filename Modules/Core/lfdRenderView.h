@@ -39,6 +39,11 @@
  *     the cameras at on its focal plane or cylinder (with a proxy, the
  *     samples' own RaySamples::Surface is used instead when it is set).
  *
+ * and may gather in two stages, which RenderPlainViews() then runs over a
+ * batch of rays (SamplerLookup does): a type Aimed, Aim(o, d, Aimed&) (the
+ * ray's geometry; false: no sample), Sample(o, d, Aimed&, RaySamples&)
+ * (Gather's result) and FocalDepth(o, const Aimed&).
+ *
  * A lookup sees the first surface along the whole line of a warped ray, not
  * only along its interval, and it samples the cameras at the line's focal
  * point. In a tessellated box (lfdTessellation.h) the intervals in front of
@@ -75,6 +80,7 @@
 #include <limits>
 #include <optional>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 namespace lfd
@@ -1024,6 +1030,21 @@ struct SamplerLookup
   {
     return this->Sampler.Gather(o, d, out);
   }
+  /// Gather in two stages over a batch of rays (RenderPlainViews).
+  using Aimed = RayAim;
+  bool Aim(const glm::dvec3& o, const glm::dvec3& d, RayAim& aim) const
+  {
+    return this->Sampler.Aim(o, d, aim);
+  }
+  bool Sample(const glm::dvec3& o, const glm::dvec3& d, const RayAim& aim, RaySamples& out) const
+  {
+    return this->Sampler.Sample(o, d, aim, out);
+  }
+  /// FocalDepth() of an aimed ray (its focal point known).
+  double FocalDepth(const glm::dvec3& o, const RayAim& aim) const
+  {
+    return glm::dot(aim.Focal - o, this->Forward);
+  }
   bool Widen(const glm::dvec3& a, const glm::dvec3& b, int label, glm::dvec3& color) const
   {
     return this->Sampler.Widen(a, b, label, WidenSteps, this->WidenReach, color);
@@ -1504,19 +1525,19 @@ bool WidenSegments(const std::vector<RenderBox>& boxes,
   return false;
 }
 
-/// The undeformed light field along a ray that no box claims: with labels,
-/// the heaviest label that no box owns (background included).
-template<typename Lookup>
-ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& settings)
+/**
+ * The undeformed light field seen by a ray that no box claims, from its
+ * samples: with labels, the heaviest label that no box owns (background
+ * included). `focalDepth()` is the depth of samples not focused on a proxy
+ * surface.
+ */
+template<typename FocalDepth>
+ViewSample ShadeUndeformed(const RaySamples& samples,
+  const RenderViewSettings& settings,
+  FocalDepth&& focalDepth)
 {
   ViewSample result;
-  if (!view.Gather())
-  {
-    return result;
-  }
-  const RaySamples& samples = *view.Samples;
-  result.Depth =
-    std::isnan(samples.Surface) ? view.Light.FocalDepth(view.O, view.D) : samples.Surface;
+  result.Depth = std::isnan(samples.Surface) ? focalDepth() : samples.Surface;
   if (!settings.UseLabels)
   {
     BlendLabel(samples, 0, result.Color);
@@ -1534,6 +1555,18 @@ ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& s
       tally.Weights[best];
   }
   return result;
+}
+
+/// The undeformed light field along a ray that no box claims (ShadeUndeformed()).
+template<typename Lookup>
+ViewSample LookUndeformed(ViewRayLook<Lookup>& view, const RenderViewSettings& settings)
+{
+  if (!view.Gather())
+  {
+    return {};
+  }
+  return ShadeUndeformed(
+    *view.Samples, settings, [&] { return view.Light.FocalDepth(view.O, view.D); });
 }
 } // namespace detail
 
@@ -1724,6 +1757,83 @@ ViewSample RenderView(const FrameCage& cage,
         });
     },
     scratch.Segments);
+}
+
+/// The most rays RenderPlainViews takes at once.
+constexpr int MaximumPlainBatch = 16;
+
+namespace detail
+{
+/// Whether `Lookup` gathers in two stages (Aim(), Sample(); RenderPlainViews).
+template<typename Lookup, typename = void>
+struct Staged : std::false_type
+{
+};
+template<typename Lookup>
+struct Staged<Lookup, std::void_t<typename Lookup::Aimed>> : std::true_type
+{
+};
+} // namespace detail
+
+/**
+ * RenderView for the rays through the pixels (xs[i], y), i < count <=
+ * MaximumPlainBatch, of a frame, rays that no box may claim (the frame has
+ * no box or no labels, or their tiles list none: FrameCage::
+ * CountCandidates() 0): the same results, into `seen`. With a lookup that
+ * gathers in two stages (SamplerLookup: Aim() and Sample()), the batch runs
+ * the first stage, the rays' geometry, for every ray before the second, the
+ * texels, for any. A ray's lookup is one dependent chain of divisions and
+ * square roots (some 900 instructions, more than the processor's reorder
+ * window holds), so looked up ray after ray, the rays do not overlap; the
+ * first stages of neighbouring rays, run back to back, do.
+ */
+template<typename Lookup>
+void RenderPlainViews(const FrameCage& cage,
+  const int* xs,
+  int y,
+  int count,
+  const Lookup& lookup,
+  const RenderViewSettings& settings,
+  ViewSample* seen)
+{
+  if (settings.UseLabels && !cage.Boxes->empty() && settings.AllOwned)
+  {
+    // As ShadeView: every part has a box, none claims these rays.
+    for (int i = 0; i < count; ++i)
+    {
+      seen[i] = ViewSample{};
+      seen[i].Label = 0;
+    }
+    return;
+  }
+  glm::dvec3 d[MaximumPlainBatch];
+  if constexpr (detail::Staged<Lookup>::value)
+  {
+    typename Lookup::Aimed aims[MaximumPlainBatch];
+    bool aimed[MaximumPlainBatch];
+    for (int i = 0; i < count; ++i)
+    {
+      d[i] = cage.Direction(xs[i], y);
+      aimed[i] = lookup.Aim(cage.Eye, d[i], aims[i]);
+    }
+    RaySamples samples;
+    for (int i = 0; i < count; ++i)
+    {
+      seen[i] = aimed[i] && lookup.Sample(cage.Eye, d[i], aims[i], samples)
+        ? detail::ShadeUndeformed(
+            samples, settings, [&] { return lookup.FocalDepth(cage.Eye, aims[i]); })
+        : ViewSample{};
+    }
+  }
+  else
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      d[i] = cage.Direction(xs[i], y);
+      detail::ViewRayLook<Lookup> view{ lookup, cage.Eye, d[i] };
+      seen[i] = detail::LookUndeformed(view, settings);
+    }
+  }
 }
 
 } // namespace lfd

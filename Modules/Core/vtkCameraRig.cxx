@@ -935,6 +935,7 @@ lfd::RingLayout vtkCameraRig::GetRingLayout(const std::vector<int>& excluded) co
   for (std::size_t r = 0; r < layout.Rows.size(); ++r)
   {
     layout.Rows[r].Height = in.RowHeights[r];
+    layout.Rows[r].Index();
   }
   layout.Rows.erase(std::remove_if(layout.Rows.begin(),
                       layout.Rows.end(),

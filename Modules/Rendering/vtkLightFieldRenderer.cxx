@@ -193,45 +193,76 @@ struct RenderRows
   {
     lfd::FrameRayScratch& scratch = this->Scratch.Local();
     const int columns = (this->Width + this->TileSize - 1) / this->TileSize;
+    // Rays that no box may claim go through lfd::RenderPlainViews in
+    // batches: all of them in a frame without boxes (or labels), else those
+    // of the frame cage's tiles that list no box.
+    const bool plain = !this->Settings.UseLabels || this->Cage.Boxes->empty();
+    int batch[lfd::MaximumPlainBatch];
+    lfd::ViewSample batchSeen[lfd::MaximumPlainBatch];
     for (vtkIdType j = begin; j < end; ++j)
     {
       const int y = static_cast<int>(this->Height - 1 - j); // OpenCV row
       const std::uint8_t* tiles =
         this->Tiles.empty() ? nullptr : this->Tiles.data() + (y / this->TileSize) * columns;
+      int batched = 0;
+      const auto renderBatch = [&]
+      {
+        lfd::RenderPlainViews(
+          this->Cage, batch, y, batched, this->Light, this->Settings, batchSeen);
+        for (int i = 0; i < batched; ++i)
+        {
+          this->Write(j * this->Width + batch[i], batchSeen[i]);
+        }
+        batched = 0;
+      };
       for (int x = 0; x < this->Width; ++x)
       {
         const vtkIdType id = j * this->Width + x;
-        std::uint8_t* rgb = this->Radiance + 3 * id;
         if (tiles && !tiles[x / this->TileSize])
         {
           // What a ray whose lookup the hull skips shows (label -1).
-          this->Labels[id] = 0;
-          this->Depths[id] = 0.0f;
-          std::copy(this->Background, this->Background + 3, rgb);
+          this->Write(id, lfd::ViewSample{});
           continue;
         }
-        // A ray's camera z is 1, so the ray parameter of the seen point is its depth.
-        const lfd::ViewSample seen = this->Accelerated
-          ? lfd::RenderView(this->Cage, x, y, this->Light, this->Settings, scratch)
-          : lfd::RenderView(this->Cage.Eye,
-              this->Cage.Direction(x, y),
-              *this->Cage.Boxes,
-              this->Light,
-              this->Settings,
-              scratch.Segments);
-        this->Labels[id] = static_cast<std::uint8_t>(std::max(seen.Label, 0));
-        const bool background = seen.Label < 0 || (this->Settings.UseLabels && seen.Label == 0);
-        this->Depths[id] = background ? 0.0f : static_cast<float>(seen.Depth);
-        if (background && seen.Coverage == 0.0)
+        if (plain || (this->Accelerated && this->Cage.CountCandidates(x, y) == 0))
         {
-          std::copy(this->Background, this->Background + 3, rgb);
+          batch[batched++] = x;
+          if (batched == lfd::MaximumPlainBatch)
+          {
+            renderBatch();
+          }
           continue;
         }
-        for (int c = 0; c < 3; ++c)
-        {
-          rgb[c] = static_cast<std::uint8_t>(std::clamp(std::lround(seen.Color[c]), 0L, 255L));
-        }
+        this->Write(id,
+          this->Accelerated
+            ? lfd::RenderView(this->Cage, x, y, this->Light, this->Settings, scratch)
+            : lfd::RenderView(this->Cage.Eye,
+                this->Cage.Direction(x, y),
+                *this->Cage.Boxes,
+                this->Light,
+                this->Settings,
+                scratch.Segments));
       }
+      renderBatch();
+    }
+  }
+
+  /// Writes what the ray of pixel `id` (VTK order) sees.
+  void Write(vtkIdType id, const lfd::ViewSample& seen) const
+  {
+    std::uint8_t* rgb = this->Radiance + 3 * id;
+    this->Labels[id] = static_cast<std::uint8_t>(std::max(seen.Label, 0));
+    const bool background = seen.Label < 0 || (this->Settings.UseLabels && seen.Label == 0);
+    // A ray's camera z is 1, so the ray parameter of the seen point is its depth.
+    this->Depths[id] = background ? 0.0f : static_cast<float>(seen.Depth);
+    if (background && seen.Coverage == 0.0)
+    {
+      std::copy(this->Background, this->Background + 3, rgb);
+      return;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      rgb[c] = static_cast<std::uint8_t>(lfd::RoundHalfAway(std::clamp(seen.Color[c], 0.0, 255.0)));
     }
   }
 };
