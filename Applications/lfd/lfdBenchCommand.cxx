@@ -32,6 +32,10 @@
 
 #include <CLI/CLI.hpp>
 #include <fcntl.h>
+#ifdef __linux__
+#include <pthread.h>
+#include <sched.h>
+#endif
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -44,8 +48,10 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -151,6 +157,62 @@ private:
 };
 
 /**
+ * Keeps the calling thread on the core it runs on, while it lives (then its
+ * former cores are restored). The one-thread figures are ratios between
+ * loops timed one after the other: on a virtual machine whose cores run at
+ * different speeds (on the CI machine kind, one of the two took 1.6x the
+ * other's time for the same loop, the reference loop and the lookup alike:
+ * `taskset -c 0` / `-c 1`), a thread that moved between them gave ratios
+ * from 1.0x to 2.0x for the same build; on one core they agree. With one
+ * vtkSMPTools thread the work runs on the calling thread, so this pins it.
+ * Linux only; elsewhere nothing is pinned. Core() is the pinned core, -1 when
+ * none.
+ */
+class PinnedToCore
+{
+public:
+  PinnedToCore()
+  {
+#ifdef __linux__
+    const int core = sched_getcpu();
+    if (core >= 0 &&
+      pthread_getaffinity_np(pthread_self(), sizeof(this->Former), &this->Former) == 0)
+    {
+      cpu_set_t one;
+      CPU_ZERO(&one);
+      CPU_SET(core, &one);
+      if (pthread_setaffinity_np(pthread_self(), sizeof(one), &one) == 0)
+      {
+        this->Pinned = core;
+      }
+    }
+#endif
+  }
+  ~PinnedToCore()
+  {
+#ifdef __linux__
+    if (this->Pinned >= 0)
+    {
+      pthread_setaffinity_np(pthread_self(), sizeof(this->Former), &this->Former);
+    }
+#endif
+  }
+  PinnedToCore(const PinnedToCore&) = delete;
+  PinnedToCore& operator=(const PinnedToCore&) = delete;
+
+  int Core() const
+  {
+    return this->Pinned;
+  }
+
+private:
+  int Pinned = -1;
+#ifdef __linux__
+  cpu_set_t Former;
+#endif
+};
+
+/**
  * The process's CPU time (s): every thread's, to the nanosecond
  * (CLOCK_PROCESS_CPUTIME_ID; clock() reads the same clock in microseconds).
  * With several threads it includes the time TBB's workers spin waiting for
@@ -227,10 +289,13 @@ Measure MedianTimes(int repeat, Work&& work)
  * memory over them. A ratio of two holds while the machine's speed drifts
  * (other jobs, the host changing the core's clock): measured one after the
  * other, two configurations of a few ms each can see different machines.
+ * With `alongside`, that work is timed in the same turns, after the
+ * renderers, and its figures come last.
  */
 std::vector<Measure> MeasureRenders(const std::vector<vtkLightFieldRenderer*>& renderers,
   int repeat,
-  PeakMemory& peak)
+  PeakMemory& peak,
+  const std::function<void()>& alongside = nullptr)
 {
   peak.Reset();
   const long long start = peak.Resident();
@@ -238,7 +303,11 @@ std::vector<Measure> MeasureRenders(const std::vector<vtkLightFieldRenderer*>& r
   {
     Run(renderer, "rendering"); // warm-up (rig layout, threads)
   }
-  std::vector<std::vector<Measure>> runs(renderers.size());
+  if (alongside)
+  {
+    alongside();
+  }
+  std::vector<std::vector<Measure>> runs(renderers.size() + (alongside ? 1 : 0));
   const RunQueueWait queue;
   for (int i = 0; i < repeat; ++i)
   {
@@ -251,6 +320,10 @@ std::vector<Measure> MeasureRenders(const std::vector<vtkLightFieldRenderer*>& r
           renderer->Modified();
           renderer->Update();
         }));
+    }
+    if (alongside)
+    {
+      runs.back().push_back(TimeOnce(queue, alongside));
     }
   }
   std::vector<Measure> figures;
@@ -605,25 +678,64 @@ struct ReferenceLoop
   }
 };
 
+/// The reference loop over `lightField`'s Coaxial pass at `size` x `size`,
+/// with its frame; a call runs it once.
+class ReferenceFrame
+{
+public:
+  ReferenceFrame(vtkLightField* lightField, int size)
+    : Out(3 * static_cast<std::size_t>(size) * size)
+    , Loop{ vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::COAXIAL))
+              ->GetPointer(0),
+      lightField->GetNumberOfViews(),
+      lightField->GetWidth(),
+      lightField->GetHeight(),
+      size,
+      this->Out.data() }
+  {
+  }
+  ReferenceFrame(const ReferenceFrame&) = delete; // Loop points into Out
+  ReferenceFrame& operator=(const ReferenceFrame&) = delete;
+
+  void operator()() const { vtkSMPTools::For(0, this->Loop.Size, this->Loop); }
+
+private:
+  std::vector<std::uint8_t> Out;
+  ReferenceLoop Loop;
+};
+
 /// Median times of `repeat` runs of the reference loop over `lightField`, after a
 /// warm-up, and the peak memory over them.
 Measure ReferenceTime(vtkLightField* lightField, int size, int repeat, PeakMemory& peak)
 {
   peak.Reset();
   const long long start = peak.Resident();
-  auto* radiance = vtkUnsignedCharArray::SafeDownCast(lightField->GetPass(vtkLightField::COAXIAL));
-  std::vector<std::uint8_t> out(3 * static_cast<std::size_t>(size) * size);
-  const ReferenceLoop loop{ radiance->GetPointer(0),
-    lightField->GetNumberOfViews(),
-    lightField->GetWidth(),
-    lightField->GetHeight(),
-    size,
-    out.data() };
-  vtkSMPTools::For(0, size, loop);
-  Measure figures = MedianTimes(repeat, [size, &loop] { vtkSMPTools::For(0, size, loop); });
+  const ReferenceFrame loop(lightField, size);
+  loop();
+  Measure figures = MedianTimes(repeat, [&loop] { loop(); });
   figures.StartBytes = start;
   figures.PeakBytes = peak.Read();
   return figures;
+}
+
+/**
+ * RenderTimes of the two renderers and the reference loop over `reference`
+ * (the fish), the three timed in turn: their ratios hold while the machine's
+ * speed drifts between turns (on a virtual machine a core's speed may change
+ * by 1.6x from one second to the next: the ratios of rows timed one after
+ * the other moved from 1.0x to 2.0x for the same build). Figures: at rest,
+ * deformed, the loop.
+ */
+std::vector<Measure> RenderTimesInTurn(vtkLightField* lightField,
+  const std::string& object,
+  vtkLightField* reference,
+  int size,
+  int repeat,
+  PeakMemory& peak)
+{
+  const auto [rest, deformed] = SceneRenderers(lightField, object, size);
+  const ReferenceFrame loop(reference, size);
+  return MeasureRenders({ rest, deformed }, repeat, peak, [&loop] { loop(); });
 }
 
 /**
@@ -997,10 +1109,14 @@ void LookupRows(const std::string& referenceTable,
       lightField == fish ? "deformed fish (swim, 3 boxes)" : "deformed figure (twist 45, 3 boxes)";
     for (int size : settings.Sizes)
     {
-      const auto [rest, deformed] = RenderTimes(lightField, object, size, settings.Repeat, peak);
+      const std::vector<Measure> figures =
+        RenderTimesInTurn(lightField, object, fish, size, settings.Repeat, peak);
+      const Measure& rest = figures[0];
       rows.push_back(Row(renderTable, "undeformed " + object, size, lightField, 0, rest));
-      rows.push_back(Row(renderTable, deformedName, size, lightField, 3, deformed));
+      rows.back().AddRatio("vs_ref_in_turn", figures[2]);
+      rows.push_back(Row(renderTable, deformedName, size, lightField, 3, figures[1]));
       rows.back().AddRatio("vs_rest", rest);
+      rows.back().AddRatio("vs_ref_in_turn", figures[2]);
     }
   }
 }
@@ -1023,7 +1139,10 @@ void OneThreadRows(vtkLightField* fish,
 {
   const std::size_t first = rows.size();
   vtkSMPTools::Initialize(1);
-  LookupRows("one thread", "one thread", fish, figure, settings, peak, reference, rows);
+  {
+    const PinnedToCore pinned;
+    LookupRows("one thread", "one thread", fish, figure, settings, peak, reference, rows);
+  }
   vtkSMPTools::Initialize(threads);
   for (std::size_t r = first; r < rows.size(); ++r)
   {
@@ -1184,12 +1303,19 @@ void Bench(const BenchSettings& settings)
   PeakMemory peak;
   const long long startup = peak.Resident();
   const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  // On one thread every figure is timed on one core (PinnedToCore).
+  std::optional<PinnedToCore> pinned;
+  if (threads == 1)
+  {
+    pinned.emplace();
+  }
   double load[2][3];
   LoadAverage(load[0]);
-  std::printf("threads: %d (vtkSMPTools, %s backend), cores: %u, load average: %.2f %.2f %.2f, "
+  std::printf("threads: %d (vtkSMPTools, %s backend)%s, cores: %u, load average: %.2f %.2f %.2f, "
               "start-up floor: %.0f MB resident\n",
     threads,
     vtkSMPTools::GetBackend(),
+    pinned && pinned->Core() >= 0 ? (", on core " + std::to_string(pinned->Core())).c_str() : "",
     std::thread::hardware_concurrency(),
     load[0][0],
     load[0][1],
@@ -1234,13 +1360,17 @@ void Bench(const BenchSettings& settings)
     "work), and cpu/ref its ratio to the reference loop's; wait ms: the time the thread that "
     "asked for that frame was ready to run without a core (the machine's load: on one "
     "thread ms/frame = cpu ms + wait ms); one thread: the same rows on one thread "
-    "(vtkSMPTools::Initialize(1)), like for like, vs_threads: their time over the same row's "
+    "(vtkSMPTools::Initialize(1)), like for like, the thread kept on one core, vs_threads: their "
+    "time over the same row's "
     "on %d threads; peak MB: the process's peak resident memory during the configuration "
     "(its light fields included; the start-up floor of its libraries alone: %.0f MB); "
     "rss_vs_raw: that peak over the light field's raw image bytes, render_mb and "
     "render_vs_raw: what the render added to the resident memory, and over those bytes; "
-    "cpu_ columns: the ratio before them in CPU time; vs_rest: against the "
-    "undeformed render; vs_plane: against the same render through the focal plane, "
+    "cpu_ columns: the ratio before them in CPU time; vs_ref_in_turn: against the reference loop "
+    "timed in turn with the undeformed and deformed renders (the ratio that holds when the "
+    "machine's speed drifts between rows); vs_rest: against the "
+    "undeformed render, rendered in turn with it; vs_plane: against the same render through the "
+    "focal plane, "
     "the two rendered in turn; "
     "vs_3_boxes: against the 3 boxes of the same table, rendered in turn with it; "
     "no_accel_ms: the same cage with vtkLightFieldRenderer::CageAcceleration off; "
@@ -1357,7 +1487,8 @@ void AddBenchCommand(CLI::App& app, NumericOptions& numbers, std::vector<Command
     1024,
     "threads of the renderer and the reference loop (vtkSMPTools::Initialize; 0: every core, "
     "or VTK_SMP_MAX_THREADS); with more than one, the reference loop and the undeformed and "
-    "deformed fish and figure are also timed on one thread, in a table of their own");
+    "deformed fish and figure are also timed on one thread, in a table of their own; on one thread "
+    "the thread is kept on one core (cores may run at different speeds)");
   auto* sizes = numbers.Add(benchCommand,
     "--size",
     settings->Sizes,
