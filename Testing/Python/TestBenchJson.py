@@ -57,6 +57,9 @@ for row in rows:
     wanted = extra.get(row["table"], {"vs_rest", "cpu_vs_rest"} if row["boxes"] else set())
     if row["table"] == "one thread":
         wanted = wanted | {"vs_threads", "cpu_vs_threads"}
+    if row["table"] in ("render", "one thread") and not row["name"].startswith("reference loop"):
+        # The reference loop timed in turn with the object's two renders.
+        wanted = wanted | {"vs_ref_in_turn", "cpu_vs_ref_in_turn"}
     t.check(common <= set(row) and keys == wanted, f"the fields of {row['table']}: {row['name']}",
             sorted(row))
 # Each row ran on the threads asked for: the one-thread table on 1, every other on 2.
@@ -92,6 +95,21 @@ for row in tables["one thread"]:
             and abs(row["cpu_vs_threads"] - row["cpu_ms_per_frame"] / same[0]["cpu_ms_per_frame"])
             < 1e-9 * row["cpu_vs_threads"] and row["vs_threads"] > 0,
             f"one thread: {row['name']} at {row['size']}: against 2 threads", row)
+# The ratio to the loop timed in turn: the same loop for the undeformed and deformed row
+# of an object (their ratio is vs_rest's, up to the medians' rounding).
+for table in ("render", "one thread"):
+    for row in tables[table]:
+        if row["name"].startswith("reference loop"):
+            continue
+        t.check(row["vs_ref_in_turn"] > 0 and row["cpu_vs_ref_in_turn"] > 0,
+                f"{table}: {row['name']}: the ratios to the loop timed in turn", row)
+    for rest, deformed in zip(tables[table][0::2], tables[table][1::2]):
+        if rest["name"].startswith("reference loop") or "vs_rest" not in deformed:
+            continue
+        t.check(abs(deformed["vs_ref_in_turn"] / rest["vs_ref_in_turn"] - deformed["vs_rest"])
+                < 1e-9 * deformed["vs_rest"],
+                f"{table}: {deformed['name']}: in turn with its undeformed row and the loop",
+                (rest, deformed))
 # Memory against the light field's raw bytes: the process's peak, the render's increment.
 for row in tables["light-field size"]:
     raw, peak, start = row["light_field_bytes"], row["peak_rss_bytes"], row["start_rss_bytes"]
