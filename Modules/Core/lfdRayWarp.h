@@ -389,18 +389,15 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   const double mergeT = 1e-9 * size / speed;
   const double shortestT = 1e-7 * size / speed;
 
-  struct Crossing
+  // The face hits from tMin on, in the order found.
+  struct FaceHit
   {
     double T;
-    glm::dvec3 Uvw;
-    bool OnFace; // false for the point at tMin, whose uvw is not known yet
-    int Face;    // the face hit (-1 for the point at tMin)
+    glm::dvec2 ST;
+    int Face;
   };
-  // Sorted by T as they are found, hits of equal T in the order found (the
-  // insertion sort that std::sort is below 16 elements, without its calls:
-  // the 3-box swim 228.4 -> 226.9 M instructions per frame).
-  Crossing crossings[13];
-  int n = 0;
+  FaceHit found[12];
+  int nFound = 0;
   for (int face = 0; face < 6; ++face)
   {
     if (!(faces & (1 << face)))
@@ -413,17 +410,59 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
     {
       if (hits[k].T >= tMin - mergeT)
       {
-        const Crossing crossing{
-          std::max(hits[k].T, tMin), glm::clamp(FaceToBox(face, hits[k].ST), 0.0, 1.0), true, face
-        };
-        int at = n++;
-        for (; at > 0 && crossing.T < crossings[at - 1].T; --at)
-        {
-          crossings[at] = crossings[at - 1];
-        }
-        crossings[at] = crossing;
+        found[nFound++] = { std::max(hits[k].T, tMin), hits[k].ST, face };
       }
     }
+  }
+  auto uvwOf = [](const FaceHit& hit)
+  { return glm::clamp(FaceToBox(hit.Face, hit.ST), 0.0, 1.0); };
+
+  if (startsOutside && nFound == 2 && maxSegments > 0)
+  {
+    // The common case, the general walk below in short: from an outside
+    // point, two distinct crossings bound the one interval (by parity).
+    const bool swap = found[1].T < found[0].T;
+    const FaceHit& enter = found[swap ? 1 : 0];
+    const FaceHit& exit = found[swap ? 0 : 1];
+    if (exit.T > enter.T + mergeT)
+    {
+      if (exit.T - enter.T < shortestT)
+      {
+        return 0;
+      }
+      WarpedSegment& segment = out[0];
+      segment.TEnter = enter.T;
+      segment.TExit = exit.T;
+      segment.UvwEnter = uvwOf(enter);
+      segment.UvwExit = uvwOf(exit);
+      segment.FaceExit = exit.Face;
+      segment.RestEnter = TrilinearMapOnFace(rest, enter.Face, segment.UvwEnter);
+      segment.RestExit = TrilinearMapOnFace(rest, exit.Face, segment.UvwExit);
+      return 1;
+    }
+  }
+
+  struct Crossing
+  {
+    double T;
+    glm::dvec3 Uvw;
+    bool OnFace; // false for the point at tMin, whose uvw is not known yet
+    int Face;    // the face hit (-1 for the point at tMin)
+  };
+  // Sorted by T, hits of equal T in the order found (the insertion sort that
+  // std::sort is below 16 elements, without its calls: the 3-box swim 228.4
+  // -> 226.9 M instructions per frame).
+  Crossing crossings[12];
+  int n = 0;
+  for (int i = 0; i < nFound; ++i)
+  {
+    const Crossing crossing{ found[i].T, uvwOf(found[i]), true, found[i].Face };
+    int at = n++;
+    for (; at > 0 && crossing.T < crossings[at - 1].T; --at)
+    {
+      crossings[at] = crossings[at - 1];
+    }
+    crossings[at] = crossing;
   }
 
   // Merge coincident hits; the point at tMin goes first unless a hit is there.
