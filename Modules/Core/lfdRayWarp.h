@@ -414,8 +414,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
       }
     }
   }
-  auto uvwOf = [](const FaceHit& hit)
-  { return glm::clamp(FaceToBox(hit.Face, hit.ST), 0.0, 1.0); };
+  auto uvwOf = [](const FaceHit& hit) { return glm::clamp(FaceToBox(hit.Face, hit.ST), 0.0, 1.0); };
 
   if (startsOutside && nFound == 2 && maxSegments > 0)
   {

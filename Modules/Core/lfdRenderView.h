@@ -1132,23 +1132,18 @@ inline double SegmentDepth(const WarpedSegment& segment, bool moved, double surf
 }
 
 /**
- * How much of the pixel of a ray whose samples are `samples` shows `label`:
- * the share s of the samples' weight that carries it, steepened about the
- * vote's threshold, clamp(0.5 + 2 (s - 0.5), 0, 1). One camera's bilinear
- * weights ramp s over one source pixel across a silhouette, as a pixel's
- * coverage does; where the ray's cameras disagree about the silhouette
- * (parallax off the focal surface), the mix of their ramps is wider, and
- * the steepening keeps the faint side of it (s <= 0.25: one camera of two,
- * weighted least, sees the part) from ghosting.
+ * How much of the pixel of a ray shows a label that carries `covered` of its
+ * samples' total weight `total` (summed in the samples' order): the share
+ * s = covered / total, steepened about the vote's threshold,
+ * clamp(0.5 + 2 (s - 0.5), 0, 1). One camera's bilinear weights ramp s over
+ * one source pixel across a silhouette, as a pixel's coverage does; where
+ * the ray's cameras disagree about the silhouette (parallax off the focal
+ * surface), the mix of their ramps is wider, and the steepening keeps the
+ * faint side of it (s <= 0.25: one camera of two, weighted least, sees the
+ * part) from ghosting.
  */
-inline double LabelCoverage(const RaySamples& samples, int label)
+inline double LabelCoverage(double covered, double total)
 {
-  double total = 0.0, covered = 0.0;
-  for (int i = 0; i < samples.Count; ++i)
-  {
-    total += samples.Samples[i].Weight;
-    covered += samples.Samples[i].Label == label ? samples.Samples[i].Weight : 0.0;
-  }
   if (!(total > 0.0))
   {
     return 0.0;
@@ -1353,12 +1348,24 @@ struct SegmentWalk
       }
     }
     const WarpedSegment& segment = entry.Segment;
-    const RaySamples* seenSamples = &this->Samples;
     const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
+    // The pixel's label is the box's part even where it shows a slice of
+    // another: the part that moves it (as lfd eval groundtruth labels the
+    // mesh by the rest boxes).
+    DeferredMatch candidate;
+    candidate.Label = box.Label;
+    int shown = box.Label;
+    double surface = 0.0;
     if (!box.Moved)
     {
       entry.Seen = this->View.Look();
-      seenSamples = &*this->View.Samples;
+      if (entry.Seen != shown) // (ShownPart: a box at rest shows its own label)
+      {
+        return;
+      }
+      candidate.Alpha = 1.0;
+      surface = this->View.Samples->Surface;
+      BlendLabel(*this->View.Samples, shown, candidate.Color);
     }
     else
     {
@@ -1368,29 +1375,40 @@ struct SegmentWalk
         return;
       }
       entry.Seen = VoteLabel(this->Samples);
+      surface = this->Samples.Surface;
+      shown = ShownPart(box, entry.Seen, surface);
+      // The coverage and the blend of the shown label in one pass over the
+      // samples (each sum in the samples' order, as BlendLabel's).
+      double total = 0.0, covered = 0.0;
+      glm::dvec3 sum(0.0);
+      for (int i = 0; i < this->Samples.Count; ++i)
+      {
+        const RaySample& sample = this->Samples.Samples[i];
+        total += sample.Weight;
+        if (sample.Label == shown)
+        {
+          covered += sample.Weight;
+          sum += sample.Weight * sample.Color;
+        }
+      }
+      candidate.Alpha = this->Settings.AntiAliasing ? LabelCoverage(covered, total)
+                                                    : (entry.Seen == shown ? 1.0 : 0.0);
+      if (candidate.Alpha <= 0.0)
+      {
+        return;
+      }
+      if (covered > 0.0)
+      {
+        candidate.Color = sum / covered;
+      }
     }
-    const int shown = ShownPart(box, entry.Seen, seenSamples->Surface);
-    const bool match = entry.Seen == shown;
-    const double alpha = box.Moved && this->Settings.AntiAliasing
-      ? LabelCoverage(*seenSamples, shown)
-      : (match ? 1.0 : 0.0);
-    if (alpha <= 0.0)
+    if (entry.Seen != shown)
     {
+      this->Composite.Add(candidate.Alpha, candidate.Color);
       return;
     }
-    // The pixel's label is the box's part even where it shows a slice of
-    // another: the part that moves it (as lfd eval groundtruth labels the
-    // mesh by the rest boxes).
-    DeferredMatch candidate{
-      box.Label, alpha, glm::dvec3(0.0), SegmentDepth(segment, box.Moved, seenSamples->Surface)
-    };
-    BlendLabel(*seenSamples, shown, candidate.Color);
-    if (!match)
-    {
-      this->Composite.Add(alpha, candidate.Color);
-      return;
-    }
-    candidate.OnSurface = !std::isnan(seenSamples->Surface);
+    candidate.Depth = SegmentDepth(segment, box.Moved, surface);
+    candidate.OnSurface = !std::isnan(surface);
     if (box.Moved && this->Held.Label >= 0 && this->Held.OnSurface && !candidate.OnSurface)
     {
       // A later interval whose lookup found no surface is focused on the
@@ -1398,7 +1416,7 @@ struct SegmentWalk
       // neither gives the pixel nor replaces the held interval.
       return;
     }
-    const double focal = candidate.OnSurface ? seenSamples->Surface
+    const double focal = candidate.OnSurface ? surface
       : std::isnan(known) ? this->Light.FocalParameter(segment.RestEnter, direction)
                           : known;
     if (box.Moved && focal > 1.0)
