@@ -685,14 +685,18 @@ struct FrameCage
         faces);
       for (int k = 0; k < n; ++k)
       {
-        // Into its place among the pending intervals, after those of equal order.
+        // Into its place among the pending intervals, after those of equal
+        // order (the first pending one stays where it is written).
         segments.push_back({ found[k], b, -1, b == scratch.Landing });
-        std::rotate(std::upper_bound(segments.begin() + scratch.Handed,
-                      segments.end() - 1,
-                      segments.back(),
-                      detail::NearerSegment),
-          segments.end() - 1,
-          segments.end());
+        if (segments.size() > scratch.Handed + 1)
+        {
+          std::rotate(std::upper_bound(segments.begin() + scratch.Handed,
+                        segments.end() - 1,
+                        segments.back(),
+                        detail::NearerSegment),
+            segments.end() - 1,
+            segments.end());
+        }
       }
     }
     if (scratch.Handed == segments.size())
