@@ -528,9 +528,12 @@ struct LabelHull
   glm::dvec3 InverseCellSize{ 1.0 };
   /// Per sector, Cells^3 flags (1: a label cone touches the voxel); empty: no grid.
   std::vector<std::uint8_t> Marks;
-  /// Cells^3 flags, the union of the sectors' (Unite()): a focal point in an
-  /// unmarked voxel is skipped before the ray's azimuth is known.
-  std::vector<std::uint8_t> Union;
+  /// Per voxel (Cells^3), the sectors that mark it (Unite(); bit k: sector
+  /// k), non-zero for the union of the sectors' marks: a focal point in a
+  /// voxel unmarked in every sector, or in each of the sectors its ray may
+  /// enter the rig in (LightFieldSampler::EntrySectors()), is skipped before
+  /// the ray's azimuth is known.
+  std::vector<std::uint32_t> Union;
   /// Per sector, its marks united with its two neighbours' (Unite()): the
   /// proxy's candidate cameras (LightFieldSampler::ProxyCandidates, 4 per
   /// row around the azimuth) use up the margin of one view that MarkSector
@@ -618,6 +621,8 @@ struct LabelHull
     }
   }
 
+  static_assert(Sectors <= 32, "a voxel's sectors are the bits of a 32-bit Union entry");
+
   /**
    * Fills Union from the sectors' marks; call once every sector is marked
    * (until then, and without a grid, Union is empty and unused).
@@ -629,8 +634,8 @@ struct LabelHull
     this->Wide.assign(this->Marks.size(), 0);
     for (std::size_t i = 0; i < this->Marks.size(); ++i)
     {
-      this->Union[i % cells] |= this->Marks[i];
       const std::size_t sector = i / cells;
+      this->Union[i % cells] |= static_cast<std::uint32_t>(this->Marks[i]) << sector;
       for (std::size_t next : { sector + Sectors - 1, sector, sector + 1 })
       {
         this->Wide[next % Sectors * cells + i % cells] |= this->Marks[i];
@@ -671,6 +676,33 @@ struct LabelHull
     }
     return this->Marks[Sector(azimuth) * Cells * Cells * Cells + static_cast<std::size_t>(cell)] !=
       0;
+  }
+
+  /**
+   * The sectors (bit k: sector k, as in Union) of the azimuths on the arc
+   * of `length` radians from `from` (in [-2 pi, 2 pi)) counter-clockwise;
+   * every sector for an arc of 2 pi or more.
+   */
+  static std::uint32_t SectorsOnArc(double from, double length)
+  {
+    constexpr std::uint32_t all = Sectors == 32 ? ~0u : (1u << Sectors) - 1;
+    if (!(length < TwoPi))
+    {
+      return all;
+    }
+    from = from < 0.0 ? from + TwoPi : from;
+    double to = from + length;
+    to = to >= TwoPi ? to - TwoPi : to;
+    const std::size_t first = Sector(from);
+    const std::size_t last = Sector(to);
+    // An arc across azimuth 0 that comes back into its first sector holds them all.
+    if (to < from && last >= first)
+    {
+      return all;
+    }
+    const std::size_t count = (last + Sectors - first) % Sectors + 1;
+    const std::uint32_t run = count == 32 ? ~0u : (1u << count) - 1;
+    return ((run << first) | (first == 0 ? 0u : run >> (Sectors - first))) & all;
   }
 
   /**
@@ -1329,7 +1361,10 @@ struct LightFieldSampler
    * stage is a long dependent chain of divisions and square roots, and the
    * chains of neighbouring rays then overlap in the processor.
    */
-  bool Aim(const glm::dvec3& o, const glm::dvec3& d, RayAim& aim) const
+  bool Aim(const glm::dvec3& o,
+    const glm::dvec3& d,
+    RayAim& aim,
+    std::uint32_t sectors = ~std::uint32_t(0)) const
   {
     aim.Focal = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
     const bool hull = this->Hull && !this->Hull->Marks.empty();
@@ -1338,19 +1373,20 @@ struct LightFieldSampler
     // focus on; the ray is skipped when neither it nor the focal point can
     // have a labelled sample (see Gather()).
     aim.Stretch = this->Depth.Present() && this->SurfaceStretch(o, d, aim.Enter, aim.Leave);
-    // Most skipped rays are unmarked in every sector: they skip the cylinder
-    // entry and the atan2 of the azimuth too (a ray that misses the cylinder
-    // returns false as well).
-    if (cell >= 0 && !this->Hull->Union.empty() && !this->Hull->Union[cell] && !aim.Stretch)
+    // Most skipped rays are unmarked in every sector, or in every sector
+    // they may enter the rig in (`sectors`): they skip the cylinder entry
+    // and the atan2 of the azimuth too (MayMeetPart() would be false for
+    // them; a ray that misses the cylinder returns false as well).
+    if (cell >= 0 && !this->Hull->Union.empty() && !(this->Hull->Union[cell] & sectors) &&
+      !aim.Stretch)
     {
       return false;
     }
     double s;
-    if (!IntersectCylinderEntry(this->Layout->Cyl, o, d, s))
+    if (!this->Entry(o, d, s, aim.Azimuth, aim.Height))
     {
       return false;
     }
-    this->Layout->Locate(o + s * d, aim.Azimuth, aim.Height);
     if (hull && !this->Hull->MayMeetPart(aim.Azimuth, cell) &&
       !(aim.Stretch &&
         this->Hull->MaySeePart(aim.Azimuth, o + aim.Enter * d, o + aim.Leave * d, *this->Layout)))
@@ -1359,6 +1395,104 @@ struct LightFieldSampler
     }
     aim.Count = ChooseViews(*this->Layout, aim.Azimuth, aim.Height, aim.Views);
     return true;
+  }
+
+  /**
+   * Aim() for the rays o + s d[i], i < count, into aims[i] (aimed[i]: its
+   * result), with the hull's sectors bounded for all of them at once
+   * (EntrySectors()): the same results as ray by ray, the rays whose focal
+   * voxel no sector of the bound marks skipped before their cylinder entry.
+   * The d[i] are the directions through pixels of one image row, in order.
+   */
+  void AimBatch(const glm::dvec3& o,
+    const glm::dvec3* d,
+    int count,
+    RayAim* aims,
+    bool* aimed) const
+  {
+    const std::uint32_t sectors = this->EntrySectors(o, d, count);
+    for (int i = 0; i < count; ++i)
+    {
+      aimed[i] = this->Aim(o, d[i], aims[i], sectors);
+    }
+  }
+
+  /**
+   * The parameter `s` (IntersectCylinderEntry()), azimuth and height
+   * (RingLayout::Locate()) of where the line o + s d enters the rig
+   * cylinder; false when it misses.
+   */
+  bool Entry(const glm::dvec3& o,
+    const glm::dvec3& d,
+    double& s,
+    double& azimuth,
+    double& height) const
+  {
+    if (!IntersectCylinderEntry(this->Layout->Cyl, o, d, s))
+    {
+      return false;
+    }
+    this->Layout->Locate(o + s * d, azimuth, height);
+    return true;
+  }
+
+  /**
+   * The hull sectors (LabelHull::Union's bits) that the entry azimuths
+   * (Entry()) of the lines o + s d[i], i < count, lie in, when every d[i]
+   * lies on the segment from d[0] to d[count - 1] (directions through the
+   * pixels of one image row, in order: affine in the column); every sector
+   * when the bound does not hold or does not pay (no hull, few rays).
+   *
+   * Why it holds: the parts of the d[i] across the axis lie on a segment,
+   * so when its ends make an angle below pi / 2 the lines' directions
+   * sweep that angle once, monotonically. Where every line of the sweep
+   * meets the cylinder, its entry moves continuously with the direction,
+   * and one-to-one (two lines through o share no other point, and o is not
+   * on the cylinder: its entries lie on one side of it), so the entries
+   * fill one of the two arcs between the ends' entries: the one that holds
+   * the middle line's. Every line meets the cylinder when both ends enter
+   * on the same side of o: from inside, every line does; from outside, the
+   * lines that enter ahead of o (or behind it) form a convex cone, which
+   * holds the sweep between two of them. Rounding (of the directions; of
+   * an entry, some 1e-8 radian next to tangency, where the square root of
+   * the discriminant amplifies it; of Azimuth(), 2e-10) stays far below
+   * the margin of 1e-6 radian the arc is widened by on each side; a middle
+   * entry within the margin of an end gives no bound.
+   */
+  std::uint32_t EntrySectors(const glm::dvec3& o, const glm::dvec3* d, int count) const
+  {
+    constexpr std::uint32_t all = ~std::uint32_t(0);
+    constexpr double margin = 1e-6;
+    // Three entries bound the batch: with fewer rays they would not pay.
+    if (count < 4 || !this->Hull || this->Hull->Union.empty())
+    {
+      return all;
+    }
+    const glm::dvec3& a = this->Layout->Cyl.Axis;
+    const glm::dvec3 first = d[0] - glm::dot(d[0], a) * a;
+    const glm::dvec3 last = d[count - 1] - glm::dot(d[count - 1], a) * a;
+    double s[3], azimuth[3], height;
+    if (!(glm::dot(first, last) > 0.0) || !this->Entry(o, d[0], s[0], azimuth[0], height) ||
+      !this->Entry(o, d[count - 1], s[1], azimuth[1], height) ||
+      !((s[0] > 0.0 && s[1] > 0.0) || (s[0] < 0.0 && s[1] < 0.0)) ||
+      !this->Entry(o, d[count / 2], s[2], azimuth[2], height))
+    {
+      return all;
+    }
+    // Counter-clockwise from the first end: the span to the last, the middle.
+    const auto ccw = [](double from, double to)
+    { return to >= from ? to - from : to - from + TwoPi; };
+    const double span = ccw(azimuth[0], azimuth[1]);
+    const double middle = ccw(azimuth[0], azimuth[2]);
+    if (middle > margin && middle < span - margin)
+    {
+      return LabelHull::SectorsOnArc(azimuth[0] - margin, span + 2.0 * margin);
+    }
+    if (middle > span + margin && middle < TwoPi - margin)
+    {
+      return LabelHull::SectorsOnArc(azimuth[1] - margin, TwoPi - span + 2.0 * margin);
+    }
+    return all;
   }
 
   /**

@@ -436,6 +436,115 @@ void ProxyLabelHullSkips(lfd::LightFieldSampler& sampler,
   sampler.SurfaceHigh = glm::dvec3(std::numeric_limits<double>::infinity());
 }
 
+// What AimBatch (LightFieldSampler::EntrySectors) did to the rays of a frame.
+struct BatchCounts
+{
+  int Bounded = 0;    ///< batches whose entry sectors are bounded
+  int AcrossZero = 0; ///< bounded batches whose sectors hold 31 and 0
+  int Early = 0;      ///< rays skipped before their entry, by the bound alone
+  int Outside = 0;    ///< rays entering the rig in a sector outside their bound
+  int Differing = 0;  ///< rays aimed differently than one by one
+};
+
+// Aims the rays of the `width` x `height` frame of `eye` (OpenCV pixels) in
+// batches of 16 along each row, as RenderPlainViews does (the last batch of
+// a row shorter), and compares them with Aim() ray by ray, without a bound.
+BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
+  const lfd::LabelHull& hull,
+  const lfd::PinholeCamera& eye,
+  int width,
+  int height)
+{
+  BatchCounts counts;
+  const glm::dvec3 o = eye.Center();
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x0 = 0; x0 < width; x0 += 16)
+    {
+      const int count = std::min(16, width - x0);
+      glm::dvec3 d[16];
+      lfd::RayAim aims[16];
+      bool aimed[16];
+      for (int i = 0; i < count; ++i)
+      {
+        d[i] = eye.PixelToDirection() * glm::dvec3(x0 + i, y, 1.0);
+      }
+      const std::uint32_t sectors = sampler.EntrySectors(o, d, count);
+      counts.Bounded += sectors != ~std::uint32_t(0) ? 1 : 0;
+      counts.AcrossZero +=
+        sectors != ~std::uint32_t(0) && (sectors & 0x80000001u) == 0x80000001u ? 1 : 0;
+      sampler.AimBatch(o, d, count, aims, aimed);
+      for (int i = 0; i < count; ++i)
+      {
+        lfd::RayAim alone;
+        const bool found = sampler.Aim(o, d[i], alone);
+        bool same = found == aimed[i];
+        if (found && same)
+        {
+          same = alone.Focal == aims[i].Focal && alone.Azimuth == aims[i].Azimuth &&
+            alone.Height == aims[i].Height && alone.Count == aims[i].Count;
+          for (int v = 0; v < alone.Count && same; ++v)
+          {
+            same = alone.Views[v].View == aims[i].Views[v].View &&
+              alone.Views[v].Weight == aims[i].Views[v].Weight;
+          }
+        }
+        counts.Differing += same ? 0 : 1;
+        const long cell = hull.Cell(aims[i].Focal, *sampler.Layout);
+        counts.Early += cell >= 0 && hull.Union[cell] && !(hull.Union[cell] & sectors) ? 1 : 0;
+        double s, azimuth, h;
+        counts.Outside += sampler.Entry(o, d[i], s, azimuth, h) &&
+            !(lfd::LabelHull::SectorsOnArc(azimuth, 0.0) & sectors)
+          ? 1
+          : 0;
+      }
+    }
+  }
+  return counts;
+}
+
+// The sectors of arcs (LabelHull::SectorsOnArc), and AimBatch over the rows
+// of a frame seen from outside the rig and of one seen from inside it,
+// whose rays enter the rig behind the eye, across azimuth 0: the bound
+// holds every ray's sector, and the batch aims every ray as Aim() alone.
+void EntrySectorsBound(const lfd::LightFieldSampler& sampler,
+  const lfd::LabelHull& hull,
+  const lfd::PinholeCamera& outside)
+{
+  constexpr double sector = lfd::TwoPi / lfd::LabelHull::Sectors;
+  using lfd::LabelHull;
+  lfdtest::CheckEqual(LabelHull::SectorsOnArc(2.5 * sector, 0.0), 4u, "sectors of a point");
+  lfdtest::CheckEqual(
+    LabelHull::SectorsOnArc(2.5 * sector, 2.0 * sector), 28u, "sectors of an arc (2 to 4)");
+  lfdtest::CheckEqual(LabelHull::SectorsOnArc(-0.5 * sector, 2.0 * sector),
+    0x80000003u,
+    "sectors of an arc across 0 (31, 0 and 1)");
+  lfdtest::CheckEqual(LabelHull::SectorsOnArc(lfd::TwoPi - 0.5 * sector, sector),
+    0x80000001u,
+    "sectors of an arc from below 2 pi across 0");
+  lfdtest::CheckEqual(LabelHull::SectorsOnArc(0.5 * sector, lfd::TwoPi - 0.25 * sector),
+    ~0u,
+    "sectors of an arc back into its first sector");
+  lfdtest::CheckEqual(LabelHull::SectorsOnArc(0.0, lfd::TwoPi), ~0u, "sectors of the whole circle");
+
+  const BatchCounts out = AimRows(sampler, hull, outside, 100, 80);
+  Expect("outside: batches bounded (of 560)", out.Bounded, 560.0);
+  Expect("outside: rays skipped before their entry by the bound", out.Early, 1364.0);
+  Expect("outside: rays outside their bound", out.Outside, 0.0);
+  Expect("outside: rays aimed differently", out.Differing, 0.0);
+
+  const glm::dmat3 k(
+    glm::dvec3(120.0, 0.0, 0.0), glm::dvec3(0.0, 120.0, 0.0), glm::dvec3(49.5, 39.5, 1.0));
+  const lfd::PinholeCamera inside = lfd::PinholeCamera::LookAt(
+    k, glm::dvec3(0.2, 0.3, 2.5), glm::dvec3(0.0, 0.0, -1.0), glm::dvec3(0.0, 1.0, 0.0));
+  const BatchCounts in = AimRows(sampler, hull, inside, 100, 80);
+  Expect("inside: batches bounded (of 560)", in.Bounded, 560.0);
+  Expect("inside: ... across azimuth 0 (one per row)", in.AcrossZero, 80.0);
+  Expect("inside: rays skipped before their entry by the bound", in.Early, 1770.0);
+  Expect("inside: rays outside their bound", in.Outside, 0.0);
+  Expect("inside: rays aimed differently", in.Differing, 0.0);
+}
+
 // The label hull (LabelHull): two rings of 24 views of 32 x 32 whose label
 // pass is a square of 8 x 8 pixels (shifted by view), rays from all around
 // aimed at a box around the object. A ray that the hull lets Gather skip must
@@ -537,6 +646,7 @@ void LabelHullSkips()
   Expect("tiles skipped whole (3392 of the 4387 rays the union skips)", skippedTiles, 53.0);
   Expect("rays the union does not skip", lookedUp, 3293.0);
   Expect("rays of skipped tiles that Gather would look up", leaks, 0.0);
+  EntrySectorsBound(sampler, hull, eye);
   ProxyLabelHullSkips(sampler, hull, eye, uniform);
   sampler.Hull = nullptr;
 }
