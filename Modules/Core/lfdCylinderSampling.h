@@ -57,9 +57,11 @@ struct Cylinder
 
 /**
  * Parameter `s` where the line `o + s d` enters the cylinder (the smaller
- * root of |perp(o + s d - c)|^2 = r^2). Returns false when the line misses
- * the cylinder or runs parallel to its axis. Uses the cancellation-free form
- * of the quadratic roots.
+ * root of |perp(o + s d - c)|^2 = r^2). Returns false (`s` meaningless)
+ * when the line misses the cylinder or runs parallel to its axis. Uses the
+ * cancellation-free form of the quadratic roots. Branch-free (each division
+ * and root taken, of a harmless operand where its result is not used), so
+ * that a loop over rays vectorises (LightFieldSampler::AimBatch).
  */
 inline bool IntersectCylinderEntry(const Cylinder& cylinder,
   const glm::dvec3& o,
@@ -73,20 +75,13 @@ inline bool IntersectCylinderEntry(const Cylinder& cylinder,
   const double qa = glm::dot(dp, dp);
   const double qb = glm::dot(dp, op); // half of the linear coefficient
   const double qc = glm::dot(op, op) - cylinder.Radius * cylinder.Radius;
-  if (qa <= 1e-12 * glm::dot(d, d))
-  {
-    return false;
-  }
   const double disc = qb * qb - qa * qc;
-  if (disc < 0.0)
-  {
-    return false;
-  }
-  const double q = -(qb + std::copysign(std::sqrt(disc), qb));
-  double s0 = q / qa;
-  double s1 = q != 0.0 ? qc / q : s0;
-  s = std::min(s0, s1);
-  return true;
+  const bool hit = !(qa <= 1e-12 * glm::dot(d, d)) & !(disc < 0.0);
+  const double q = -(qb + std::copysign(std::sqrt(hit ? disc : 0.0), qb));
+  const double s0 = q / (hit ? qa : 1.0);
+  const double s1 = qc / (q != 0.0 ? q : 1.0);
+  s = std::min(s0, q != 0.0 ? s1 : s0);
+  return hit;
 }
 
 /**
@@ -106,11 +101,11 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
   const double dd = glm::dot(d, d);
   const double da = glm::dot(d, a);
   const double denom = dd - da * da; // |a| = 1
-  double s = 0.0;
-  if (denom > 1e-12 * dd)
-  {
-    s = (da * glm::dot(w, a) - glm::dot(w, d)) / denom;
-  }
+  // Branch-free (LightFieldSampler::AimBatch vectorises it): the division
+  // by 1 where the lines are parallel.
+  const bool crossing = denom > 1e-12 * dd;
+  const double t = (da * glm::dot(w, a) - glm::dot(w, d)) / (crossing ? denom : 1.0);
+  const double s = crossing ? t : 0.0;
   // (The plane through the axis, the default, needs no square root.)
   return o + (focalDistance != 0.0 ? s - focalDistance / std::sqrt(dd) : s) * d;
 }
@@ -207,7 +202,9 @@ inline double Azimuth(double y, double x)
   const double high = std::max(ax, ay);
   const bool reduced = low > 0.41421356237309503 * high; // tan(pi / 8)
   const double denominator = reduced ? low + high : high;
-  const double u = denominator > 0.0 ? (reduced ? low - high : low) / denominator : 0.0;
+  // (Branch-free, for LightFieldSampler::AimBatch: the division by 1 at the origin.)
+  const double ratio = (reduced ? low - high : low) / (denominator > 0.0 ? denominator : 1.0);
+  const double u = denominator > 0.0 ? ratio : 0.0;
   const double u2 = u * u;
   const double series = 0.99999999701802489 +
     u2 *
@@ -647,20 +644,33 @@ struct LabelHull
    * Index of the voxel (within one sector's grid) holding the focal point
    * `x`; -1 outside the grid, where every ray may meet a part.
    */
-  long Cell(const glm::dvec3& x, const RingLayout& layout) const
+  int Cell(const glm::dvec3& x, const RingLayout& layout) const
+  {
+    return CellAt(this->GridPosition(x, layout));
+  }
+
+  /**
+   * The grid coordinates (in voxels from Low) of the world point `x`:
+   * Cell()'s arithmetic, which LightFieldSampler::AimBatch runs over a
+   * batch of focal points as one vectorised loop.
+   */
+  glm::dvec3 GridPosition(const glm::dvec3& x, const RingLayout& layout) const
   {
     const glm::dvec3 v = x - layout.Cyl.Center;
-    const glm::dvec3 q =
-      (glm::dvec3(
-         glm::dot(v, layout.RefX), glm::dot(v, layout.RefY), glm::dot(v, layout.Cyl.Axis)) -
-        this->Low) *
+    return (glm::dvec3(
+              glm::dot(v, layout.RefX), glm::dot(v, layout.RefY), glm::dot(v, layout.Cyl.Axis)) -
+             this->Low) *
       this->InverseCellSize;
+  }
+
+  /// Index of the voxel at grid coordinates `q` (GridPosition()); -1 outside the grid.
+  static int CellAt(const glm::dvec3& q)
+  {
     if (!(q.x >= 0.0 && q.y >= 0.0 && q.z >= 0.0 && q.x < Cells && q.y < Cells && q.z < Cells))
     {
       return -1;
     }
-    return (static_cast<long>(q.z) * Cells + static_cast<long>(q.y)) * Cells +
-      static_cast<long>(q.x);
+    return (static_cast<int>(q.z) * Cells + static_cast<int>(q.y)) * Cells + static_cast<int>(q.x);
   }
 
   /**
@@ -1299,6 +1309,9 @@ struct LightFieldSampler
   /// surface point before the camera counts as not seeing it.
   double OcclusionTolerance = 0.02;
 
+  /// The most rays AimBatch() aims at once, as one batch.
+  static constexpr int MaximumBatch = 16;
+
   /// Steps of the walk along a ray's projection into a depth map.
   static constexpr int MaximumDepthSteps = 256;
   /// Steps of the walk tested at once against DepthTiles.
@@ -1411,16 +1424,84 @@ struct LightFieldSampler
     bool* aimed) const
   {
     const std::uint32_t sectors = this->EntrySectors(o, d, count);
+    if (this->Depth.Present() || count > MaximumBatch)
+    {
+      // The proxy's stretches are aimed ray by ray.
+      for (int i = 0; i < count; ++i)
+      {
+        aimed[i] = this->Aim(o, d[i], aims[i], sectors);
+      }
+      return;
+    }
+    // Aim()'s stages, each over the batch as one loop over arrays of
+    // coordinates, which the compiler vectorises (the stage functions are
+    // branch-free), and between them the table look-ups, ray by ray.
+    const bool hull = this->Hull && !this->Hull->Marks.empty();
+    double x[MaximumBatch], y[MaximumBatch], z[MaximumBatch];    // the focal points
+    double qx[MaximumBatch], qy[MaximumBatch], qz[MaximumBatch]; // LabelHull::GridPosition()
+    int cells[MaximumBatch];
     for (int i = 0; i < count; ++i)
     {
-      aimed[i] = this->Aim(o, d[i], aims[i], sectors);
+      const glm::dvec3 focal = FocalPoint(this->Layout->Cyl, o, d[i], this->FocalDistance);
+      x[i] = focal.x;
+      y[i] = focal.y;
+      z[i] = focal.z;
+    }
+    if (hull)
+    {
+      for (int i = 0; i < count; ++i)
+      {
+        const glm::dvec3 q = this->Hull->GridPosition(glm::dvec3(x[i], y[i], z[i]), *this->Layout);
+        qx[i] = q.x;
+        qy[i] = q.y;
+        qz[i] = q.z;
+      }
+    }
+    // The rays the hull does not skip before their entry (as Aim()), their
+    // directions gathered.
+    double dx[MaximumBatch], dy[MaximumBatch], dz[MaximumBatch];
+    int kept[MaximumBatch];
+    int n = 0;
+    for (int i = 0; i < count; ++i)
+    {
+      aimed[i] = false;
+      cells[i] = hull ? LabelHull::CellAt(glm::dvec3(qx[i], qy[i], qz[i])) : -1;
+      aims[i].Focal = glm::dvec3(x[i], y[i], z[i]);
+      aims[i].Stretch = false;
+      if (!(cells[i] >= 0 && !this->Hull->Union.empty() &&
+            !(this->Hull->Union[cells[i]] & sectors)))
+      {
+        dx[n] = d[i].x;
+        dy[n] = d[i].y;
+        dz[n] = d[i].z;
+        kept[n++] = i;
+      }
+    }
+    // The entries; a ray that misses the cylinder gets azimuth -1.
+    double azimuths[MaximumBatch], heights[MaximumBatch];
+    for (int k = 0; k < n; ++k)
+    {
+      double s, azimuth;
+      const bool hit = this->Entry(o, glm::dvec3(dx[k], dy[k], dz[k]), s, azimuth, heights[k]);
+      azimuths[k] = hit ? azimuth : -1.0;
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      const int i = kept[k];
+      if (azimuths[k] >= 0.0 && !(hull && !this->Hull->MayMeetPart(azimuths[k], cells[i])))
+      {
+        aims[i].Azimuth = azimuths[k];
+        aims[i].Height = heights[k];
+        aims[i].Count = ChooseViews(*this->Layout, azimuths[k], heights[k], aims[i].Views);
+        aimed[i] = true;
+      }
     }
   }
 
   /**
    * The parameter `s` (IntersectCylinderEntry()), azimuth and height
    * (RingLayout::Locate()) of where the line o + s d enters the rig
-   * cylinder; false when it misses.
+   * cylinder; false when it misses (azimuth and height meaningless then).
    */
   bool Entry(const glm::dvec3& o,
     const glm::dvec3& d,
@@ -1428,12 +1509,10 @@ struct LightFieldSampler
     double& azimuth,
     double& height) const
   {
-    if (!IntersectCylinderEntry(this->Layout->Cyl, o, d, s))
-    {
-      return false;
-    }
+    // Branch-free (AimBatch vectorises it): located also when it misses.
+    const bool hit = IntersectCylinderEntry(this->Layout->Cyl, o, d, s);
     this->Layout->Locate(o + s * d, azimuth, height);
-    return true;
+    return hit;
   }
 
   /**

@@ -1765,7 +1765,7 @@ ViewSample RenderView(const FrameCage& cage,
 }
 
 /// The most rays RenderPlainViews takes at once.
-constexpr int MaximumPlainBatch = 16;
+constexpr int MaximumPlainBatch = LightFieldSampler::MaximumBatch;
 
 namespace detail
 {
