@@ -443,12 +443,32 @@ struct BatchCounts
   int AcrossZero = 0; ///< bounded batches whose sectors hold 31 and 0
   int Early = 0;      ///< rays skipped before their entry, by the bound alone
   int Outside = 0;    ///< rays entering the rig in a sector outside their bound
-  int Differing = 0;  ///< rays aimed differently than one by one
+  int Differing = 0;  ///< rays aimed differently than one by one, or than with SSE2
 };
+
+// Whether two rays were aimed alike (Aim()'s results `a` and `b`, found or
+// not): the same focal point, entry and weighted views.
+bool SameAim(const lfd::RayAim& a, bool foundA, const lfd::RayAim& b, bool foundB)
+{
+  bool same = foundA == foundB;
+  if (foundA && same)
+  {
+    same =
+      a.Focal == b.Focal && a.Azimuth == b.Azimuth && a.Height == b.Height && a.Count == b.Count;
+    for (int v = 0; v < a.Count && same; ++v)
+    {
+      same = a.Views[v].View == b.Views[v].View && a.Views[v].Weight == b.Views[v].Weight;
+    }
+  }
+  return same;
+}
 
 // Aims the rays of the `width` x `height` frame of `eye` (OpenCV pixels) in
 // batches of 16 along each row, as RenderPlainViews does (the last batch of
-// a row shorter), and compares them with Aim() ray by ray, without a bound.
+// a row shorter), and compares them with Aim() ray by ray, without a bound,
+// and with the SSE2 version of the batch (AimStages; AimBatch may have taken
+// the AVX2 one). This file is compiled as vtkLightFieldRenderer.cxx is, so
+// that the batch's loops are vectorised here too (CMakeLists.txt).
 BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
   const lfd::LabelHull& hull,
   const lfd::PinholeCamera& eye,
@@ -474,22 +494,16 @@ BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
       counts.AcrossZero +=
         sectors != ~std::uint32_t(0) && (sectors & 0x80000001u) == 0x80000001u ? 1 : 0;
       sampler.AimBatch(o, d, count, aims, aimed);
+      // The SSE2 version too where AimBatch took the AVX2 one.
+      lfd::RayAim baseline[16];
+      bool baselineAimed[16];
+      sampler.AimStages(o, d, count, baseline, baselineAimed);
       for (int i = 0; i < count; ++i)
       {
+        counts.Differing += SameAim(baseline[i], baselineAimed[i], aims[i], aimed[i]) ? 0 : 1;
         lfd::RayAim alone;
         const bool found = sampler.Aim(o, d[i], alone);
-        bool same = found == aimed[i];
-        if (found && same)
-        {
-          same = alone.Focal == aims[i].Focal && alone.Azimuth == aims[i].Azimuth &&
-            alone.Height == aims[i].Height && alone.Count == aims[i].Count;
-          for (int v = 0; v < alone.Count && same; ++v)
-          {
-            same = alone.Views[v].View == aims[i].Views[v].View &&
-              alone.Views[v].Weight == aims[i].Views[v].Weight;
-          }
-        }
-        counts.Differing += same ? 0 : 1;
+        counts.Differing += SameAim(alone, found, aims[i], aimed[i]) ? 0 : 1;
         const long cell = hull.Cell(aims[i].Focal, *sampler.Layout);
         counts.Early += cell >= 0 && hull.Union[cell] && !(hull.Union[cell] & sectors) ? 1 : 0;
         double s, azimuth, h;
