@@ -43,6 +43,14 @@
 #include <limits>
 #include <vector>
 
+/// Whether LightFieldSampler::AimBatch has a version for AVX2 (GCC and
+/// Clang on x86, where the processor is asked at run time).
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#define LFD_AIM_AVX2 1
+#else
+#define LFD_AIM_AVX2 0
+#endif
+
 namespace lfd
 {
 
@@ -57,9 +65,11 @@ struct Cylinder
 
 /**
  * Parameter `s` where the line `o + s d` enters the cylinder (the smaller
- * root of |perp(o + s d - c)|^2 = r^2). Returns false when the line misses
- * the cylinder or runs parallel to its axis. Uses the cancellation-free form
- * of the quadratic roots.
+ * root of |perp(o + s d - c)|^2 = r^2). Returns false (`s` meaningless)
+ * when the line misses the cylinder or runs parallel to its axis. Uses the
+ * cancellation-free form of the quadratic roots. Branch-free (each division
+ * and root taken, of a harmless operand where its result is not used), so
+ * that a loop over rays vectorises (LightFieldSampler::AimBatch).
  */
 inline bool IntersectCylinderEntry(const Cylinder& cylinder,
   const glm::dvec3& o,
@@ -73,20 +83,13 @@ inline bool IntersectCylinderEntry(const Cylinder& cylinder,
   const double qa = glm::dot(dp, dp);
   const double qb = glm::dot(dp, op); // half of the linear coefficient
   const double qc = glm::dot(op, op) - cylinder.Radius * cylinder.Radius;
-  if (qa <= 1e-12 * glm::dot(d, d))
-  {
-    return false;
-  }
   const double disc = qb * qb - qa * qc;
-  if (disc < 0.0)
-  {
-    return false;
-  }
-  const double q = -(qb + std::copysign(std::sqrt(disc), qb));
-  double s0 = q / qa;
-  double s1 = q != 0.0 ? qc / q : s0;
-  s = std::min(s0, s1);
-  return true;
+  const bool hit = !(qa <= 1e-12 * glm::dot(d, d)) & !(disc < 0.0);
+  const double q = -(qb + std::copysign(std::sqrt(hit ? disc : 0.0), qb));
+  const double s0 = q / (hit ? qa : 1.0);
+  const double s1 = qc / (q != 0.0 ? q : 1.0);
+  s = std::min(s0, q != 0.0 ? s1 : s0);
+  return hit;
 }
 
 /**
@@ -106,11 +109,11 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
   const double dd = glm::dot(d, d);
   const double da = glm::dot(d, a);
   const double denom = dd - da * da; // |a| = 1
-  double s = 0.0;
-  if (denom > 1e-12 * dd)
-  {
-    s = (da * glm::dot(w, a) - glm::dot(w, d)) / denom;
-  }
+  // Branch-free (LightFieldSampler::AimBatch vectorises it): the division
+  // by 1 where the lines are parallel.
+  const bool crossing = denom > 1e-12 * dd;
+  const double t = (da * glm::dot(w, a) - glm::dot(w, d)) / (crossing ? denom : 1.0);
+  const double s = crossing ? t : 0.0;
   // (The plane through the axis, the default, needs no square root.)
   return o + (focalDistance != 0.0 ? s - focalDistance / std::sqrt(dd) : s) * d;
 }
@@ -207,7 +210,9 @@ inline double Azimuth(double y, double x)
   const double high = std::max(ax, ay);
   const bool reduced = low > 0.41421356237309503 * high; // tan(pi / 8)
   const double denominator = reduced ? low + high : high;
-  const double u = denominator > 0.0 ? (reduced ? low - high : low) / denominator : 0.0;
+  // (Branch-free, for LightFieldSampler::AimBatch: the division by 1 at the origin.)
+  const double ratio = (reduced ? low - high : low) / (denominator > 0.0 ? denominator : 1.0);
+  const double u = denominator > 0.0 ? ratio : 0.0;
   const double u2 = u * u;
   const double series = 0.99999999701802489 +
     u2 *
@@ -528,9 +533,12 @@ struct LabelHull
   glm::dvec3 InverseCellSize{ 1.0 };
   /// Per sector, Cells^3 flags (1: a label cone touches the voxel); empty: no grid.
   std::vector<std::uint8_t> Marks;
-  /// Cells^3 flags, the union of the sectors' (Unite()): a focal point in an
-  /// unmarked voxel is skipped before the ray's azimuth is known.
-  std::vector<std::uint8_t> Union;
+  /// Per voxel (Cells^3), the sectors that mark it (Unite(); bit k: sector
+  /// k), non-zero for the union of the sectors' marks: a focal point in a
+  /// voxel unmarked in every sector, or in each of the sectors its ray may
+  /// enter the rig in (LightFieldSampler::EntrySectors()), is skipped before
+  /// the ray's azimuth is known.
+  std::vector<std::uint32_t> Union;
   /// Per sector, its marks united with its two neighbours' (Unite()): the
   /// proxy's candidate cameras (LightFieldSampler::ProxyCandidates, 4 per
   /// row around the azimuth) use up the margin of one view that MarkSector
@@ -618,6 +626,8 @@ struct LabelHull
     }
   }
 
+  static_assert(Sectors <= 32, "a voxel's sectors are the bits of a 32-bit Union entry");
+
   /**
    * Fills Union from the sectors' marks; call once every sector is marked
    * (until then, and without a grid, Union is empty and unused).
@@ -629,8 +639,8 @@ struct LabelHull
     this->Wide.assign(this->Marks.size(), 0);
     for (std::size_t i = 0; i < this->Marks.size(); ++i)
     {
-      this->Union[i % cells] |= this->Marks[i];
       const std::size_t sector = i / cells;
+      this->Union[i % cells] |= static_cast<std::uint32_t>(this->Marks[i]) << sector;
       for (std::size_t next : { sector + Sectors - 1, sector, sector + 1 })
       {
         this->Wide[next % Sectors * cells + i % cells] |= this->Marks[i];
@@ -642,20 +652,33 @@ struct LabelHull
    * Index of the voxel (within one sector's grid) holding the focal point
    * `x`; -1 outside the grid, where every ray may meet a part.
    */
-  long Cell(const glm::dvec3& x, const RingLayout& layout) const
+  int Cell(const glm::dvec3& x, const RingLayout& layout) const
+  {
+    return CellAt(this->GridPosition(x, layout));
+  }
+
+  /**
+   * The grid coordinates (in voxels from Low) of the world point `x`:
+   * Cell()'s arithmetic, which LightFieldSampler::AimBatch runs over a
+   * batch of focal points as one vectorised loop.
+   */
+  glm::dvec3 GridPosition(const glm::dvec3& x, const RingLayout& layout) const
   {
     const glm::dvec3 v = x - layout.Cyl.Center;
-    const glm::dvec3 q =
-      (glm::dvec3(
-         glm::dot(v, layout.RefX), glm::dot(v, layout.RefY), glm::dot(v, layout.Cyl.Axis)) -
-        this->Low) *
+    return (glm::dvec3(
+              glm::dot(v, layout.RefX), glm::dot(v, layout.RefY), glm::dot(v, layout.Cyl.Axis)) -
+             this->Low) *
       this->InverseCellSize;
+  }
+
+  /// Index of the voxel at grid coordinates `q` (GridPosition()); -1 outside the grid.
+  static int CellAt(const glm::dvec3& q)
+  {
     if (!(q.x >= 0.0 && q.y >= 0.0 && q.z >= 0.0 && q.x < Cells && q.y < Cells && q.z < Cells))
     {
       return -1;
     }
-    return (static_cast<long>(q.z) * Cells + static_cast<long>(q.y)) * Cells +
-      static_cast<long>(q.x);
+    return (static_cast<int>(q.z) * Cells + static_cast<int>(q.y)) * Cells + static_cast<int>(q.x);
   }
 
   /**
@@ -671,6 +694,33 @@ struct LabelHull
     }
     return this->Marks[Sector(azimuth) * Cells * Cells * Cells + static_cast<std::size_t>(cell)] !=
       0;
+  }
+
+  /**
+   * The sectors (bit k: sector k, as in Union) of the azimuths on the arc
+   * of `length` radians from `from` (in [-2 pi, 2 pi)) counter-clockwise;
+   * every sector for an arc of 2 pi or more.
+   */
+  static std::uint32_t SectorsOnArc(double from, double length)
+  {
+    constexpr std::uint32_t all = Sectors == 32 ? ~0u : (1u << Sectors) - 1;
+    if (!(length < TwoPi))
+    {
+      return all;
+    }
+    from = from < 0.0 ? from + TwoPi : from;
+    double to = from + length;
+    to = to >= TwoPi ? to - TwoPi : to;
+    const std::size_t first = Sector(from);
+    const std::size_t last = Sector(to);
+    // An arc across azimuth 0 that comes back into its first sector holds them all.
+    if (to < from && last >= first)
+    {
+      return all;
+    }
+    const std::size_t count = (last + Sectors - first) % Sectors + 1;
+    const std::uint32_t run = count == 32 ? ~0u : (1u << count) - 1;
+    return ((run << first) | (first == 0 ? 0u : run >> (Sectors - first))) & all;
   }
 
   /**
@@ -1267,6 +1317,9 @@ struct LightFieldSampler
   /// surface point before the camera counts as not seeing it.
   double OcclusionTolerance = 0.02;
 
+  /// The most rays AimBatch() aims at once, as one batch.
+  static constexpr int MaximumBatch = 16;
+
   /// Steps of the walk along a ray's projection into a depth map.
   static constexpr int MaximumDepthSteps = 256;
   /// Steps of the walk tested at once against DepthTiles.
@@ -1329,7 +1382,10 @@ struct LightFieldSampler
    * stage is a long dependent chain of divisions and square roots, and the
    * chains of neighbouring rays then overlap in the processor.
    */
-  bool Aim(const glm::dvec3& o, const glm::dvec3& d, RayAim& aim) const
+  bool Aim(const glm::dvec3& o,
+    const glm::dvec3& d,
+    RayAim& aim,
+    std::uint32_t sectors = ~std::uint32_t(0)) const
   {
     aim.Focal = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
     const bool hull = this->Hull && !this->Hull->Marks.empty();
@@ -1338,19 +1394,20 @@ struct LightFieldSampler
     // focus on; the ray is skipped when neither it nor the focal point can
     // have a labelled sample (see Gather()).
     aim.Stretch = this->Depth.Present() && this->SurfaceStretch(o, d, aim.Enter, aim.Leave);
-    // Most skipped rays are unmarked in every sector: they skip the cylinder
-    // entry and the atan2 of the azimuth too (a ray that misses the cylinder
-    // returns false as well).
-    if (cell >= 0 && !this->Hull->Union.empty() && !this->Hull->Union[cell] && !aim.Stretch)
+    // Most skipped rays are unmarked in every sector, or in every sector
+    // they may enter the rig in (`sectors`): they skip the cylinder entry
+    // and the atan2 of the azimuth too (MayMeetPart() would be false for
+    // them; a ray that misses the cylinder returns false as well).
+    if (cell >= 0 && !this->Hull->Union.empty() && !(this->Hull->Union[cell] & sectors) &&
+      !aim.Stretch)
     {
       return false;
     }
     double s;
-    if (!IntersectCylinderEntry(this->Layout->Cyl, o, d, s))
+    if (!this->Entry(o, d, s, aim.Azimuth, aim.Height))
     {
       return false;
     }
-    this->Layout->Locate(o + s * d, aim.Azimuth, aim.Height);
     if (hull && !this->Hull->MayMeetPart(aim.Azimuth, cell) &&
       !(aim.Stretch &&
         this->Hull->MaySeePart(aim.Azimuth, o + aim.Enter * d, o + aim.Leave * d, *this->Layout)))
@@ -1359,6 +1416,206 @@ struct LightFieldSampler
     }
     aim.Count = ChooseViews(*this->Layout, aim.Azimuth, aim.Height, aim.Views);
     return true;
+  }
+
+  /**
+   * Aim() for the rays o + s d[i], i < count, into aims[i] (aimed[i]: its
+   * result), with the hull's sectors bounded for all of them at once
+   * (EntrySectors()): the same results as ray by ray, the rays whose focal
+   * voxel no sector of the bound marks skipped before their cylinder entry.
+   * The d[i] are the directions through pixels of one image row, in order.
+   * On an x86 processor with AVX2, AimBatchAvx2() (4 doubles a vector where
+   * SSE2, the x86-64 baseline, has 2).
+   */
+  void AimBatch(const glm::dvec3& o,
+    const glm::dvec3* d,
+    int count,
+    RayAim* aims,
+    bool* aimed) const
+  {
+#if LFD_AIM_AVX2
+    static const bool avx2 = __builtin_cpu_supports("avx2");
+    if (avx2)
+    {
+      this->AimBatchAvx2(o, d, count, aims, aimed);
+      return;
+    }
+#endif
+    this->AimStages(o, d, count, aims, aimed);
+  }
+
+#if LFD_AIM_AVX2
+  /**
+   * AimBatch() compiled for AVX2 (the processor must have it): the same
+   * results as with SSE2 (no instruction of AVX2 rounds differently, and it
+   * has no fused multiply-add to contract the stages' products into).
+   */
+  __attribute__((target("avx2"))) void AimBatchAvx2(const glm::dvec3& o,
+    const glm::dvec3* d,
+    int count,
+    RayAim* aims,
+    bool* aimed) const
+  {
+    this->AimStages(o, d, count, aims, aimed);
+  }
+#endif
+
+  /// AimBatch()'s body, inlined into each of its instruction sets' versions.
+  __attribute__((always_inline)) inline void AimStages(const glm::dvec3& o,
+    const glm::dvec3* d,
+    int count,
+    RayAim* aims,
+    bool* aimed) const
+  {
+    const std::uint32_t sectors = this->EntrySectors(o, d, count);
+    if (this->Depth.Present() || count > MaximumBatch)
+    {
+      // The proxy's stretches are aimed ray by ray.
+      for (int i = 0; i < count; ++i)
+      {
+        aimed[i] = this->Aim(o, d[i], aims[i], sectors);
+      }
+      return;
+    }
+    // Aim()'s stages, each over the batch as one loop over arrays of
+    // coordinates, which the compiler vectorises (the stage functions are
+    // branch-free), and between them the table look-ups, ray by ray.
+    const bool hull = this->Hull && !this->Hull->Marks.empty();
+    double x[MaximumBatch], y[MaximumBatch], z[MaximumBatch];    // the focal points
+    double qx[MaximumBatch], qy[MaximumBatch], qz[MaximumBatch]; // LabelHull::GridPosition()
+    int cells[MaximumBatch];
+    for (int i = 0; i < count; ++i)
+    {
+      const glm::dvec3 focal = FocalPoint(this->Layout->Cyl, o, d[i], this->FocalDistance);
+      x[i] = focal.x;
+      y[i] = focal.y;
+      z[i] = focal.z;
+    }
+    if (hull)
+    {
+      for (int i = 0; i < count; ++i)
+      {
+        const glm::dvec3 q = this->Hull->GridPosition(glm::dvec3(x[i], y[i], z[i]), *this->Layout);
+        qx[i] = q.x;
+        qy[i] = q.y;
+        qz[i] = q.z;
+      }
+    }
+    // The rays the hull does not skip before their entry (as Aim()), their
+    // directions gathered.
+    double dx[MaximumBatch], dy[MaximumBatch], dz[MaximumBatch];
+    int kept[MaximumBatch];
+    int n = 0;
+    for (int i = 0; i < count; ++i)
+    {
+      aimed[i] = false;
+      cells[i] = hull ? LabelHull::CellAt(glm::dvec3(qx[i], qy[i], qz[i])) : -1;
+      aims[i].Focal = glm::dvec3(x[i], y[i], z[i]);
+      aims[i].Stretch = false;
+      if (!(cells[i] >= 0 && !this->Hull->Union.empty() &&
+            !(this->Hull->Union[cells[i]] & sectors)))
+      {
+        dx[n] = d[i].x;
+        dy[n] = d[i].y;
+        dz[n] = d[i].z;
+        kept[n++] = i;
+      }
+    }
+    // The entries; a ray that misses the cylinder gets azimuth -1.
+    double azimuths[MaximumBatch], heights[MaximumBatch];
+    for (int k = 0; k < n; ++k)
+    {
+      double s, azimuth;
+      const bool hit = this->Entry(o, glm::dvec3(dx[k], dy[k], dz[k]), s, azimuth, heights[k]);
+      azimuths[k] = hit ? azimuth : -1.0;
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      const int i = kept[k];
+      if (azimuths[k] >= 0.0 && !(hull && !this->Hull->MayMeetPart(azimuths[k], cells[i])))
+      {
+        aims[i].Azimuth = azimuths[k];
+        aims[i].Height = heights[k];
+        aims[i].Count = ChooseViews(*this->Layout, azimuths[k], heights[k], aims[i].Views);
+        aimed[i] = true;
+      }
+    }
+  }
+
+  /**
+   * The parameter `s` (IntersectCylinderEntry()), azimuth and height
+   * (RingLayout::Locate()) of where the line o + s d enters the rig
+   * cylinder; false when it misses (azimuth and height meaningless then).
+   */
+  bool Entry(const glm::dvec3& o,
+    const glm::dvec3& d,
+    double& s,
+    double& azimuth,
+    double& height) const
+  {
+    // Branch-free (AimBatch vectorises it): located also when it misses.
+    const bool hit = IntersectCylinderEntry(this->Layout->Cyl, o, d, s);
+    this->Layout->Locate(o + s * d, azimuth, height);
+    return hit;
+  }
+
+  /**
+   * The hull sectors (LabelHull::Union's bits) that the entry azimuths
+   * (Entry()) of the lines o + s d[i], i < count, lie in, when every d[i]
+   * lies on the segment from d[0] to d[count - 1] (directions through the
+   * pixels of one image row, in order: affine in the column); every sector
+   * when the bound does not hold or does not pay (no hull, few rays).
+   *
+   * Why it holds: the parts of the d[i] across the axis lie on a segment,
+   * so when its ends make an angle below pi / 2 the lines' directions
+   * sweep that angle once, monotonically. Where every line of the sweep
+   * meets the cylinder, its entry moves continuously with the direction,
+   * and one-to-one (two lines through o share no other point, and o is not
+   * on the cylinder: its entries lie on one side of it), so the entries
+   * fill one of the two arcs between the ends' entries: the one that holds
+   * the middle line's. Every line meets the cylinder when both ends enter
+   * on the same side of o: from inside, every line does; from outside, the
+   * lines that enter ahead of o (or behind it) form a convex cone, which
+   * holds the sweep between two of them. Rounding (of the directions; of
+   * an entry, some 1e-8 radian next to tangency, where the square root of
+   * the discriminant amplifies it; of Azimuth(), 2e-10) stays far below
+   * the margin of 1e-6 radian the arc is widened by on each side; a middle
+   * entry within the margin of an end gives no bound.
+   */
+  std::uint32_t EntrySectors(const glm::dvec3& o, const glm::dvec3* d, int count) const
+  {
+    constexpr std::uint32_t all = ~std::uint32_t(0);
+    constexpr double margin = 1e-6;
+    // Three entries bound the batch: with fewer rays they would not pay.
+    if (count < 4 || !this->Hull || this->Hull->Union.empty())
+    {
+      return all;
+    }
+    const glm::dvec3& a = this->Layout->Cyl.Axis;
+    const glm::dvec3 first = d[0] - glm::dot(d[0], a) * a;
+    const glm::dvec3 last = d[count - 1] - glm::dot(d[count - 1], a) * a;
+    double s[3], azimuth[3], height;
+    if (!(glm::dot(first, last) > 0.0) || !this->Entry(o, d[0], s[0], azimuth[0], height) ||
+      !this->Entry(o, d[count - 1], s[1], azimuth[1], height) ||
+      !((s[0] > 0.0 && s[1] > 0.0) || (s[0] < 0.0 && s[1] < 0.0)) ||
+      !this->Entry(o, d[count / 2], s[2], azimuth[2], height))
+    {
+      return all;
+    }
+    // Counter-clockwise from the first end: the span to the last, the middle.
+    const auto ccw = [](double from, double to)
+    { return to >= from ? to - from : to - from + TwoPi; };
+    const double span = ccw(azimuth[0], azimuth[1]);
+    const double middle = ccw(azimuth[0], azimuth[2]);
+    if (middle > margin && middle < span - margin)
+    {
+      return LabelHull::SectorsOnArc(azimuth[0] - margin, span + 2.0 * margin);
+    }
+    if (middle > span + margin && middle < TwoPi - margin)
+    {
+      return LabelHull::SectorsOnArc(azimuth[1] - margin, TwoPi - span + 2.0 * margin);
+    }
+    return all;
   }
 
   /**

@@ -40,9 +40,10 @@
  *     samples' own RaySamples::Surface is used instead when it is set).
  *
  * and may gather in two stages, which RenderPlainViews() then runs over a
- * batch of rays (SamplerLookup does): a type Aimed, Aim(o, d, Aimed&) (the
- * ray's geometry; false: no sample), Sample(o, d, Aimed&, RaySamples&)
- * (Gather's result) and FocalDepth(o, const Aimed&).
+ * batch of rays (SamplerLookup does): a type Aimed, AimBatch(o, d, count,
+ * Aimed*, bool* aimed) (the geometry of the rays o + s d[i] through pixels
+ * of one row, in order; aimed[i] false: no sample), Sample(o, d, Aimed&,
+ * RaySamples&) (Gather's result) and FocalDepth(o, const Aimed&).
  *
  * A lookup sees the first surface along the whole line of a warped ray, not
  * only along its interval, and it samples the cameras at the line's focal
@@ -1036,9 +1037,13 @@ struct SamplerLookup
   }
   /// Gather in two stages over a batch of rays (RenderPlainViews).
   using Aimed = RayAim;
-  bool Aim(const glm::dvec3& o, const glm::dvec3& d, RayAim& aim) const
+  void AimBatch(const glm::dvec3& o,
+    const glm::dvec3* d,
+    int count,
+    RayAim* aims,
+    bool* aimed) const
   {
-    return this->Sampler.Aim(o, d, aim);
+    this->Sampler.AimBatch(o, d, count, aims, aimed);
   }
   bool Sample(const glm::dvec3& o, const glm::dvec3& d, const RayAim& aim, RaySamples& out) const
   {
@@ -1782,7 +1787,7 @@ ViewSample RenderView(const FrameCage& cage,
 }
 
 /// The most rays RenderPlainViews takes at once.
-constexpr int MaximumPlainBatch = 16;
+constexpr int MaximumPlainBatch = LightFieldSampler::MaximumBatch;
 
 namespace detail
 {
@@ -1799,15 +1804,17 @@ struct Staged<Lookup, std::void_t<typename Lookup::Aimed>> : std::true_type
 
 /**
  * RenderView for the rays through the pixels (xs[i], y), i < count <=
- * MaximumPlainBatch, of a frame, rays that no box may claim (the frame has
- * no box or no labels, or their tiles list none: FrameCage::
+ * MaximumPlainBatch, xs ascending, of a frame, rays that no box may claim
+ * (the frame has no box or no labels, or their tiles list none: FrameCage::
  * CountCandidates() 0): the same results, into `seen`. With a lookup that
- * gathers in two stages (SamplerLookup: Aim() and Sample()), the batch runs
- * the first stage, the rays' geometry, for every ray before the second, the
- * texels, for any. A ray's lookup is one dependent chain of divisions and
- * square roots (some 900 instructions, more than the processor's reorder
- * window holds), so looked up ray after ray, the rays do not overlap; the
- * first stages of neighbouring rays, run back to back, do.
+ * gathers in two stages (SamplerLookup: AimBatch() and Sample()), the batch
+ * runs the first stage, the rays' geometry, for every ray before the
+ * second, the texels, for any (and the first stage may bound the batch's
+ * geometry at once: LightFieldSampler::EntrySectors()). A ray's lookup is
+ * one dependent chain of divisions and square roots (some 900
+ * instructions, more than the processor's reorder window holds), so looked
+ * up ray after ray, the rays do not overlap; the first stages of
+ * neighbouring rays, run back to back, do.
  */
 template<typename Lookup>
 void RenderPlainViews(const FrameCage& cage,
@@ -1836,8 +1843,8 @@ void RenderPlainViews(const FrameCage& cage,
     for (int i = 0; i < count; ++i)
     {
       d[i] = cage.Direction(xs[i], y);
-      aimed[i] = lookup.Aim(cage.Eye, d[i], aims[i]);
     }
+    lookup.AimBatch(cage.Eye, d, count, aims, aimed);
     RaySamples samples;
     for (int i = 0; i < count; ++i)
     {

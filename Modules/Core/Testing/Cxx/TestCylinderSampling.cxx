@@ -330,6 +330,97 @@ int ProvenStretch(const lfd::LightFieldSampler& sampler,
   return 1;
 }
 
+// A camera at `position` looking down -Z (up +Y), of focal length `focal`
+// pixels and principal point `centre`.
+lfd::PinholeCamera LookDownZ(double focal, const glm::dvec2& centre, const glm::dvec3& position)
+{
+  const glm::dmat3 k(
+    glm::dvec3(focal, 0.0, 0.0), glm::dvec3(0.0, focal, 0.0), glm::dvec3(centre, 1.0));
+  return lfd::PinholeCamera::LookAt(
+    k, position, glm::dvec3(0.0, 0.0, -1.0), glm::dvec3(0.0, 1.0, 0.0));
+}
+
+// What AimBatch (LightFieldSampler::EntrySectors) did to the rays of a frame.
+struct BatchCounts
+{
+  int Bounded = 0;    ///< batches whose entry sectors are bounded
+  int AcrossZero = 0; ///< bounded batches whose sectors hold 31 and 0
+  int Early = 0;      ///< rays skipped before their entry, by the bound alone
+  int Outside = 0;    ///< rays entering the rig in a sector outside their bound
+  int Differing = 0;  ///< rays aimed differently than one by one, or than with SSE2
+};
+
+// Whether two rays were aimed alike (Aim()'s results `a` and `b`, found or
+// not): the same focal point, entry and weighted views.
+bool SameAim(const lfd::RayAim& a, bool foundA, const lfd::RayAim& b, bool foundB)
+{
+  bool same = foundA == foundB;
+  if (foundA && same)
+  {
+    same =
+      a.Focal == b.Focal && a.Azimuth == b.Azimuth && a.Height == b.Height && a.Count == b.Count;
+    for (int v = 0; v < a.Count && same; ++v)
+    {
+      same = a.Views[v].View == b.Views[v].View && a.Views[v].Weight == b.Views[v].Weight;
+    }
+  }
+  return same;
+}
+
+// Aims the rays of the `width` x `height` frame of `eye` (OpenCV pixels) in
+// batches of 16 along each row, as RenderPlainViews does (the last batch of
+// a row shorter), and compares them with Aim() ray by ray, without a bound,
+// and with the SSE2 version of the batch (AimStages; AimBatch may have taken
+// the AVX2 one). This file is compiled as vtkLightFieldRenderer.cxx is, so
+// that the batch's loops are vectorised here too (CMakeLists.txt).
+BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
+  const lfd::LabelHull& hull,
+  const lfd::PinholeCamera& eye,
+  int width,
+  int height)
+{
+  BatchCounts counts;
+  const glm::dvec3 o = eye.Center();
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x0 = 0; x0 < width; x0 += 16)
+    {
+      const int count = std::min(16, width - x0);
+      glm::dvec3 d[16];
+      lfd::RayAim aims[16];
+      bool aimed[16];
+      for (int i = 0; i < count; ++i)
+      {
+        d[i] = eye.PixelToDirection() * glm::dvec3(x0 + i, y, 1.0);
+      }
+      const std::uint32_t sectors = sampler.EntrySectors(o, d, count);
+      counts.Bounded += sectors != ~std::uint32_t(0) ? 1 : 0;
+      counts.AcrossZero +=
+        sectors != ~std::uint32_t(0) && (sectors & 0x80000001u) == 0x80000001u ? 1 : 0;
+      sampler.AimBatch(o, d, count, aims, aimed);
+      // The SSE2 version too where AimBatch took the AVX2 one.
+      lfd::RayAim baseline[16];
+      bool baselineAimed[16];
+      sampler.AimStages(o, d, count, baseline, baselineAimed);
+      for (int i = 0; i < count; ++i)
+      {
+        counts.Differing += SameAim(baseline[i], baselineAimed[i], aims[i], aimed[i]) ? 0 : 1;
+        lfd::RayAim alone;
+        const bool found = sampler.Aim(o, d[i], alone);
+        counts.Differing += SameAim(alone, found, aims[i], aimed[i]) ? 0 : 1;
+        const long cell = hull.Cell(aims[i].Focal, *sampler.Layout);
+        counts.Early += cell >= 0 && hull.Union[cell] && !(hull.Union[cell] & sectors) ? 1 : 0;
+        double s, azimuth, h;
+        counts.Outside += sampler.Entry(o, d[i], s, azimuth, h) &&
+            !(lfd::LabelHull::SectorsOnArc(azimuth, 0.0) & sectors)
+          ? 1
+          : 0;
+      }
+    }
+  }
+  return counts;
+}
+
 // The label hull with a proxy (LabelHull::MaySeePart, the surface box of
 // ScreenTiles): the views of LabelHullSkips with the depth maps of a sphere
 // of radius 0.6 at the origin. A ray the hull skips (focal point and
@@ -429,11 +520,58 @@ void ProxyLabelHullSkips(lfd::LightFieldSampler& sampler,
   Expect("proxy: rays of skipped tiles that cross the surface's bounds", crossing, 1458.0);
   Expect("proxy: rays looked up", lookedUp, 1557.0);
   Expect("proxy: rays of skipped tiles looked up or labelled", leaks, 0.0);
+  // The batch with a proxy: its rays that cross the surface's bounds are
+  // aimed ray by ray (their stretches), the others skipped by their sectors.
+  sampler.Hull = &hull;
+  const BatchCounts batch = AimRows(sampler, hull, eye, 96, 80);
+  Expect("proxy: rays unmarked in their batch's sectors", batch.Early, 1268.0);
+  Expect("proxy: rays outside their bound", batch.Outside, 0.0);
+  Expect("proxy: rays aimed differently in a batch", batch.Differing, 0.0);
   sampler.Depth = {};
   sampler.DepthRange = nullptr;
   sampler.DepthTiles = nullptr;
   sampler.SurfaceLow = glm::dvec3(-std::numeric_limits<double>::infinity());
   sampler.SurfaceHigh = glm::dvec3(std::numeric_limits<double>::infinity());
+}
+
+// The sectors of arcs (LabelHull::SectorsOnArc), and AimBatch over the rows
+// of a frame seen from outside the rig and of one seen from inside it,
+// whose rays enter the rig behind the eye, across azimuth 0: the bound
+// holds every ray's sector, and the batch aims every ray as Aim() alone.
+void EntrySectorsBound(const lfd::LightFieldSampler& sampler,
+  const lfd::LabelHull& hull,
+  const lfd::PinholeCamera& outside)
+{
+  constexpr double sector = lfd::TwoPi / lfd::LabelHull::Sectors;
+  using lfd::LabelHull;
+  lfdtest::CheckEqual(LabelHull::SectorsOnArc(2.5 * sector, 0.0), 4u, "sectors of a point");
+  lfdtest::CheckEqual(
+    LabelHull::SectorsOnArc(2.5 * sector, 2.0 * sector), 28u, "sectors of an arc (2 to 4)");
+  lfdtest::CheckEqual(LabelHull::SectorsOnArc(-0.5 * sector, 2.0 * sector),
+    0x80000003u,
+    "sectors of an arc across 0 (31, 0 and 1)");
+  lfdtest::CheckEqual(LabelHull::SectorsOnArc(lfd::TwoPi - 0.5 * sector, sector),
+    0x80000001u,
+    "sectors of an arc from below 2 pi across 0");
+  lfdtest::CheckEqual(LabelHull::SectorsOnArc(0.5 * sector, lfd::TwoPi - 0.25 * sector),
+    ~0u,
+    "sectors of an arc back into its first sector");
+  lfdtest::CheckEqual(LabelHull::SectorsOnArc(0.0, lfd::TwoPi), ~0u, "sectors of the whole circle");
+
+  const BatchCounts out = AimRows(sampler, hull, outside, 100, 80);
+  Expect("outside: batches bounded (of 560)", out.Bounded, 560.0);
+  Expect("outside: rays skipped before their entry by the bound", out.Early, 1364.0);
+  Expect("outside: rays outside their bound", out.Outside, 0.0);
+  Expect("outside: rays aimed differently", out.Differing, 0.0);
+
+  const lfd::PinholeCamera inside =
+    LookDownZ(120.0, glm::dvec2(49.5, 39.5), glm::dvec3(0.2, 0.3, 2.5));
+  const BatchCounts in = AimRows(sampler, hull, inside, 100, 80);
+  Expect("inside: batches bounded (of 560)", in.Bounded, 560.0);
+  Expect("inside: ... across azimuth 0 (one per row)", in.AcrossZero, 80.0);
+  Expect("inside: rays skipped before their entry by the bound", in.Early, 1770.0);
+  Expect("inside: rays outside their bound", in.Outside, 0.0);
+  Expect("inside: rays aimed differently", in.Differing, 0.0);
 }
 
 // The label hull (LabelHull): two rings of 24 views of 32 x 32 whose label
@@ -509,10 +647,8 @@ void LabelHullSkips()
   // The screen-tile mask of a 96 x 80 frame (tiles of 8) looking at the top
   // of the grid, above the labelled heights, and past it: every ray of a tile marked 0
   // is one that Gather skips (focal point in a voxel unmarked everywhere).
-  const glm::dmat3 k(
-    glm::dvec3(300.0, 0.0, 0.0), glm::dvec3(0.0, 300.0, 0.0), glm::dvec3(47.5, 39.5, 1.0));
-  const lfd::PinholeCamera eye = lfd::PinholeCamera::LookAt(
-    k, glm::dvec3(0.5, 1.4, 6.0), glm::dvec3(0.0, 0.0, -1.0), glm::dvec3(0.0, 1.0, 0.0));
+  const lfd::PinholeCamera eye =
+    LookDownZ(300.0, glm::dvec2(47.5, 39.5), glm::dvec3(0.5, 1.4, 6.0));
   const int tile = 8, width = 96, height = 80;
   const std::vector<std::uint8_t> tiles = hull.ScreenTiles(
     layout, eye.Center(), eye.PixelToDirection(), width, height, sampler.FocalDistance, tile);
@@ -537,6 +673,7 @@ void LabelHullSkips()
   Expect("tiles skipped whole (3392 of the 4387 rays the union skips)", skippedTiles, 53.0);
   Expect("rays the union does not skip", lookedUp, 3293.0);
   Expect("rays of skipped tiles that Gather would look up", leaks, 0.0);
+  EntrySectorsBound(sampler, hull, eye);
   ProxyLabelHullSkips(sampler, hull, eye, uniform);
   sampler.Hull = nullptr;
 }
