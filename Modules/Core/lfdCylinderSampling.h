@@ -135,36 +135,64 @@ inline int RoundHalfAway(double v)
 /**
  * The bilinear footprint of the continuous position `uv` (pixel centres at
  * integers) in a width x height image: its top-left pixel (x0, y0), which
- * may lie outside the image by one, the fraction uv - (x0, y0) and the
- * weights of the pixels (x0, y0), (x0 + 1, y0), (x0, y0 + 1), (x0 + 1,
- * y0 + 1). False when no pixel of the footprint is inside the image.
+ * may lie outside the image by one, and the fraction uv - (x0, y0). False
+ * when no pixel of the footprint is inside the image.
  */
 inline bool BilinearFootprint(const glm::dvec2& uv,
   int width,
   int height,
   int& x0,
   int& y0,
-  glm::dvec2& fraction,
-  double weights[4])
+  glm::dvec2& fraction)
 {
   // floor(u) >= -1 and floor(u) < width hold exactly when u does (width is
   // an integer); inside that range the floor is the truncation, one lower
   // for a negative fraction: without SSE4.1 (the baseline x86-64 build)
   // std::floor is a software sequence that cost a tenth of a lookup.
+#if defined(__SSE2__)
+  // Both coordinates at once, lane by lane the scalar path's operations.
+  const __m128d p = _mm_set_pd(uv.y, uv.x);
+  const __m128d inside = _mm_and_pd(_mm_cmpge_pd(p, _mm_set1_pd(-1.0)),
+    _mm_cmplt_pd(p, _mm_cvtepi32_pd(_mm_set_epi32(0, 0, height, width))));
+  if (_mm_movemask_pd(inside) != 3)
+  {
+    return false;
+  }
+  const __m128i truncated = _mm_cvttpd_epi32(p);
+  // The comparison's all-ones 64-bit lanes, as 32-bit -1s, lower the
+  // truncation of a negative fraction.
+  const __m128i lower = _mm_shuffle_epi32(
+    _mm_castpd_si128(_mm_cmplt_pd(p, _mm_cvtepi32_pd(truncated))), _MM_SHUFFLE(3, 3, 2, 0));
+  const __m128i floor = _mm_add_epi32(truncated, lower);
+  x0 = _mm_cvtsi128_si32(floor);
+  y0 = _mm_cvtsi128_si32(_mm_srli_si128(floor, 4));
+  const __m128d f = _mm_sub_pd(p, _mm_cvtepi32_pd(floor));
+  fraction = glm::dvec2(_mm_cvtsd_f64(f), _mm_cvtsd_f64(_mm_unpackhi_pd(f, f)));
+#else
   if (!(uv.x >= -1.0 && uv.y >= -1.0 && uv.x < width && uv.y < height))
   {
     return false;
   }
   x0 = static_cast<int>(uv.x) - (uv.x < static_cast<int>(uv.x) ? 1 : 0);
   y0 = static_cast<int>(uv.y) - (uv.y < static_cast<int>(uv.y) ? 1 : 0);
-  const double ax = uv.x - x0;
-  const double ay = uv.y - y0;
-  fraction = glm::dvec2(ax, ay);
+  fraction = glm::dvec2(uv.x - x0, uv.y - y0);
+#endif
+  return true;
+}
+
+/**
+ * The bilinear weights of the pixels (x0, y0), (x0 + 1, y0), (x0, y0 + 1)
+ * and (x0 + 1, y0 + 1) of a footprint (BilinearFootprint()) whose fraction
+ * is (ax, ay).
+ */
+inline void BilinearWeights(const glm::dvec2& fraction, double weights[4])
+{
+  const double ax = fraction.x;
+  const double ay = fraction.y;
   weights[0] = (1.0 - ax) * (1.0 - ay);
   weights[1] = ax * (1.0 - ay);
   weights[2] = (1.0 - ax) * ay;
   weights[3] = ax * ay;
-  return true;
 }
 
 #if defined(__SSE2__)
@@ -244,11 +272,12 @@ inline void ForEachBilinearPixel(const glm::dvec2& uv, int width, int height, Ad
 {
   int x0, y0;
   glm::dvec2 fraction;
-  double weights[4];
-  if (!BilinearFootprint(uv, width, height, x0, y0, fraction, weights))
+  if (!BilinearFootprint(uv, width, height, x0, y0, fraction))
   {
     return;
   }
+  double weights[4];
+  BilinearWeights(fraction, weights);
   for (int corner = 0; corner < 4; ++corner)
   {
     const int px = x0 + (corner & 1);
@@ -1498,8 +1527,7 @@ struct LightFieldSampler
     const int height = this->Radiance.Height;
     int x0, y0;
     glm::dvec2 a;
-    double weights[4];
-    if (!BilinearFootprint(uv, width, height, x0, y0, a, weights))
+    if (!BilinearFootprint(uv, width, height, x0, y0, a))
     {
       return;
     }
@@ -1517,6 +1545,8 @@ struct LightFieldSampler
         sample.Label = labels[0];
         return;
       }
+      double weights[4];
+      BilinearWeights(a, weights);
       for (int corner = 0; corner < 4; ++corner)
       {
         if (weights[corner] > 0.0)
