@@ -229,9 +229,9 @@ inline void LoadTexelPair(const std::uint8_t* p,
  * texels (x0, y0) and (x0 + 1, y0) at top[0..2] and top[3..5], (x0, y0 + 1)
  * and (x0 + 1, y0 + 1) at bottom[0..2] and bottom[3..5]. With SSE2 (the
  * x86-64 baseline) the channels are converted and blended two at a time;
- * each lane does the scalar path's operations in its order (no
- * contraction into fused multiply-adds under -std=c++17), so both give the
- * same bits.
+ * each lane does the scalar path's operations in its order, so both give
+ * the same bits where neither is contracted into fused multiply-adds (the
+ * baseline has none; GCC contracts C++ by default where they exist).
  */
 inline void BlendTexels(const std::uint8_t* top,
   const std::uint8_t* bottom,
