@@ -40,6 +40,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -49,6 +50,10 @@
 #define LFD_AIM_AVX2 1
 #else
 #define LFD_AIM_AVX2 0
+#endif
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
 #endif
 
 namespace lfd
@@ -133,36 +138,130 @@ inline int RoundHalfAway(double v)
 /**
  * The bilinear footprint of the continuous position `uv` (pixel centres at
  * integers) in a width x height image: its top-left pixel (x0, y0), which
- * may lie outside the image by one, the fraction uv - (x0, y0) and the
- * weights of the pixels (x0, y0), (x0 + 1, y0), (x0, y0 + 1), (x0 + 1,
- * y0 + 1). False when no pixel of the footprint is inside the image.
+ * may lie outside the image by one, and the fraction uv - (x0, y0). False
+ * when no pixel of the footprint is inside the image.
  */
 inline bool BilinearFootprint(const glm::dvec2& uv,
   int width,
   int height,
   int& x0,
   int& y0,
-  glm::dvec2& fraction,
-  double weights[4])
+  glm::dvec2& fraction)
 {
   // floor(u) >= -1 and floor(u) < width hold exactly when u does (width is
   // an integer); inside that range the floor is the truncation, one lower
   // for a negative fraction: without SSE4.1 (the baseline x86-64 build)
   // std::floor is a software sequence that cost a tenth of a lookup.
+#if defined(__SSE2__)
+  // Both coordinates at once, lane by lane the scalar path's operations.
+  const __m128d p = _mm_set_pd(uv.y, uv.x);
+  const __m128d inside = _mm_and_pd(_mm_cmpge_pd(p, _mm_set1_pd(-1.0)),
+    _mm_cmplt_pd(p, _mm_cvtepi32_pd(_mm_set_epi32(0, 0, height, width))));
+  if (_mm_movemask_pd(inside) != 3)
+  {
+    return false;
+  }
+  const __m128i truncated = _mm_cvttpd_epi32(p);
+  // The comparison's all-ones 64-bit lanes, as 32-bit -1s, lower the
+  // truncation of a negative fraction.
+  const __m128i lower = _mm_shuffle_epi32(
+    _mm_castpd_si128(_mm_cmplt_pd(p, _mm_cvtepi32_pd(truncated))), _MM_SHUFFLE(3, 3, 2, 0));
+  const __m128i floor = _mm_add_epi32(truncated, lower);
+  x0 = _mm_cvtsi128_si32(floor);
+  y0 = _mm_cvtsi128_si32(_mm_srli_si128(floor, 4));
+  const __m128d f = _mm_sub_pd(p, _mm_cvtepi32_pd(floor));
+  fraction = glm::dvec2(_mm_cvtsd_f64(f), _mm_cvtsd_f64(_mm_unpackhi_pd(f, f)));
+#else
   if (!(uv.x >= -1.0 && uv.y >= -1.0 && uv.x < width && uv.y < height))
   {
     return false;
   }
   x0 = static_cast<int>(uv.x) - (uv.x < static_cast<int>(uv.x) ? 1 : 0);
   y0 = static_cast<int>(uv.y) - (uv.y < static_cast<int>(uv.y) ? 1 : 0);
-  const double ax = uv.x - x0;
-  const double ay = uv.y - y0;
-  fraction = glm::dvec2(ax, ay);
+  fraction = glm::dvec2(uv.x - x0, uv.y - y0);
+#endif
+  return true;
+}
+
+/**
+ * The bilinear weights of the pixels (x0, y0), (x0 + 1, y0), (x0, y0 + 1)
+ * and (x0 + 1, y0 + 1) of a footprint (BilinearFootprint()) whose fraction
+ * is (ax, ay).
+ */
+inline void BilinearWeights(const glm::dvec2& fraction, double weights[4])
+{
+  const double ax = fraction.x;
+  const double ay = fraction.y;
   weights[0] = (1.0 - ax) * (1.0 - ay);
   weights[1] = ax * (1.0 - ay);
   weights[2] = (1.0 - ax) * ay;
   weights[3] = ax * ay;
-  return true;
+}
+
+#if defined(__SSE2__)
+namespace detail
+{
+/// The two RGB texels at p[0..2] and p[3..5] as doubles, two lanes per
+/// register: (R, G) and (B, unused) of each. Reads those 6 bytes only.
+inline void LoadTexelPair(const std::uint8_t* p,
+  __m128d& rg0,
+  __m128d& b0,
+  __m128d& rg1,
+  __m128d& b1)
+{
+  std::uint32_t head;
+  std::uint16_t tail;
+  std::memcpy(&head, p, sizeof(head));
+  std::memcpy(&tail, p + sizeof(head), sizeof(tail));
+  const __m128i zero = _mm_setzero_si128();
+  // Bytes to 16 bits (R0 G0 B0 R1 G1 B1 0 0), then each texel to 32 bits.
+  const __m128i words = _mm_unpacklo_epi8(_mm_insert_epi16(_mm_cvtsi32_si128(head), tail, 2), zero);
+  const __m128i texel0 = _mm_unpacklo_epi16(words, zero);
+  const __m128i texel1 = _mm_unpacklo_epi16(_mm_srli_si128(words, 6), zero);
+  rg0 = _mm_cvtepi32_pd(texel0);
+  b0 = _mm_cvtepi32_pd(_mm_unpackhi_epi64(texel0, texel0));
+  rg1 = _mm_cvtepi32_pd(texel1);
+  b1 = _mm_cvtepi32_pd(_mm_unpackhi_epi64(texel1, texel1));
+}
+} // namespace detail
+#endif
+
+/**
+ * The bilinear blend of a footprint's 4 RGB texels at the fraction (ax, ay)
+ * (BilinearFootprint()), in lerp form, which keeps a flat colour exact: the
+ * texels (x0, y0) and (x0 + 1, y0) at top[0..2] and top[3..5], (x0, y0 + 1)
+ * and (x0 + 1, y0 + 1) at bottom[0..2] and bottom[3..5]. With SSE2 (the
+ * x86-64 baseline) the channels are converted and blended two at a time;
+ * each lane does the scalar path's operations in its order, so both give
+ * the same bits where neither is contracted into fused multiply-adds (the
+ * baseline has none; GCC contracts C++ by default where they exist).
+ */
+inline void BlendTexels(const std::uint8_t* top,
+  const std::uint8_t* bottom,
+  double ax,
+  double ay,
+  double color[3])
+{
+#if defined(__SSE2__)
+  __m128d rg0, b0, rg1, b1, rg2, b2, rg3, b3;
+  detail::LoadTexelPair(top, rg0, b0, rg1, b1);
+  detail::LoadTexelPair(bottom, rg2, b2, rg3, b3);
+  const __m128d x = _mm_set1_pd(ax);
+  const __m128d y = _mm_set1_pd(ay);
+  const __m128d rgTop = _mm_add_pd(rg0, _mm_mul_pd(x, _mm_sub_pd(rg1, rg0)));
+  const __m128d bTop = _mm_add_pd(b0, _mm_mul_pd(x, _mm_sub_pd(b1, b0)));
+  const __m128d rgBottom = _mm_add_pd(rg2, _mm_mul_pd(x, _mm_sub_pd(rg3, rg2)));
+  const __m128d bBottom = _mm_add_pd(b2, _mm_mul_pd(x, _mm_sub_pd(b3, b2)));
+  _mm_storeu_pd(color, _mm_add_pd(rgTop, _mm_mul_pd(y, _mm_sub_pd(rgBottom, rgTop))));
+  _mm_store_sd(color + 2, _mm_add_pd(bTop, _mm_mul_pd(y, _mm_sub_pd(bBottom, bTop))));
+#else
+  for (int c = 0; c < 3; ++c)
+  {
+    const double upper = top[c] + ax * (top[3 + c] - top[c]);
+    const double lower = bottom[c] + ax * (bottom[3 + c] - bottom[c]);
+    color[c] = upper + ay * (lower - upper);
+  }
+#endif
 }
 
 /**
@@ -176,11 +275,12 @@ inline void ForEachBilinearPixel(const glm::dvec2& uv, int width, int height, Ad
 {
   int x0, y0;
   glm::dvec2 fraction;
-  double weights[4];
-  if (!BilinearFootprint(uv, width, height, x0, y0, fraction, weights))
+  if (!BilinearFootprint(uv, width, height, x0, y0, fraction))
   {
     return;
   }
+  double weights[4];
+  BilinearWeights(fraction, weights);
   for (int corner = 0; corner < 4; ++corner)
   {
     const int px = x0 + (corner & 1);
@@ -1684,32 +1784,34 @@ struct LightFieldSampler
     const int height = this->Radiance.Height;
     int x0, y0;
     glm::dvec2 a;
-    double weights[4];
-    if (!BilinearFootprint(uv, width, height, x0, y0, a, weights))
+    if (!BilinearFootprint(uv, width, height, x0, y0, a))
     {
       return;
     }
     if (x0 >= 0 && y0 >= 0 && x0 + 1 < width && y0 + 1 < height)
     {
-      glm::dvec3 colors[4];
+      std::uint8_t copies[2][6];
+      const std::uint8_t* rows[2];
       int labels[4];
-      this->Footprint(view, x0, y0, colors, labels);
+      this->Footprint(view, x0, y0, copies, rows, labels);
       if (labels[0] == labels[1] && labels[0] == labels[2] && labels[0] == labels[3])
       {
-        // In lerp form, which keeps a flat colour exact.
-        const glm::dvec3 top = colors[0] + a.x * (colors[1] - colors[0]);
-        const glm::dvec3 bottom = colors[2] + a.x * (colors[3] - colors[2]);
         RaySample& sample = out.Samples[out.Count++];
-        sample.Color = top + a.y * (bottom - top);
+        BlendTexels(rows[0], rows[1], a.x, a.y, &sample.Color.x);
         sample.Weight = weight;
         sample.Label = labels[0];
         return;
       }
+      double weights[4];
+      BilinearWeights(a, weights);
       for (int corner = 0; corner < 4; ++corner)
       {
         if (weights[corner] > 0.0)
         {
-          out.Samples[out.Count++] = { colors[corner], weight * weights[corner], labels[corner] };
+          const std::uint8_t* rgb = rows[corner >> 1] + 3 * (corner & 1);
+          out.Samples[out.Count++] = {
+            glm::dvec3(rgb[0], rgb[1], rgb[2]), weight * weights[corner], labels[corner]
+          };
         }
       }
       return;
@@ -1728,11 +1830,19 @@ struct LightFieldSampler
   }
 
   /**
-   * The colours and labels (0 without a Label pass) of the texels (x0, y0),
-   * (x0 + 1, y0), (x0, y0 + 1) and (x0 + 1, y0 + 1) of `view`, all inside
-   * it: in memory or out of core, the same values.
+   * The texels (x0, y0), (x0 + 1, y0), (x0, y0 + 1) and (x0 + 1, y0 + 1) of
+   * `view`, all inside it, as BlendTexels() reads them: rows[0] points at
+   * the RGB of the first two, rows[1] at those of the last two, 6 bytes
+   * each; their labels (0 without a Label pass) in `labels`. In memory the
+   * rows point into the pass (a row's two texels are neighbours there); out
+   * of core the texels are copied into `copies`: the same values either way.
    */
-  void Footprint(int view, int x0, int y0, glm::dvec3 colors[4], int labels[4]) const
+  void Footprint(int view,
+    int x0,
+    int y0,
+    std::uint8_t copies[2][6],
+    const std::uint8_t* rows[2],
+    int labels[4]) const
   {
     if (this->Radiance.Data && (this->Labels.Data || !this->Labels.Present()))
     {
@@ -1741,23 +1851,24 @@ struct LightFieldSampler
       // Source per texel.
       const std::size_t first = this->Radiance.Index(view, x0, y0);
       const std::size_t below = first - this->Radiance.Width;
-      const std::size_t indices[4] = { first, first + 1, below, below + 1 };
-      for (int corner = 0; corner < 4; ++corner)
-      {
-        const std::uint8_t* rgb = this->Radiance.Data + 3 * indices[corner];
-        colors[corner] = glm::dvec3(rgb[0], rgb[1], rgb[2]);
-        labels[corner] = this->Labels.Data ? this->Labels.Data[indices[corner]] : 0;
-      }
+      rows[0] = this->Radiance.Data + 3 * first;
+      rows[1] = this->Radiance.Data + 3 * below;
+      const std::uint8_t* label = this->Labels.Data;
+      labels[0] = label ? label[first] : 0;
+      labels[1] = label ? label[first + 1] : 0;
+      labels[2] = label ? label[below] : 0;
+      labels[3] = label ? label[below + 1] : 0;
       return;
     }
     for (int corner = 0; corner < 4; ++corner)
     {
       const int px = x0 + (corner & 1);
       const int py = y0 + (corner >> 1);
-      const std::uint8_t* rgb = this->Radiance.Pixel(view, px, py);
-      colors[corner] = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+      std::memcpy(copies[corner >> 1] + 3 * (corner & 1), this->Radiance.Pixel(view, px, py), 3);
       labels[corner] = this->Labels.Present() ? *this->Labels.Pixel(view, px, py) : 0;
     }
+    rows[0] = copies[0];
+    rows[1] = copies[1];
   }
 
   /**

@@ -26,6 +26,10 @@
 #include <cmath>
 #include <string>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace lfd
 {
 
@@ -190,27 +194,32 @@ struct PinholeCamera
  */
 struct ProjectionMatrix
 {
-  double Rows[3][4];
+  /// P's first two rows column by column, (P(0, k), P(1, k)) at Pixel[k]:
+  /// the pixel's two numerators are computed as one pair (two lanes of SSE2,
+  /// each lane the scalar sum in its order).
+  alignas(16) double Pixel[4][2];
+  /// P's last row: the camera z of a point.
+  double Depth[4];
 
   explicit ProjectionMatrix(const PinholeCamera& camera)
   {
-    for (int row = 0; row < 3; ++row)
+    for (int row = 0; row < 2; ++row)
     {
       for (int col = 0; col < 3; ++col)
       {
         // (K R)[row][col]; GLM is column-major: K[k][row] is K's (row, k).
-        this->Rows[row][col] = camera.K[0][row] * camera.R[col][0] +
+        this->Pixel[col][row] = camera.K[0][row] * camera.R[col][0] +
           camera.K[1][row] * camera.R[col][1] + camera.K[2][row] * camera.R[col][2];
       }
-      this->Rows[row][3] = camera.K[0][row] * camera.t[0] + camera.K[1][row] * camera.t[1] +
+      this->Pixel[3][row] = camera.K[0][row] * camera.t[0] + camera.K[1][row] * camera.t[1] +
         camera.K[2][row] * camera.t[2];
     }
     // Exactly R's last row and t.z (K's last row is (0, 0, 1)).
     for (int col = 0; col < 3; ++col)
     {
-      this->Rows[2][col] = camera.R[col][2];
+      this->Depth[col] = camera.R[col][2];
     }
-    this->Rows[2][3] = camera.t.z;
+    this->Depth[3] = camera.t.z;
   }
 
   /// PinholeCamera::Project without lens distortion: false (pixel untouched)
@@ -226,18 +235,28 @@ struct ProjectionMatrix
   /// order), set even when the point is not in front of the camera.
   bool Project(const glm::dvec3& X, glm::dvec2& pixel, double& z) const
   {
-    z = this->Rows[2][0] * X.x + this->Rows[2][1] * X.y + this->Rows[2][2] * X.z + this->Rows[2][3];
+    z = this->Depth[0] * X.x + this->Depth[1] * X.y + this->Depth[2] * X.z + this->Depth[3];
     if (!(z > 0.0))
     {
       return false;
     }
     const double inverse = 1.0 / z;
-    pixel = glm::dvec2((this->Rows[0][0] * X.x + this->Rows[0][1] * X.y + this->Rows[0][2] * X.z +
-                         this->Rows[0][3]) *
-        inverse,
-      (this->Rows[1][0] * X.x + this->Rows[1][1] * X.y + this->Rows[1][2] * X.z +
-        this->Rows[1][3]) *
-        inverse);
+#if defined(__SSE2__)
+    const __m128d sum =
+      _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_load_pd(this->Pixel[0]), _mm_set1_pd(X.x)),
+                              _mm_mul_pd(_mm_load_pd(this->Pixel[1]), _mm_set1_pd(X.y))),
+                   _mm_mul_pd(_mm_load_pd(this->Pixel[2]), _mm_set1_pd(X.z))),
+        _mm_load_pd(this->Pixel[3]));
+    const __m128d scaled = _mm_mul_pd(sum, _mm_set1_pd(inverse));
+    pixel = glm::dvec2(_mm_cvtsd_f64(scaled), _mm_cvtsd_f64(_mm_unpackhi_pd(scaled, scaled)));
+#else
+    for (int row = 0; row < 2; ++row)
+    {
+      pixel[row] = (this->Pixel[0][row] * X.x + this->Pixel[1][row] * X.y +
+                     this->Pixel[2][row] * X.z + this->Pixel[3][row]) *
+        inverse;
+    }
+#endif
     return true;
   }
 };

@@ -22,6 +22,72 @@ using lfdtest::Expect;
 
 namespace
 {
+// The texel stage's SSE2 kernels against their scalar definitions, to the
+// bit: lfd::BlendTexels against the lerp form on random texels and
+// fractions, lfd::BilinearFootprint against std::floor at the edges of its
+// range (-1, negative fractions, the last column, NaN) and at random points.
+void TexelKernelsMatchScalar()
+{
+  std::uint32_t seed = 2005;
+  const auto next = [&seed]()
+  {
+    seed = seed * 1664525u + 1013904223u;
+    return seed >> 8;
+  };
+  int blendDiffers = 0;
+  for (int i = 0; i < 20000; ++i)
+  {
+    std::uint8_t top[6], bottom[6];
+    for (int k = 0; k < 6; ++k)
+    {
+      top[k] = static_cast<std::uint8_t>(next());
+      bottom[k] = static_cast<std::uint8_t>(next());
+    }
+    const double ax = next() / double(1u << 24);
+    const double ay = i % 16 == 0 ? 0.0 : next() / double(1u << 24);
+    double color[3];
+    lfd::BlendTexels(top, bottom, ax, ay, color);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double upper = top[c] + ax * (double(top[3 + c]) - double(top[c]));
+      const double lower = bottom[c] + ax * (double(bottom[3 + c]) - double(bottom[c]));
+      blendDiffers += color[c] != upper + ay * (lower - upper);
+    }
+  }
+  Expect("BlendTexels channels differing from the scalar lerp (of 60000)", blendDiffers, 0.0, 0.0);
+
+  const int width = 7, height = 5;
+  std::vector<glm::dvec2> points = { { -1.0, -1.0 },
+    { -0.5, 0.25 },
+    { -1e-17, 3.0 },
+    { 0.0, 0.0 },
+    { width - 1e-9, height - 1e-9 },
+    { width, 0.0 },
+    { 0.0, height },
+    { -1.0 - 1e-12, 0.0 },
+    { std::nan(""), 0.0 },
+    { 0.0, std::nan("") } };
+  for (int i = 0; i < 2000; ++i)
+  {
+    const double u = -2.0 + (width + 3.0) * next() / double(1u << 24);
+    points.emplace_back(u, -2.0 + (height + 3.0) * next() / double(1u << 24));
+  }
+  int footprintDiffers = 0;
+  for (const glm::dvec2& uv : points)
+  {
+    int x0 = 0, y0 = 0;
+    glm::dvec2 fraction;
+    const bool inside = lfd::BilinearFootprint(uv, width, height, x0, y0, fraction);
+    const bool expected = uv.x >= -1.0 && uv.y >= -1.0 && uv.x < width && uv.y < height;
+    footprintDiffers += inside != expected ||
+      (expected &&
+        (x0 != std::floor(uv.x) || y0 != std::floor(uv.y) ||
+          fraction.x != uv.x - std::floor(uv.x) || fraction.y != uv.y - std::floor(uv.y)));
+  }
+  Expect(
+    "BilinearFootprint points differing from std::floor's footprint", footprintDiffers, 0.0, 0.0);
+}
+
 // The ray from far outside the ring at azimuth `phi` (radians, measured like
 // the rig: from +Z towards +X for a +Y axis) and height `h`, aimed at the axis.
 void RayAt(double phi, double h, glm::dvec3& o, glm::dvec3& d)
@@ -681,6 +747,7 @@ void LabelHullSkips()
 int TestCylinderSampling(int, char*[])
 {
   AzimuthMatchesAtan2();
+  TexelKernelsMatchScalar();
 
   // Entry intersection.
   lfd::Cylinder cylinder;
