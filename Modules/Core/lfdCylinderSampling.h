@@ -1568,9 +1568,8 @@ struct LightFieldSampler
     bool* aimed) const
   {
     const std::uint32_t sectors = this->EntrySectors(o, d, count);
-    if (this->Depth.Present() || count > MaximumBatch)
+    if (count > MaximumBatch)
     {
-      // The proxy's stretches are aimed ray by ray.
       for (int i = 0; i < count; ++i)
       {
         aimed[i] = this->Aim(o, d[i], aims[i], sectors);
@@ -1601,6 +1600,13 @@ struct LightFieldSampler
         qz[i] = q.z;
       }
     }
+    // With a proxy, each ray's stretch that its walk may focus on, ray by
+    // ray: a ray with one escapes the skips below as in Aim().
+    const bool proxy = this->Depth.Present();
+    for (int i = 0; i < count; ++i)
+    {
+      aims[i].Stretch = proxy && this->SurfaceStretch(o, d[i], aims[i].Enter, aims[i].Leave);
+    }
     // The rays the hull does not skip before their entry (as Aim()), their
     // directions gathered.
     double dx[MaximumBatch], dy[MaximumBatch], dz[MaximumBatch];
@@ -1611,9 +1617,8 @@ struct LightFieldSampler
       aimed[i] = false;
       cells[i] = hull ? LabelHull::CellAt(glm::dvec3(qx[i], qy[i], qz[i])) : -1;
       aims[i].Focal = glm::dvec3(x[i], y[i], z[i]);
-      aims[i].Stretch = false;
       if (!(cells[i] >= 0 && !this->Hull->Union.empty() &&
-            !(this->Hull->Union[cells[i]] & sectors)))
+            !(this->Hull->Union[cells[i]] & sectors) && !aims[i].Stretch))
       {
         dx[n] = d[i].x;
         dy[n] = d[i].y;
@@ -1632,7 +1637,11 @@ struct LightFieldSampler
     for (int k = 0; k < n; ++k)
     {
       const int i = kept[k];
-      if (azimuths[k] >= 0.0 && !(hull && !this->Hull->MayMeetPart(azimuths[k], cells[i])))
+      if (azimuths[k] >= 0.0 &&
+        !(hull && !this->Hull->MayMeetPart(azimuths[k], cells[i]) &&
+          !(aims[i].Stretch &&
+            this->Hull->MaySeePart(
+              azimuths[k], o + aims[i].Enter * d[i], o + aims[i].Leave * d[i], *this->Layout))))
       {
         aims[i].Azimuth = azimuths[k];
         aims[i].Height = heights[k];

@@ -417,14 +417,15 @@ struct BatchCounts
 };
 
 // Whether two rays were aimed alike (Aim()'s results `a` and `b`, found or
-// not): the same focal point, entry and weighted views.
+// not): the same focal point, proxy stretch, entry and weighted views.
 bool SameAim(const lfd::RayAim& a, bool foundA, const lfd::RayAim& b, bool foundB)
 {
   bool same = foundA == foundB;
   if (foundA && same)
   {
-    same =
-      a.Focal == b.Focal && a.Azimuth == b.Azimuth && a.Height == b.Height && a.Count == b.Count;
+    same = a.Focal == b.Focal && a.Stretch == b.Stretch &&
+      (!a.Stretch || (a.Enter == b.Enter && a.Leave == b.Leave)) && a.Azimuth == b.Azimuth &&
+      a.Height == b.Height && a.Count == b.Count;
     for (int v = 0; v < a.Count && same; ++v)
     {
       same = a.Views[v].View == b.Views[v].View && a.Views[v].Weight == b.Views[v].Weight;
@@ -587,7 +588,8 @@ void ProxyLabelHullSkips(lfd::LightFieldSampler& sampler,
   Expect("proxy: rays looked up", lookedUp, 1557.0);
   Expect("proxy: rays of skipped tiles looked up or labelled", leaks, 0.0);
   // The batch with a proxy: its rays that cross the surface's bounds are
-  // aimed ray by ray (their stretches), the others skipped by their sectors.
+  // aimed, stretches included, as by Aim() alone; the others are skipped by
+  // their sectors.
   sampler.Hull = &hull;
   const BatchCounts batch = AimRows(sampler, hull, eye, 96, 80);
   Expect("proxy: rays unmarked in their batch's sectors", batch.Early, 1268.0);
