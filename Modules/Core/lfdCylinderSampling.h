@@ -1489,7 +1489,7 @@ struct LightFieldSampler
   {
     aim.Focal = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
     const bool hull = this->Hull && !this->Hull->Marks.empty();
-    const long cell = hull ? this->Hull->Cell(aim.Focal, *this->Layout) : -1;
+    const int cell = hull ? this->Hull->Cell(aim.Focal, *this->Layout) : -1;
     // With a proxy, the stretch [enter, leave] of the ray that its walk may
     // focus on; the ray is skipped when neither it nor the focal point can
     // have a labelled sample (see Gather()).
@@ -1498,8 +1498,7 @@ struct LightFieldSampler
     // they may enter the rig in (`sectors`): they skip the cylinder entry
     // and the atan2 of the azimuth too (MayMeetPart() would be false for
     // them; a ray that misses the cylinder returns false as well).
-    if (cell >= 0 && !this->Hull->Union.empty() && !(this->Hull->Union[cell] & sectors) &&
-      !aim.Stretch)
+    if (this->SkippedBeforeEntry(cell, sectors, aim.Stretch))
     {
       return false;
     }
@@ -1508,9 +1507,7 @@ struct LightFieldSampler
     {
       return false;
     }
-    if (hull && !this->Hull->MayMeetPart(aim.Azimuth, cell) &&
-      !(aim.Stretch &&
-        this->Hull->MaySeePart(aim.Azimuth, o + aim.Enter * d, o + aim.Leave * d, *this->Layout)))
+    if (hull && this->SkippedAtEntry(o, d, aim.Azimuth, cell, aim))
     {
       return false;
     }
@@ -1617,8 +1614,7 @@ struct LightFieldSampler
       aimed[i] = false;
       cells[i] = hull ? LabelHull::CellAt(glm::dvec3(qx[i], qy[i], qz[i])) : -1;
       aims[i].Focal = glm::dvec3(x[i], y[i], z[i]);
-      if (!(cells[i] >= 0 && !this->Hull->Union.empty() &&
-            !(this->Hull->Union[cells[i]] & sectors) && !aims[i].Stretch))
+      if (!this->SkippedBeforeEntry(cells[i], sectors, aims[i].Stretch))
       {
         dx[n] = d[i].x;
         dy[n] = d[i].y;
@@ -1638,10 +1634,7 @@ struct LightFieldSampler
     {
       const int i = kept[k];
       if (azimuths[k] >= 0.0 &&
-        !(hull && !this->Hull->MayMeetPart(azimuths[k], cells[i]) &&
-          !(aims[i].Stretch &&
-            this->Hull->MaySeePart(
-              azimuths[k], o + aims[i].Enter * d[i], o + aims[i].Leave * d[i], *this->Layout))))
+        !(hull && this->SkippedAtEntry(o, d[i], azimuths[k], cells[i], aims[i])))
       {
         aims[i].Azimuth = azimuths[k];
         aims[i].Height = heights[k];
@@ -1649,6 +1642,35 @@ struct LightFieldSampler
         aimed[i] = true;
       }
     }
+  }
+
+  /**
+   * Aim()'s first skip: a ray whose focal point lies in hull voxel `cell`
+   * (-1: outside the grid, or no hull) unmarked in every sector of
+   * `sectors` (EntrySectors()) has no labelled sample, unless it has a
+   * proxy stretch (`stretch`) to walk.
+   */
+  bool SkippedBeforeEntry(int cell, std::uint32_t sectors, bool stretch) const
+  {
+    return cell >= 0 && !this->Hull->Union.empty() && !(this->Hull->Union[cell] & sectors) &&
+      !stretch;
+  }
+
+  /**
+   * Aim()'s second skip, once the ray o + s d is known to enter the rig at
+   * `azimuth` (needs a Hull with marks): its focal voxel `cell` is unmarked
+   * in the azimuth's sector and its stretch, if `aim` has one, can see no
+   * part.
+   */
+  bool SkippedAtEntry(const glm::dvec3& o,
+    const glm::dvec3& d,
+    double azimuth,
+    int cell,
+    const RayAim& aim) const
+  {
+    return !this->Hull->MayMeetPart(azimuth, cell) &&
+      !(aim.Stretch &&
+        this->Hull->MaySeePart(azimuth, o + aim.Enter * d, o + aim.Leave * d, *this->Layout));
   }
 
   /**
