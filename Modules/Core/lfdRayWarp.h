@@ -97,6 +97,11 @@ inline double DifferenceOfProducts(double a, double b, double c, double d)
  * view rays all leave the eye, so the renderer computes these once per face
  * and frame instead of once per ray (every ray, single or of a frame, goes
  * through this struct, so the hits are bit for bit the same either way).
+ *
+ * A planar patch is also intersected as its plane: a cage posed by turning
+ * layers about an axis (swim, bend) has every face planar, and the ray's
+ * T there is one division, and t one projection, instead of the
+ * intersection of the ray with the line at s (IntersectPlanar).
  */
 struct PatchFromOrigin
 {
@@ -113,6 +118,33 @@ struct PatchFromOrigin
   glm::dvec3 A, B, C;
   /// (|q| + |e10|) (|e00| + |twist|): the vanishing scale of f(s) without |d|.
   double Scale;
+
+  /// The patch's shape, which picks the intersection (IntersectPlanar).
+  enum class Shape
+  {
+    Curved,       ///< a hyperbolic paraboloid: only IntersectAlongS
+    Planar,       ///< 4 coplanar corners (within PlanarTolerance)
+    Parallelogram ///< a twist of exactly zero, so A = 0 and f(s) is linear
+  };
+  Shape Form = Shape::Curved;
+  /// Of a planar patch: a normal of its plane (B for a parallelogram, where
+  /// B = e10 x e00; else the cross product of the diagonals), q.Normal, and
+  /// 1e-9 |Normal|: rays closer than 1e-9 radians to the plane are left to
+  /// IntersectAlongS, which handles a ray in (or along) the plane.
+  glm::dvec3 Normal{ 0.0 };
+  double QNormal = 0.0;
+  double GrazingLimit = 0.0;
+  /// Of a parallelogram: q x e10, so that t = (d.TForm) / (d.B) (Cramer's rule).
+  glm::dvec3 TForm{ 0.0 };
+  /// Of a planar patch: 1e-20 max(|e00|^2, |e11|^2), below which |e(s)|^2 is
+  /// a line at s collapsed to a point (as IntersectAlongS's parallel test).
+  double CollapsedLine = 0.0;
+
+  /// Largest |n.(p10 - p00)| / (|n| |p10 - p00|), n the diagonals' cross
+  /// product, of a patch intersected as a plane: corners off the plane by
+  /// about the rounding of their coordinates, as a rotation about an axis
+  /// leaves them.
+  static constexpr double PlanarTolerance = 1e-14;
 
   PatchFromOrigin() = default;
   PatchFromOrigin(const glm::dvec3& p00,
@@ -135,22 +167,37 @@ struct PatchFromOrigin
     , C(glm::cross(Q, E00))
     , Scale((glm::length(Q) + glm::length(E10)) * (glm::length(E00) + glm::length(Twist)))
   {
+    if (this->Twist == glm::dvec3(0.0))
+    {
+      this->Form = Shape::Parallelogram;
+      this->Normal = this->B;
+      this->TForm = glm::cross(this->Q, this->E10);
+    }
+    else
+    {
+      // The diagonals' cross product is normal to both diagonals, so p00
+      // and p11 lie in the plane through p00, and p10 and p01 at the same
+      // distance from it on either side: the patch is planar when that
+      // distance is zero.
+      const glm::dvec3 normal = glm::cross(p11 - p00, p01 - p10);
+      if (std::abs(glm::dot(normal, this->E10)) <=
+        PlanarTolerance * glm::length(normal) * glm::length(this->E10))
+      {
+        this->Form = Shape::Planar;
+        this->Normal = normal;
+        this->CollapsedLine =
+          1e-20 * std::max(glm::dot(this->E00, this->E00), glm::dot(this->E11, this->E11));
+      }
+    }
+    this->QNormal = glm::dot(this->Q, this->Normal);
+    this->GrazingLimit = 1e-9 * glm::length(this->Normal);
   }
 
   /**
-   * Hits of the ray o + T d (`speed` = |d|) with the patch, solving first
-   * for s. For a fixed s the patch is the segment pa(s) + t (pb(s) - pa(s)),
-   * and the ray meets that line only when the two are coplanar:
-   *
-   *   f(s) = (pa(s) - o) . ((pb(s) - pa(s)) x d) = (A.d) s^2 + (B.d) s + (C.d) = 0
-   *
-   * (Reshetov 2019, Ray Tracing Gems ch. 8). Each root gives t and T as the
-   * point where the two lines meet. Returns -1 when f vanishes identically
-   * (every fixed-s line is coplanar with the ray: the ray is parallel to all
-   * of them, or lies in the surface), so s is undetermined and the caller
-   * solves for t instead; else returns the number of hits.
+   * The roots s of f(s) (see IntersectAlongS) of magnitude at most about 2,
+   * into `roots`; -1 when f vanishes identically (s is undetermined).
    */
-  int IntersectAlongS(const glm::dvec3& d, double speed, PatchHit hits[2]) const
+  int RootsAlongS(const glm::dvec3& d, double speed, double roots[2]) const
   {
     const double a = glm::dot(this->A, d);
     const double b = glm::dot(this->B, d);
@@ -171,7 +218,6 @@ struct PatchFromOrigin
       return 0;
     }
     const double qq = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
-    double roots[2];
     int nRoots = 0;
     if (std::abs(qq) <= 2.0 * std::abs(a) && a != 0.0)
     {
@@ -185,7 +231,30 @@ struct PatchFromOrigin
         roots[nRoots++] = root;
       }
     }
+    return nRoots;
+  }
 
+  /**
+   * Hits of the ray o + T d (`speed` = |d|) with the patch, solving first
+   * for s. For a fixed s the patch is the segment pa(s) + t (pb(s) - pa(s)),
+   * and the ray meets that line only when the two are coplanar:
+   *
+   *   f(s) = (pa(s) - o) . ((pb(s) - pa(s)) x d) = (A.d) s^2 + (B.d) s + (C.d) = 0
+   *
+   * (Reshetov 2019, Ray Tracing Gems ch. 8). Each root gives t and T as the
+   * point where the two lines meet. Returns -1 when f vanishes identically
+   * (every fixed-s line is coplanar with the ray: the ray is parallel to all
+   * of them, or lies in the surface), so s is undetermined and the caller
+   * solves for t instead; else returns the number of hits.
+   */
+  int IntersectAlongS(const glm::dvec3& d, double speed, PatchHit hits[2]) const
+  {
+    double roots[2];
+    const int nRoots = this->RootsAlongS(d, speed, roots);
+    if (nRoots < 0)
+    {
+      return -1;
+    }
     int nHits = 0;
     for (int k = 0; k < nRoots; ++k)
     {
@@ -224,9 +293,82 @@ struct PatchFromOrigin
     return nHits;
   }
 
+  /**
+   * Hits of the ray o + T d (`speed` = |d|) with a planar patch, through its
+   * plane: T = (q.n) / (d.n) is where the ray crosses it. A parallelogram
+   * p00 + s e10 + t e00 is then linear in (T, s, t), and Cramer's rule gives
+   * s = -(C.d) / (B.d), the root of the linear f(s) to the bit, and
+   * t = (TForm.d) / (B.d). A general planar patch takes s from f(s) = 0,
+   * whose roots are the s-lines through the crossing (a line in the plane
+   * is never parallel to a ray that crosses it), and t as the crossing's
+   * projection on the line at s. Returns -1 for a curved patch, a ray
+   * within 1e-9 radians of the plane, or an f(s) that vanishes: the cases
+   * of IntersectAlongS.
+   */
+  int IntersectPlanar(const glm::dvec3& d, double speed, PatchHit hits[2]) const
+  {
+    const double dn = glm::dot(this->Normal, d);
+    if (this->Form == Shape::Curved || !(std::abs(dn) > this->GrazingLimit * speed))
+    {
+      return -1;
+    }
+    const double T = this->QNormal / dn;
+    if (this->Form == Shape::Parallelogram)
+    {
+      const double s = glm::dot(this->C, d) / -dn;
+      if (!(s >= -PatchParameterSlack && s <= 1.0 + PatchParameterSlack))
+      {
+        return 0;
+      }
+      const double t = glm::dot(this->TForm, d) / dn;
+      if (!(t >= -PatchParameterSlack && t <= 1.0 + PatchParameterSlack))
+      {
+        return 0;
+      }
+      hits[0] = { T, glm::dvec2(s, t) };
+      return 1;
+    }
+    double roots[2];
+    const int nRoots = this->RootsAlongS(d, speed, roots);
+    if (nRoots < 0)
+    {
+      return -1; // (every s-line through the crossing: a collapsed edge)
+    }
+    int nHits = 0;
+    for (int k = 0; k < nRoots; ++k)
+    {
+      const double s = roots[k];
+      if (!(s >= -PatchParameterSlack && s <= 1.0 + PatchParameterSlack))
+      {
+        continue;
+      }
+      // The crossing less pa(s): a multiple t of the line's direction e(s).
+      const glm::dvec3 e = this->E00 + s * this->Twist;
+      const double ee = glm::dot(e, e);
+      if (!(ee > this->CollapsedLine))
+      {
+        continue;
+      }
+      const double t = glm::dot(T * d - this->Q - s * this->E10, e) / ee;
+      if (!(t >= -PatchParameterSlack && t <= 1.0 + PatchParameterSlack))
+      {
+        continue;
+      }
+      hits[nHits].T = T;
+      hits[nHits].ST = glm::dvec2(s, t);
+      ++nHits;
+    }
+    return nHits;
+  }
+
   /// Every hit of the ray o + T d (`speed` = |d|), as IntersectBilinearPatch.
   int Intersect(const glm::dvec3& d, double speed, PatchHit hits[2]) const
   {
+    const int planar = this->IntersectPlanar(d, speed, hits);
+    if (planar >= 0)
+    {
+      return planar;
+    }
     const int n = this->IntersectAlongS(d, speed, hits);
     if (n >= 0)
     {
