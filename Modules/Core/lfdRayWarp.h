@@ -76,6 +76,21 @@ inline bool HasFma3()
 }
 #endif
 
+/// The index of the lowest set bit of `bits` (not 0).
+inline int LowestSetBit(int bits)
+{
+#if defined(__GNUC__)
+  return __builtin_ctz(static_cast<unsigned>(bits));
+#else
+  int index = 0;
+  for (; !(bits & 1); bits >>= 1)
+  {
+    ++index;
+  }
+  return index;
+#endif
+}
+
 /// a*b - c*d without the cancellation of the naive form (Kahan's fma trick).
 inline double DifferenceOfProducts(double a, double b, double c, double d)
 {
@@ -540,12 +555,9 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   };
   FaceHit found[12];
   int nFound = 0;
-  for (int face = 0; face < 6; ++face)
+  for (int remaining = faces & 0x3f; remaining != 0; remaining &= remaining - 1)
   {
-    if (!(faces & (1 << face)))
-    {
-      continue;
-    }
+    const int face = detail::LowestSetBit(remaining);
     PatchHit hits[2];
     const int nHits = box.Faces[face].Intersect(d, speed, hits);
     for (int k = 0; k < nHits; ++k)
@@ -556,7 +568,8 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
       }
     }
   }
-  auto uvwOf = [](const FaceHit& hit) { return glm::clamp(FaceToBox(hit.Face, hit.ST), 0.0, 1.0); };
+  // (The face's own coordinate is exactly 0 or 1: only s and t need clamping.)
+  auto uvwOf = [](const FaceHit& hit) { return FaceToBox(hit.Face, glm::clamp(hit.ST, 0.0, 1.0)); };
 
   if (startsOutside && nFound == 2 && maxSegments > 0)
   {
