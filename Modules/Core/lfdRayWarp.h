@@ -446,6 +446,21 @@ inline glm::dvec3 FaceToBox(int face, const glm::dvec2& st)
   }
 }
 
+namespace detail
+{
+/// The box point (clamped to the face) and rest image of the hit `st` on face
+/// `Face`, with the face known to the compiler (TrilinearMapOnFace inlined).
+template<int Face>
+void MapFaceHit(const Hexahedron& rest,
+  const glm::dvec2& st,
+  glm::dvec3& uvw,
+  glm::dvec3& restPoint)
+{
+  uvw = FaceToBox(Face, glm::clamp(st, 0.0, 1.0));
+  restPoint = TrilinearMapOnFace<Face>(rest, uvw);
+}
+} // namespace detail
+
 /// Rest image of a deformed-space point: the rest map at the deformed map's
 /// inverse. Returns false when the Newton inverse does not converge.
 inline bool WarpPoint(const Hexahedron& rest,
@@ -546,11 +561,13 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   const double mergeT = 1e-9 * size / speed;
   const double shortestT = 1e-7 * size / speed;
 
-  // The face hits from tMin on, in the order found.
+  // The face hits from tMin on, in the order found, with their box points
+  // (the face's own coordinate exactly 0 or 1, s and t clamped) and rest images.
   struct FaceHit
   {
     double T;
-    glm::dvec2 ST;
+    glm::dvec3 Uvw;
+    glm::dvec3 Rest;
     int Face;
   };
   FaceHit found[12];
@@ -564,12 +581,32 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
     {
       if (hits[k].T >= tMin - mergeT)
       {
-        found[nFound++] = { std::max(hits[k].T, tMin), hits[k].ST, face };
+        FaceHit& hit = found[nFound++];
+        hit.T = std::max(hits[k].T, tMin);
+        hit.Face = face;
+        switch (face)
+        {
+          case 0:
+            detail::MapFaceHit<0>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+            break;
+          case 1:
+            detail::MapFaceHit<1>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+            break;
+          case 2:
+            detail::MapFaceHit<2>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+            break;
+          case 3:
+            detail::MapFaceHit<3>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+            break;
+          case 4:
+            detail::MapFaceHit<4>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+            break;
+          default:
+            detail::MapFaceHit<5>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+        }
       }
     }
   }
-  // (The face's own coordinate is exactly 0 or 1: only s and t need clamping.)
-  auto uvwOf = [](const FaceHit& hit) { return FaceToBox(hit.Face, glm::clamp(hit.ST, 0.0, 1.0)); };
 
   if (startsOutside && nFound == 2 && maxSegments > 0)
   {
@@ -587,11 +624,11 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
       WarpedSegment& segment = out[0];
       segment.TEnter = enter.T;
       segment.TExit = exit.T;
-      segment.UvwEnter = uvwOf(enter);
-      segment.UvwExit = uvwOf(exit);
+      segment.UvwEnter = enter.Uvw;
+      segment.UvwExit = exit.Uvw;
       segment.FaceExit = exit.Face;
-      segment.RestEnter = TrilinearMapOnFace(rest, enter.Face, segment.UvwEnter);
-      segment.RestExit = TrilinearMapOnFace(rest, exit.Face, segment.UvwExit);
+      segment.RestEnter = enter.Rest;
+      segment.RestExit = exit.Rest;
       return 1;
     }
   }
@@ -600,8 +637,9 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   {
     double T;
     glm::dvec3 Uvw;
-    bool OnFace; // false for the point at tMin, whose uvw is not known yet
-    int Face;    // the face hit (-1 for the point at tMin)
+    glm::dvec3 Rest; // the rest image of a face hit
+    bool OnFace;     // false for the point at tMin, whose uvw is not known yet
+    int Face;        // the face hit (-1 for the point at tMin)
   };
   // Sorted by T, hits of equal T in the order found (the insertion sort that
   // std::sort is below 16 elements, without its calls: the 3-box swim 228.4
@@ -610,7 +648,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   int n = 0;
   for (int i = 0; i < nFound; ++i)
   {
-    const Crossing crossing{ found[i].T, uvwOf(found[i]), true, found[i].Face };
+    const Crossing crossing{ found[i].T, found[i].Uvw, found[i].Rest, true, found[i].Face };
     int at = n++;
     for (; at > 0 && crossing.T < crossings[at - 1].T; --at)
     {
@@ -625,7 +663,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   // (A point at tMin known to be outside starts no stretch that matters.)
   if (!startsOutside && std::isfinite(tMin) && (n == 0 || crossings[0].T > tMin + mergeT))
   {
-    merged[m++] = { tMin, glm::dvec3(0.5), false, -1 };
+    merged[m++] = { tMin, glm::dvec3(0.5), glm::dvec3(0.0), false, -1 };
   }
   for (int k = 0; k < n; ++k)
   {
@@ -696,9 +734,8 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
     segment.UvwExit = exit.Uvw;
     segment.FaceExit = exit.Face;
     // (Only the point at tMin is off the faces.)
-    segment.RestEnter = enter.OnFace ? TrilinearMapOnFace(rest, enter.Face, enter.Uvw)
-                                     : TrilinearMap(rest, enter.Uvw);
-    segment.RestExit = TrilinearMapOnFace(rest, exit.Face, exit.Uvw);
+    segment.RestEnter = enter.OnFace ? enter.Rest : TrilinearMap(rest, enter.Uvw);
+    segment.RestExit = exit.Rest;
   }
   return written;
 }
