@@ -115,7 +115,7 @@ inline double DifferenceOfProducts(double a, double b, double c, double d)
  *
  * A planar patch is also intersected as its plane: a cage posed by turning
  * layers about an axis (swim, bend) has every face planar, and the ray's
- * T there is one division, and t one projection, instead of the
+ * T and t there are a dot product and a division each, instead of the
  * intersection of the ray with the line at s (IntersectPlanar).
  */
 struct PatchFromOrigin
@@ -151,8 +151,14 @@ struct PatchFromOrigin
   double GrazingLimit = 0.0;
   /// Of a parallelogram: q x e10, so that t = (d.TForm) / (d.B) (Cramer's rule).
   glm::dvec3 TForm{ 0.0 };
-  /// Of a planar patch: 1e-20 max(|e00|^2, |e11|^2), below which |e(s)|^2 is
-  /// a line at s collapsed to a point (as IntersectAlongS's parallel test).
+  /// Of a planar patch: Across = Normal x e10, in the plane and normal to
+  /// the s-edges, so that a crossing x = pa(s) + t e(s) has
+  /// (x - p00).Across = t e(s).Across; with q, e00 and the twist along it.
+  glm::dvec3 Across{ 0.0 };
+  double QAcross = 0.0, E00Across = 0.0, TwistAcross = 0.0;
+  /// Of a planar patch: 1e-10 max(|e00|, |e11|) |Across|, below which
+  /// |e(s).Across| is a line at s collapsed to a point or along the s-edges,
+  /// where t is undetermined (as IntersectAlongS's parallel test).
   double CollapsedLine = 0.0;
 
   /// Largest |n.(p10 - p00)| / (|n| |p10 - p00|), n the diagonals' cross
@@ -200,8 +206,12 @@ struct PatchFromOrigin
       {
         this->Form = Shape::Planar;
         this->Normal = normal;
-        this->CollapsedLine =
-          1e-20 * std::max(glm::dot(this->E00, this->E00), glm::dot(this->E11, this->E11));
+        this->Across = glm::cross(normal, this->E10);
+        this->QAcross = glm::dot(this->Q, this->Across);
+        this->E00Across = glm::dot(this->E00, this->Across);
+        this->TwistAcross = glm::dot(this->Twist, this->Across);
+        this->CollapsedLine = 1e-10 * std::max(glm::length(this->E00), glm::length(this->E11)) *
+          glm::length(this->Across);
       }
     }
     this->QNormal = glm::dot(this->Q, this->Normal);
@@ -315,8 +325,8 @@ struct PatchFromOrigin
    * s = -(C.d) / (B.d), the root of the linear f(s) to the bit, and
    * t = (TForm.d) / (B.d). A general planar patch takes s from f(s) = 0,
    * whose roots are the s-lines through the crossing (a line in the plane
-   * is never parallel to a ray that crosses it), and t as the crossing's
-   * projection on the line at s. Returns -1 for a curved patch, a ray
+   * is never parallel to a ray that crosses it), and t from the crossing's
+   * component across the s-edges (Across). Returns -1 for a curved patch, a ray
    * within 1e-9 radians of the plane, or an f(s) that vanishes: the cases
    * of IntersectAlongS.
    */
@@ -349,6 +359,7 @@ struct PatchFromOrigin
     {
       return -1; // (every s-line through the crossing: a collapsed edge)
     }
+    const double dAcross = glm::dot(d, this->Across);
     int nHits = 0;
     for (int k = 0; k < nRoots; ++k)
     {
@@ -357,14 +368,13 @@ struct PatchFromOrigin
       {
         continue;
       }
-      // The crossing less pa(s): a multiple t of the line's direction e(s).
-      const glm::dvec3 e = this->E00 + s * this->Twist;
-      const double ee = glm::dot(e, e);
-      if (!(ee > this->CollapsedLine))
+      // The crossing less p00, T d - q, is s e10 + t e(s): along Across, t e(s).
+      const double across = this->E00Across + s * this->TwistAcross;
+      if (!(std::abs(across) > this->CollapsedLine))
       {
         continue;
       }
-      const double t = glm::dot(T * d - this->Q - s * this->E10, e) / ee;
+      const double t = (T * dAcross - this->QAcross) / across;
       if (!(t >= -PatchParameterSlack && t <= 1.0 + PatchParameterSlack))
       {
         continue;
