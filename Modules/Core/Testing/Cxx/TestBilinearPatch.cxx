@@ -40,9 +40,11 @@ double HitError(const glm::dvec3 p[4],
   return best;
 }
 
-// Worst HitError over `trials` rays through random points of the patch, in
-// random directions, each hit at a random T in [0.5, 3].
-double WorstOverRandomRays(const glm::dvec3 p[4], std::mt19937_64& rng, int trials)
+// Worst `error(o, d, s, t, T)` over `trials` rays through random points
+// (s, t) of the patch, in random directions d, each at a random T in [0.5, 3]
+// from its origin o.
+template<typename Error>
+double WorstOverRandomRays(const glm::dvec3 p[4], std::mt19937_64& rng, int trials, Error&& error)
 {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> gauss;
@@ -51,9 +53,19 @@ double WorstOverRandomRays(const glm::dvec3 p[4], std::mt19937_64& rng, int tria
   {
     const double s = unit(rng), t = unit(rng), T = 0.5 + 2.5 * unit(rng);
     const glm::dvec3 d = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
-    worst = std::max(worst, HitError(p, Patch(p, s, t) - T * d, d, s, t, T));
+    worst = std::max(worst, error(Patch(p, s, t) - T * d, d, s, t, T));
   }
   return worst;
+}
+
+// Worst HitError over `trials` random rays through the patch.
+double WorstOverRandomRays(const glm::dvec3 p[4], std::mt19937_64& rng, int trials)
+{
+  return WorstOverRandomRays(p,
+    rng,
+    trials,
+    [p](const glm::dvec3& o, const glm::dvec3& d, double s, double t, double T)
+    { return HitError(p, o, d, s, t, T); });
 }
 
 // Largest difference of (s, t, T) between the plane's solve and the general
@@ -64,29 +76,28 @@ double WorstPlanarAgainstGeneral(const glm::dvec3 p[4],
   std::mt19937_64& rng,
   int trials)
 {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::normal_distribution<double> gauss;
-  double worst = 0.0;
-  for (int i = 0; i < trials; ++i)
-  {
-    const double s = unit(rng), t = unit(rng), T = 0.5 + 2.5 * unit(rng);
-    const glm::dvec3 d = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
-    const lfd::PatchFromOrigin patch(p[0], p[1], p[2], p[3], Patch(p, s, t) - T * d);
-    lfd::PatchHit planar[2], general[2];
-    const int n = patch.IntersectPlanar(d, 1.0, planar);
-    if (patch.Form != form || n != patch.IntersectAlongS(d, 1.0, general))
+  return WorstOverRandomRays(p,
+    rng,
+    trials,
+    [p, form](const glm::dvec3& o, const glm::dvec3& d, double, double, double)
     {
-      return HUGE_VAL;
-    }
-    for (int k = 0; k < n; ++k)
-    {
-      worst = std::max({ worst,
-        std::abs(planar[k].ST.x - general[k].ST.x),
-        std::abs(planar[k].ST.y - general[k].ST.y),
-        std::abs(planar[k].T - general[k].T) });
-    }
-  }
-  return worst;
+      const lfd::PatchFromOrigin patch(p[0], p[1], p[2], p[3], o);
+      lfd::PatchHit planar[2], general[2];
+      const int n = patch.IntersectPlanar(d, 1.0, planar);
+      if (patch.Form != form || n != patch.IntersectAlongS(d, 1.0, general))
+      {
+        return HUGE_VAL;
+      }
+      double worst = 0.0;
+      for (int k = 0; k < n; ++k)
+      {
+        worst = std::max({ worst,
+          std::abs(planar[k].ST.x - general[k].ST.x),
+          std::abs(planar[k].ST.y - general[k].ST.y),
+          std::abs(planar[k].T - general[k].T) });
+      }
+      return worst;
+    });
 }
 
 int CountHits(const glm::dvec3 p[4], const glm::dvec3& o, const glm::dvec3& d)
