@@ -76,6 +76,21 @@ inline bool HasFma3()
 }
 #endif
 
+/// The index of the lowest set bit of `bits` (not 0).
+inline int LowestSetBit(int bits)
+{
+#if defined(__GNUC__)
+  return __builtin_ctz(static_cast<unsigned>(bits));
+#else
+  int index = 0;
+  for (; !(bits & 1); bits >>= 1)
+  {
+    ++index;
+  }
+  return index;
+#endif
+}
+
 /// a*b - c*d without the cancellation of the naive form (Kahan's fma trick).
 inline double DifferenceOfProducts(double a, double b, double c, double d)
 {
@@ -97,6 +112,11 @@ inline double DifferenceOfProducts(double a, double b, double c, double d)
  * view rays all leave the eye, so the renderer computes these once per face
  * and frame instead of once per ray (every ray, single or of a frame, goes
  * through this struct, so the hits are bit for bit the same either way).
+ *
+ * A planar patch is also intersected as its plane: a cage posed by turning
+ * layers about an axis (swim, bend) has every face planar, and the ray's
+ * T and t there are a dot product and a division each, instead of the
+ * intersection of the ray with the line at s (IntersectPlanar).
  */
 struct PatchFromOrigin
 {
@@ -113,6 +133,39 @@ struct PatchFromOrigin
   glm::dvec3 A, B, C;
   /// (|q| + |e10|) (|e00| + |twist|): the vanishing scale of f(s) without |d|.
   double Scale;
+
+  /// The patch's shape, which picks the intersection (IntersectPlanar).
+  enum class Shape
+  {
+    Curved,       ///< a hyperbolic paraboloid: only IntersectAlongS
+    Planar,       ///< 4 coplanar corners (within PlanarTolerance)
+    Parallelogram ///< a twist of exactly zero, so A = 0 and f(s) is linear
+  };
+  Shape Form = Shape::Curved;
+  /// Of a planar patch: a normal of its plane (B for a parallelogram, where
+  /// B = e10 x e00; else the cross product of the diagonals), q.Normal, and
+  /// 1e-9 |Normal|: rays closer than 1e-9 radians to the plane are left to
+  /// IntersectAlongS, which handles a ray in (or along) the plane.
+  glm::dvec3 Normal{ 0.0 };
+  double QNormal = 0.0;
+  double GrazingLimit = 0.0;
+  /// Of a parallelogram: q x e10, so that t = (d.TForm) / (d.B) (Cramer's rule).
+  glm::dvec3 TForm{ 0.0 };
+  /// Of a planar patch: Across = Normal x e10, in the plane and normal to
+  /// the s-edges, so that a crossing x = pa(s) + t e(s) has
+  /// (x - p00).Across = t e(s).Across; with q, e00 and the twist along it.
+  glm::dvec3 Across{ 0.0 };
+  double QAcross = 0.0, E00Across = 0.0, TwistAcross = 0.0;
+  /// Of a planar patch: 1e-10 max(|e00|, |e11|) |Across|, below which
+  /// |e(s).Across| is a line at s collapsed to a point or along the s-edges,
+  /// where t is undetermined (as IntersectAlongS's parallel test).
+  double CollapsedLine = 0.0;
+
+  /// Largest |n.(p10 - p00)| / (|n| |p10 - p00|), n the diagonals' cross
+  /// product, of a patch intersected as a plane: corners off the plane by
+  /// about the rounding of their coordinates, as a rotation about an axis
+  /// leaves them.
+  static constexpr double PlanarTolerance = 1e-14;
 
   PatchFromOrigin() = default;
   PatchFromOrigin(const glm::dvec3& p00,
@@ -135,22 +188,41 @@ struct PatchFromOrigin
     , C(glm::cross(Q, E00))
     , Scale((glm::length(Q) + glm::length(E10)) * (glm::length(E00) + glm::length(Twist)))
   {
+    if (this->Twist == glm::dvec3(0.0))
+    {
+      this->Form = Shape::Parallelogram;
+      this->Normal = this->B;
+      this->TForm = glm::cross(this->Q, this->E10);
+    }
+    else
+    {
+      // The diagonals' cross product is normal to both diagonals, so p00
+      // and p11 lie in the plane through p00, and p10 and p01 at the same
+      // distance from it on either side: the patch is planar when that
+      // distance is zero.
+      const glm::dvec3 normal = glm::cross(p11 - p00, p01 - p10);
+      if (std::abs(glm::dot(normal, this->E10)) <=
+        PlanarTolerance * glm::length(normal) * glm::length(this->E10))
+      {
+        this->Form = Shape::Planar;
+        this->Normal = normal;
+        this->Across = glm::cross(normal, this->E10);
+        this->QAcross = glm::dot(this->Q, this->Across);
+        this->E00Across = glm::dot(this->E00, this->Across);
+        this->TwistAcross = glm::dot(this->Twist, this->Across);
+        this->CollapsedLine = 1e-10 * std::max(glm::length(this->E00), glm::length(this->E11)) *
+          glm::length(this->Across);
+      }
+    }
+    this->QNormal = glm::dot(this->Q, this->Normal);
+    this->GrazingLimit = 1e-9 * glm::length(this->Normal);
   }
 
   /**
-   * Hits of the ray o + T d (`speed` = |d|) with the patch, solving first
-   * for s. For a fixed s the patch is the segment pa(s) + t (pb(s) - pa(s)),
-   * and the ray meets that line only when the two are coplanar:
-   *
-   *   f(s) = (pa(s) - o) . ((pb(s) - pa(s)) x d) = (A.d) s^2 + (B.d) s + (C.d) = 0
-   *
-   * (Reshetov 2019, Ray Tracing Gems ch. 8). Each root gives t and T as the
-   * point where the two lines meet. Returns -1 when f vanishes identically
-   * (every fixed-s line is coplanar with the ray: the ray is parallel to all
-   * of them, or lies in the surface), so s is undetermined and the caller
-   * solves for t instead; else returns the number of hits.
+   * The roots s of f(s) (see IntersectAlongS) of magnitude at most about 2,
+   * into `roots`; -1 when f vanishes identically (s is undetermined).
    */
-  int IntersectAlongS(const glm::dvec3& d, double speed, PatchHit hits[2]) const
+  int RootsAlongS(const glm::dvec3& d, double speed, double roots[2]) const
   {
     const double a = glm::dot(this->A, d);
     const double b = glm::dot(this->B, d);
@@ -171,7 +243,6 @@ struct PatchFromOrigin
       return 0;
     }
     const double qq = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
-    double roots[2];
     int nRoots = 0;
     if (std::abs(qq) <= 2.0 * std::abs(a) && a != 0.0)
     {
@@ -185,7 +256,30 @@ struct PatchFromOrigin
         roots[nRoots++] = root;
       }
     }
+    return nRoots;
+  }
 
+  /**
+   * Hits of the ray o + T d (`speed` = |d|) with the patch, solving first
+   * for s. For a fixed s the patch is the segment pa(s) + t (pb(s) - pa(s)),
+   * and the ray meets that line only when the two are coplanar:
+   *
+   *   f(s) = (pa(s) - o) . ((pb(s) - pa(s)) x d) = (A.d) s^2 + (B.d) s + (C.d) = 0
+   *
+   * (Reshetov 2019, Ray Tracing Gems ch. 8). Each root gives t and T as the
+   * point where the two lines meet. Returns -1 when f vanishes identically
+   * (every fixed-s line is coplanar with the ray: the ray is parallel to all
+   * of them, or lies in the surface), so s is undetermined and the caller
+   * solves for t instead; else returns the number of hits.
+   */
+  int IntersectAlongS(const glm::dvec3& d, double speed, PatchHit hits[2]) const
+  {
+    double roots[2];
+    const int nRoots = this->RootsAlongS(d, speed, roots);
+    if (nRoots < 0)
+    {
+      return -1;
+    }
     int nHits = 0;
     for (int k = 0; k < nRoots; ++k)
     {
@@ -224,9 +318,82 @@ struct PatchFromOrigin
     return nHits;
   }
 
+  /**
+   * Hits of the ray o + T d (`speed` = |d|) with a planar patch, through its
+   * plane: T = (q.n) / (d.n) is where the ray crosses it. A parallelogram
+   * p00 + s e10 + t e00 is then linear in (T, s, t), and Cramer's rule gives
+   * s = -(C.d) / (B.d), the root of the linear f(s) to the bit, and
+   * t = (TForm.d) / (B.d). A general planar patch takes s from f(s) = 0,
+   * whose roots are the s-lines through the crossing (a line in the plane
+   * is never parallel to a ray that crosses it), and t from the crossing's
+   * component across the s-edges (Across). Returns -1 for a curved patch, a ray
+   * within 1e-9 radians of the plane, or an f(s) that vanishes: the cases
+   * of IntersectAlongS.
+   */
+  int IntersectPlanar(const glm::dvec3& d, double speed, PatchHit hits[2]) const
+  {
+    const double dn = glm::dot(this->Normal, d);
+    if (this->Form == Shape::Curved || !(std::abs(dn) > this->GrazingLimit * speed))
+    {
+      return -1;
+    }
+    const double T = this->QNormal / dn;
+    if (this->Form == Shape::Parallelogram)
+    {
+      const double s = glm::dot(this->C, d) / -dn;
+      if (!(s >= -PatchParameterSlack && s <= 1.0 + PatchParameterSlack))
+      {
+        return 0;
+      }
+      const double t = glm::dot(this->TForm, d) / dn;
+      if (!(t >= -PatchParameterSlack && t <= 1.0 + PatchParameterSlack))
+      {
+        return 0;
+      }
+      hits[0] = { T, glm::dvec2(s, t) };
+      return 1;
+    }
+    double roots[2];
+    const int nRoots = this->RootsAlongS(d, speed, roots);
+    if (nRoots < 0)
+    {
+      return -1; // (every s-line through the crossing: a collapsed edge)
+    }
+    const double dAcross = glm::dot(d, this->Across);
+    int nHits = 0;
+    for (int k = 0; k < nRoots; ++k)
+    {
+      const double s = roots[k];
+      if (!(s >= -PatchParameterSlack && s <= 1.0 + PatchParameterSlack))
+      {
+        continue;
+      }
+      // The crossing less p00, T d - q, is s e10 + t e(s): along Across, t e(s).
+      const double across = this->E00Across + s * this->TwistAcross;
+      if (!(std::abs(across) > this->CollapsedLine))
+      {
+        continue;
+      }
+      const double t = (T * dAcross - this->QAcross) / across;
+      if (!(t >= -PatchParameterSlack && t <= 1.0 + PatchParameterSlack))
+      {
+        continue;
+      }
+      hits[nHits].T = T;
+      hits[nHits].ST = glm::dvec2(s, t);
+      ++nHits;
+    }
+    return nHits;
+  }
+
   /// Every hit of the ray o + T d (`speed` = |d|), as IntersectBilinearPatch.
   int Intersect(const glm::dvec3& d, double speed, PatchHit hits[2]) const
   {
+    const int planar = this->IntersectPlanar(d, speed, hits);
+    if (planar >= 0)
+    {
+      return planar;
+    }
     const int n = this->IntersectAlongS(d, speed, hits);
     if (n >= 0)
     {
@@ -288,6 +455,21 @@ inline glm::dvec3 FaceToBox(int face, const glm::dvec2& st)
       return { st.x, st.y, side };
   }
 }
+
+namespace detail
+{
+/// The box point (clamped to the face) and rest image of the hit `st` on face
+/// `Face`, with the face known to the compiler (TrilinearMapOnFace inlined).
+template<int Face>
+void MapFaceHit(const Hexahedron& rest,
+  const glm::dvec2& st,
+  glm::dvec3& uvw,
+  glm::dvec3& restPoint)
+{
+  uvw = FaceToBox(Face, glm::clamp(st, 0.0, 1.0));
+  restPoint = TrilinearMapOnFace<Face>(rest, uvw);
+}
+} // namespace detail
 
 /// Rest image of a deformed-space point: the rest map at the deformed map's
 /// inverse. Returns false when the Newton inverse does not converge.
@@ -389,32 +571,52 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   const double mergeT = 1e-9 * size / speed;
   const double shortestT = 1e-7 * size / speed;
 
-  // The face hits from tMin on, in the order found.
+  // The face hits from tMin on, in the order found, with their box points
+  // (the face's own coordinate exactly 0 or 1, s and t clamped) and rest images.
   struct FaceHit
   {
     double T;
-    glm::dvec2 ST;
+    glm::dvec3 Uvw;
+    glm::dvec3 Rest;
     int Face;
   };
   FaceHit found[12];
   int nFound = 0;
-  for (int face = 0; face < 6; ++face)
+  for (int remaining = faces & 0x3f; remaining != 0; remaining &= remaining - 1)
   {
-    if (!(faces & (1 << face)))
-    {
-      continue;
-    }
+    const int face = detail::LowestSetBit(remaining);
     PatchHit hits[2];
     const int nHits = box.Faces[face].Intersect(d, speed, hits);
     for (int k = 0; k < nHits; ++k)
     {
       if (hits[k].T >= tMin - mergeT)
       {
-        found[nFound++] = { std::max(hits[k].T, tMin), hits[k].ST, face };
+        FaceHit& hit = found[nFound++];
+        hit.T = std::max(hits[k].T, tMin);
+        hit.Face = face;
+        switch (face)
+        {
+          case 0:
+            detail::MapFaceHit<0>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+            break;
+          case 1:
+            detail::MapFaceHit<1>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+            break;
+          case 2:
+            detail::MapFaceHit<2>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+            break;
+          case 3:
+            detail::MapFaceHit<3>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+            break;
+          case 4:
+            detail::MapFaceHit<4>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+            break;
+          default:
+            detail::MapFaceHit<5>(rest, hits[k].ST, hit.Uvw, hit.Rest);
+        }
       }
     }
   }
-  auto uvwOf = [](const FaceHit& hit) { return glm::clamp(FaceToBox(hit.Face, hit.ST), 0.0, 1.0); };
 
   if (startsOutside && nFound == 2 && maxSegments > 0)
   {
@@ -432,11 +634,11 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
       WarpedSegment& segment = out[0];
       segment.TEnter = enter.T;
       segment.TExit = exit.T;
-      segment.UvwEnter = uvwOf(enter);
-      segment.UvwExit = uvwOf(exit);
+      segment.UvwEnter = enter.Uvw;
+      segment.UvwExit = exit.Uvw;
       segment.FaceExit = exit.Face;
-      segment.RestEnter = TrilinearMapOnFace(rest, enter.Face, segment.UvwEnter);
-      segment.RestExit = TrilinearMapOnFace(rest, exit.Face, segment.UvwExit);
+      segment.RestEnter = enter.Rest;
+      segment.RestExit = exit.Rest;
       return 1;
     }
   }
@@ -445,8 +647,9 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   {
     double T;
     glm::dvec3 Uvw;
-    bool OnFace; // false for the point at tMin, whose uvw is not known yet
-    int Face;    // the face hit (-1 for the point at tMin)
+    glm::dvec3 Rest; // the rest image of a face hit
+    bool OnFace;     // false for the point at tMin, whose uvw is not known yet
+    int Face;        // the face hit (-1 for the point at tMin)
   };
   // Sorted by T, hits of equal T in the order found (the insertion sort that
   // std::sort is below 16 elements, without its calls: the 3-box swim 228.4
@@ -455,7 +658,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   int n = 0;
   for (int i = 0; i < nFound; ++i)
   {
-    const Crossing crossing{ found[i].T, uvwOf(found[i]), true, found[i].Face };
+    const Crossing crossing{ found[i].T, found[i].Uvw, found[i].Rest, true, found[i].Face };
     int at = n++;
     for (; at > 0 && crossing.T < crossings[at - 1].T; --at)
     {
@@ -470,7 +673,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   // (A point at tMin known to be outside starts no stretch that matters.)
   if (!startsOutside && std::isfinite(tMin) && (n == 0 || crossings[0].T > tMin + mergeT))
   {
-    merged[m++] = { tMin, glm::dvec3(0.5), false, -1 };
+    merged[m++] = { tMin, glm::dvec3(0.5), glm::dvec3(0.0), false, -1 };
   }
   for (int k = 0; k < n; ++k)
   {
@@ -541,9 +744,8 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
     segment.UvwExit = exit.Uvw;
     segment.FaceExit = exit.Face;
     // (Only the point at tMin is off the faces.)
-    segment.RestEnter = enter.OnFace ? TrilinearMapOnFace(rest, enter.Face, enter.Uvw)
-                                     : TrilinearMap(rest, enter.Uvw);
-    segment.RestExit = TrilinearMapOnFace(rest, exit.Face, exit.Uvw);
+    segment.RestEnter = enter.OnFace ? enter.Rest : TrilinearMap(rest, enter.Uvw);
+    segment.RestExit = exit.Rest;
   }
   return written;
 }

@@ -1,7 +1,8 @@
 // Ray / bilinear-patch intersection (lfdRayWarp.h; Ramsey-Potter-Hansen
 // 2004, Reshetov 2019): rays through known points of random, planar,
 // parallelogram and collapsed patches hit them at the known (s,t) and T; a
-// saddle is crossed twice; parallel, coplanar and missing rays get no hit.
+// saddle is crossed twice; parallel, coplanar and missing rays get no hit;
+// planar patches, intersected as their plane, hit where the general solve does.
 #include "lfdRayWarp.h"
 #include "lfdTestChecks.h"
 
@@ -39,9 +40,11 @@ double HitError(const glm::dvec3 p[4],
   return best;
 }
 
-// Worst HitError over `trials` rays through random points of the patch, in
-// random directions, each hit at a random T in [0.5, 3].
-double WorstOverRandomRays(const glm::dvec3 p[4], std::mt19937_64& rng, int trials)
+// Worst `error(o, d, s, t, T)` over `trials` rays through random points
+// (s, t) of the patch, in random directions d, each at a random T in [0.5, 3]
+// from its origin o.
+template<typename Error>
+double WorstOverRandomRays(const glm::dvec3 p[4], std::mt19937_64& rng, int trials, Error&& error)
 {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> gauss;
@@ -50,9 +53,51 @@ double WorstOverRandomRays(const glm::dvec3 p[4], std::mt19937_64& rng, int tria
   {
     const double s = unit(rng), t = unit(rng), T = 0.5 + 2.5 * unit(rng);
     const glm::dvec3 d = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
-    worst = std::max(worst, HitError(p, Patch(p, s, t) - T * d, d, s, t, T));
+    worst = std::max(worst, error(Patch(p, s, t) - T * d, d, s, t, T));
   }
   return worst;
+}
+
+// Worst HitError over `trials` random rays through the patch.
+double WorstOverRandomRays(const glm::dvec3 p[4], std::mt19937_64& rng, int trials)
+{
+  return WorstOverRandomRays(p,
+    rng,
+    trials,
+    [p](const glm::dvec3& o, const glm::dvec3& d, double s, double t, double T)
+    { return HitError(p, o, d, s, t, T); });
+}
+
+// Largest difference of (s, t, T) between the plane's solve and the general
+// one (IntersectAlongS) over `trials` random rays through the patch, which
+// must have `form`; HUGE_VAL when they disagree on the number of hits.
+double WorstPlanarAgainstGeneral(const glm::dvec3 p[4],
+  lfd::PatchFromOrigin::Shape form,
+  std::mt19937_64& rng,
+  int trials)
+{
+  return WorstOverRandomRays(p,
+    rng,
+    trials,
+    [p, form](const glm::dvec3& o, const glm::dvec3& d, double, double, double)
+    {
+      const lfd::PatchFromOrigin patch(p[0], p[1], p[2], p[3], o);
+      lfd::PatchHit planar[2], general[2];
+      const int n = patch.IntersectPlanar(d, 1.0, planar);
+      if (patch.Form != form || n != patch.IntersectAlongS(d, 1.0, general))
+      {
+        return HUGE_VAL;
+      }
+      double worst = 0.0;
+      for (int k = 0; k < n; ++k)
+      {
+        worst = std::max({ worst,
+          std::abs(planar[k].ST.x - general[k].ST.x),
+          std::abs(planar[k].ST.y - general[k].ST.y),
+          std::abs(planar[k].T - general[k].T) });
+      }
+      return worst;
+    });
 }
 
 int CountHits(const glm::dvec3 p[4], const glm::dvec3& o, const glm::dvec3& d)
@@ -94,6 +139,31 @@ int TestBilinearPatch(int, char*[])
     WorstOverRandomRays(collapsed, rng, 1000),
     0.0);
 
+  Expect("planar patch: its plane's hits against the general solve's, 1000 rays",
+    WorstPlanarAgainstGeneral(planar, lfd::PatchFromOrigin::Shape::Planar, rng, 1000),
+    0.0,
+    1e-10);
+  // (Its twist rounds to exactly zero only with corners exact in binary.)
+  const glm::dvec3 exact[4] = { base,
+    base + glm::dvec3(0.5, 0.25, 0.0),
+    base + glm::dvec3(-0.25, 0.5, 0.75),
+    base + glm::dvec3(0.25, 0.75, 0.75) };
+  Expect("parallelogram: its plane's hits against the general solve's, 1000 rays",
+    WorstPlanarAgainstGeneral(exact, lfd::PatchFromOrigin::Shape::Parallelogram, rng, 1000),
+    0.0,
+    1e-10);
+  // A face of a box turned about the z axis by layers (the swim, the bend):
+  // its corners keep their z, but it is no parallelogram.
+  const double c0 = std::cos(0.1), s0 = std::sin(0.1), c1 = std::cos(0.45), s1 = std::sin(0.45);
+  const glm::dvec3 turned[4] = { { 0.3 * c0, 0.3 * s0, 0.2 },
+    { 0.9 * c1, 0.9 * s1, 0.2 },
+    { 0.3 * c0 - 0.4 * s0, 0.3 * s0 + 0.4 * c0, 0.2 },
+    { 0.9 * c1 - 0.4 * s1, 0.9 * s1 + 0.4 * c1, 0.2 } };
+  Expect("turned layer face: its plane's hits against the general solve's, 1000 rays",
+    WorstPlanarAgainstGeneral(turned, lfd::PatchFromOrigin::Shape::Planar, rng, 1000),
+    0.0,
+    1e-10);
+
   // A ray perpendicular to the unit square, and its s,t.
   const glm::dvec3 square[4] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 } };
   Expect("unit square, ray through (0.25, 0.75)",
@@ -116,6 +186,12 @@ int TestBilinearPatch(int, char*[])
   Expect("saddle chord: hits", CountHits(saddle, o, d), 2);
   Expect("saddle chord: first hit", HitError(saddle, o, d, 0.2, 0.2, 0.2), 0.0);
   Expect("saddle chord: second hit", HitError(saddle, o, d, 0.8, 0.8, 0.8), 0.0);
+  lfd::PatchHit hits[2];
+  Expect("saddle: left to the general solve (IntersectPlanar's -1)",
+    lfd::PatchFromOrigin(saddle[0], saddle[1], saddle[2], saddle[3], o)
+      .IntersectPlanar(d, 1.0, hits),
+    -1.0,
+    0.0);
   Expect("saddle: ray along its ruling t = 0.5 (in the surface)",
     CountHits(saddle, { -1, 0.5, -0.5 }, { 1, 0, 0.5 }),
     0);
