@@ -195,7 +195,8 @@ struct RenderRows
     const int columns = (this->Width + this->TileSize - 1) / this->TileSize;
     // Rays that no box may claim go through lfd::RenderPlainViews in
     // batches: all of them in a frame without boxes (or labels), else those
-    // of the frame cage's tiles that list no box.
+    // for which lfd::RenderWalk finds no box (their tile lists none, or the
+    // walk it starts finds none).
     const bool plain = !this->Settings.UseLabels || this->Cage.Boxes->empty();
     int batch[lfd::MaximumPlainBatch];
     lfd::ViewSample batchSeen[lfd::MaximumPlainBatch];
@@ -224,24 +225,28 @@ struct RenderRows
           this->Write(id, lfd::ViewSample{});
           continue;
         }
-        if (plain || (this->Accelerated && this->Cage.CountCandidates(x, y) == 0))
+        if (!plain && !this->Accelerated)
         {
-          batch[batched++] = x;
-          if (batched == lfd::MaximumPlainBatch)
-          {
-            renderBatch();
-          }
+          this->Write(id,
+            lfd::RenderView(this->Cage.Eye,
+              this->Cage.Direction(x, y),
+              *this->Cage.Boxes,
+              this->Light,
+              this->Settings,
+              scratch.Segments));
           continue;
         }
-        this->Write(id,
-          this->Accelerated
-            ? lfd::RenderView(this->Cage, x, y, this->Light, this->Settings, scratch)
-            : lfd::RenderView(this->Cage.Eye,
-                this->Cage.Direction(x, y),
-                *this->Cage.Boxes,
-                this->Light,
-                this->Settings,
-                scratch.Segments));
+        lfd::ViewSample seen;
+        if (!plain && lfd::RenderWalk(this->Cage, x, y, this->Light, this->Settings, scratch, seen))
+        {
+          this->Write(id, seen);
+          continue;
+        }
+        batch[batched++] = x;
+        if (batched == lfd::MaximumPlainBatch)
+        {
+          renderBatch();
+        }
       }
       renderBatch();
     }
