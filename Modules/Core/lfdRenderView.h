@@ -529,12 +529,13 @@ struct FrameCage
 
   /// Tile side (pixels) that the renderer uses: small enough that a tile of
   /// the fish's 100-slab cage at 512x512 lists a few boxes (about 2.4 per
-  /// ray over the frame, 3.5 before the tiles followed the projected hulls),
-  /// large enough that binning a cage of the sub-box budget (4096) stays a
-  /// small part of a frame. 8 pixels took 1.2% fewer instructions for the
-  /// 100 slabs: not worth the finer tiles of the undeformed view's mask,
-  /// which shares the size.
-  static constexpr int DefaultTileSize = 16;
+  /// ray over the frame at 16 pixels, 3.5 before the tiles followed the
+  /// projected hulls), large enough that binning a cage of the sub-box
+  /// budget (4096) stays a small part of a frame. 8 pixels against 16: the
+  /// bent 100 slabs 297.5 -> 293.1 M instructions a frame, the 3-box swim
+  /// 142.8 -> 143.0 M (the renderer's label-hull mask keeps 16-pixel tiles);
+  /// 4 pixels: 312.7 and 147.8 M.
+  static constexpr int DefaultTileSize = 8;
 
   /**
    * The frame of a width x height image seen from `eye` through

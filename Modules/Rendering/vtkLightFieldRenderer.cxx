@@ -44,6 +44,14 @@ vtkCxxSetObjectMacro(vtkLightFieldRenderer, Camera, vtkCamera);
 namespace
 {
 /**
+ * The side of the label hull's screen tiles (lfd::LabelHull::ScreenTiles) in
+ * tiles of the frame cage (lfd::FrameCage::DefaultTileSize): the cage's
+ * finer tiles list fewer boxes per ray, while the hull's test per tile costs
+ * more than finer tiles skip.
+ */
+constexpr int MaskTileScale = 2;
+
+/**
  * The boxes of a cage grid as RENDER_VIEW takes them, untessellated. False
  * (with an error on `self` naming the box) when a cell is not a hexahedron of
  * existing points or its label is outside 1..255.
@@ -756,18 +764,24 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     {
       // No surface box without a proxy (the sampler's default bounds are unbounded).
       const bool proxy = sampler.Depth.Present();
-      tiles = sampler.Hull->ScreenTiles(layout,
+      // The hull's tiles are MaskTileScale x MaskTileScale of the cage's.
+      const int side = MaskTileScale * cage.TileSize;
+      const std::vector<std::uint8_t> mask = sampler.Hull->ScreenTiles(layout,
         eye.Center(),
         eye.PixelToDirection(),
         this->Width,
         this->Height,
         sampler.FocalDistance,
-        cage.TileSize,
+        side,
         proxy ? sampler.SurfaceLow : glm::dvec3(std::numeric_limits<double>::infinity()),
         proxy ? sampler.SurfaceHigh : glm::dvec3(-std::numeric_limits<double>::infinity()));
-      for (std::size_t t = 0; !boxes.empty() && t < tiles.size(); ++t)
+      const int maskColumns = (this->Width + side - 1) / side;
+      tiles.resize(static_cast<std::size_t>(cage.TilesX) * cage.TilesY);
+      for (std::size_t t = 0; t < tiles.size(); ++t)
       {
-        tiles[t] |= cage.TileStart[t] != cage.TileStart[t + 1];
+        const int tx = static_cast<int>(t) % cage.TilesX, ty = static_cast<int>(t) / cage.TilesX;
+        tiles[t] = mask[(ty / MaskTileScale) * maskColumns + tx / MaskTileScale] |
+          (cage.TileStart[t] != cage.TileStart[t + 1]);
       }
     }
     RenderFrame(lfd::SamplerLookup{ sampler, this->WidenedSearch, eye.Forward() },
