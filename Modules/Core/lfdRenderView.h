@@ -529,12 +529,13 @@ struct FrameCage
 
   /// Tile side (pixels) that the renderer uses: small enough that a tile of
   /// the fish's 100-slab cage at 512x512 lists a few boxes (about 2.4 per
-  /// ray over the frame, 3.5 before the tiles followed the projected hulls),
-  /// large enough that binning a cage of the sub-box budget (4096) stays a
-  /// small part of a frame. 8 pixels took 1.2% fewer instructions for the
-  /// 100 slabs: not worth the finer tiles of the undeformed view's mask,
-  /// which shares the size.
-  static constexpr int DefaultTileSize = 16;
+  /// ray over the frame at 16 pixels, 3.5 before the tiles followed the
+  /// projected hulls), large enough that binning a cage of the sub-box
+  /// budget (4096) stays a small part of a frame. 8 pixels against 16: the
+  /// bent 100 slabs 297.5 -> 293.1 M instructions a frame, the 3-box swim
+  /// 142.8 -> 143.0 M (the renderer's label-hull mask keeps 16-pixel tiles);
+  /// 4 pixels: 312.7 and 147.8 M.
+  static constexpr int DefaultTileSize = 8;
 
   /**
    * The frame of a width x height image seen from `eye` through
@@ -1721,71 +1722,6 @@ ViewSample RenderView(const glm::dvec3& o,
     segments);
 }
 
-/**
- * RenderView for the ray through pixel (x, y) of a frame: the same result,
- * with the boxes tried and warped through `cage` (FrameCage), front to back
- * and only as far as needed. On return the first scratch.Handed of
- * scratch.Segments are the ray's intervals up to the one that gave the pixel
- * (all of them when none did), but those of boxes that did not move and whose
- * label the view ray does not show.
- */
-template<typename Lookup>
-ViewSample RenderView(const FrameCage& cage,
-  int x,
-  int y,
-  const Lookup& lookup,
-  const RenderViewSettings& settings,
-  FrameRayScratch& scratch)
-{
-  const glm::dvec3 d = cage.Direction(x, y);
-  // Most rays lie in a tile without boxes (225 000 of the 262 000 of the
-  // 3-box swim): tested here, inlined, they skip the call that starts a walk
-  // (the swim's frame 239.4 -> 228.4 M instructions).
-  scratch.Segments.clear();
-  scratch.Handed = 0;
-  const bool any = settings.UseLabels && !cage.Boxes->empty() && cage.CountCandidates(x, y) > 0 &&
-    cage.StartWalk(x, y, d, scratch) > 0;
-  // (The widened search reads scratch.Segments when no interval matched: the
-  // walk then handed every one out.)
-  return detail::ShadeView(
-    cage.Eye,
-    d,
-    *cage.Boxes,
-    lookup,
-    settings,
-    any,
-    [&](detail::ViewRayLook<Lookup>& view, const detail::RunState& run)
-    {
-      if (run.Looked && run.Looked != scratch.RunSkipped)
-      {
-        // The run was looked up: its pieces behind are not warped either.
-        cage.FollowRun(*run.Looked, cage.Boxes->size(), scratch);
-        cage.LeaveOut(scratch.Chain.size(), scratch);
-        scratch.RunSkipped = run.Looked;
-      }
-      else if (run.Deferred && run.Deferred != scratch.RunSkipped &&
-        detail::PiecesAhead(run.Focal) > 0)
-      {
-        // (One piece more than the jump: the run's last is never left out.)
-        cage.FollowRun(*run.Deferred, detail::PiecesAhead(run.Focal) + 1, scratch);
-        scratch.Landing =
-          cage.LeaveOut(detail::PiecesLeftOut(run.Focal, scratch.Chain.size()), scratch);
-        scratch.RunSkipped = run.Deferred;
-      }
-      // A box that did not move shows the view ray's own label (ShadeSegments):
-      // when that is not its label, none of its intervals can give the pixel
-      // (and the widened search only tries moved boxes), so it is not warped.
-      return cage.NextSegment(d,
-        scratch,
-        [&](int b)
-        {
-          const RenderBox& box = (*cage.Boxes)[b];
-          return !box.Moved && view.Look() != box.Label;
-        });
-    },
-    scratch.Segments);
-}
-
 /// The most rays RenderPlainViews takes at once.
 constexpr int MaximumPlainBatch = LightFieldSampler::MaximumBatch;
 
@@ -1805,8 +1741,8 @@ struct Staged<Lookup, std::void_t<typename Lookup::Aimed>> : std::true_type
 /**
  * RenderView for the rays through the pixels (xs[i], y), i < count <=
  * MaximumPlainBatch, xs ascending, of a frame, rays that no box may claim
- * (the frame has no box or no labels, or their tiles list none: FrameCage::
- * CountCandidates() 0): the same results, into `seen`. With a lookup that
+ * (RenderWalk() false: the frame has no box or no labels, the ray's tile
+ * lists none or its walk finds none): the same results, into `seen`. With a lookup that
  * gathers in two stages (SamplerLookup: AimBatch() and Sample()), the batch
  * runs the first stage, the rays' geometry, for every ray before the
  * second, the texels, for any (and the first stage may bound the batch's
@@ -1863,6 +1799,104 @@ void RenderPlainViews(const FrameCage& cage,
       seen[i] = detail::LookUndeformed(view, settings);
     }
   }
+}
+
+/**
+ * RenderView for the ray through pixel (x, y) of a frame, into `seen`, when
+ * a box may claim the ray: the frame has labels and the ray's walk finds a
+ * box (FrameCage::StartWalk()). The boxes are tried and warped through
+ * `cage`, front to back and only as far as needed. On return the first
+ * scratch.Handed of scratch.Segments are the ray's intervals up to the one
+ * that gave the pixel (all of them when none did), but those of boxes that
+ * did not move and whose label the view ray does not show.
+ *
+ * False, `seen` untouched: no box may claim the ray, which sees what
+ * RenderPlainViews() gives it. A frame's renderer batches those rays, and
+ * calls RenderWalk only in the tiles that list a box (FrameCage::
+ * CountCandidates(): 40 800 of the 3-box swim's 262 000 rays, 3 400 of
+ * which meet none).
+ */
+template<typename Lookup>
+bool RenderWalk(const FrameCage& cage,
+  int x,
+  int y,
+  const Lookup& lookup,
+  const RenderViewSettings& settings,
+  FrameRayScratch& scratch,
+  ViewSample& seen)
+{
+  if (!settings.UseLabels)
+  {
+    return false;
+  }
+  const glm::dvec3 d = cage.Direction(x, y);
+  if (cage.StartWalk(x, y, d, scratch) == 0)
+  {
+    return false;
+  }
+  // (The widened search reads scratch.Segments when no interval matched: the
+  // walk then handed every one out.)
+  seen = detail::ShadeView(
+    cage.Eye,
+    d,
+    *cage.Boxes,
+    lookup,
+    settings,
+    true,
+    [&](detail::ViewRayLook<Lookup>& view, const detail::RunState& run)
+    {
+      if (run.Looked && run.Looked != scratch.RunSkipped)
+      {
+        // The run was looked up: its pieces behind are not warped either.
+        cage.FollowRun(*run.Looked, cage.Boxes->size(), scratch);
+        cage.LeaveOut(scratch.Chain.size(), scratch);
+        scratch.RunSkipped = run.Looked;
+      }
+      else if (run.Deferred && run.Deferred != scratch.RunSkipped &&
+        detail::PiecesAhead(run.Focal) > 0)
+      {
+        // (One piece more than the jump: the run's last is never left out.)
+        cage.FollowRun(*run.Deferred, detail::PiecesAhead(run.Focal) + 1, scratch);
+        scratch.Landing =
+          cage.LeaveOut(detail::PiecesLeftOut(run.Focal, scratch.Chain.size()), scratch);
+        scratch.RunSkipped = run.Deferred;
+      }
+      // A box that did not move shows the view ray's own label (ShadeSegments):
+      // when that is not its label, none of its intervals can give the pixel
+      // (and the widened search only tries moved boxes), so it is not warped.
+      return cage.NextSegment(d,
+        scratch,
+        [&](int b)
+        {
+          const RenderBox& box = (*cage.Boxes)[b];
+          return !box.Moved && view.Look() != box.Label;
+        });
+    },
+    scratch.Segments);
+  return true;
+}
+
+/**
+ * RenderView for the ray through pixel (x, y) of a frame: the same result,
+ * with the boxes tried and warped through `cage` (RenderWalk()); scratch as
+ * RenderWalk leaves it.
+ */
+template<typename Lookup>
+ViewSample RenderView(const FrameCage& cage,
+  int x,
+  int y,
+  const Lookup& lookup,
+  const RenderViewSettings& settings,
+  FrameRayScratch& scratch)
+{
+  ViewSample seen;
+  if (!RenderWalk(cage, x, y, lookup, settings, scratch, seen))
+  {
+    scratch.Segments.clear();
+    scratch.Handed = 0;
+    RenderPlainViews(cage, &x, y, 1, lookup, settings, &seen);
+  }
+  return seen;
 }
 
 } // namespace lfd

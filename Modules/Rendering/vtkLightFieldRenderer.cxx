@@ -44,6 +44,14 @@ vtkCxxSetObjectMacro(vtkLightFieldRenderer, Camera, vtkCamera);
 namespace
 {
 /**
+ * The side of the label hull's screen tiles (lfd::LabelHull::ScreenTiles) in
+ * tiles of the frame cage (lfd::FrameCage::DefaultTileSize): the cage's
+ * finer tiles list fewer boxes per ray, while the hull's test per tile costs
+ * more than finer tiles skip.
+ */
+constexpr int MaskTileScale = 2;
+
+/**
  * The boxes of a cage grid as RENDER_VIEW takes them, untessellated. False
  * (with an error on `self` naming the box) when a cell is not a hexahedron of
  * existing points or its label is outside 1..255.
@@ -183,27 +191,41 @@ struct RenderRows
   float* Depths;
   // The scratch space of a ray, reused from ray to ray by each thread.
   mutable vtkSMPThreadLocal<lfd::FrameRayScratch> Scratch;
-  // The screen-tile mask (lfd::LabelHull::ScreenTiles, tiles of TileSize
-  // pixels): a tile marked 0 is background without generating its rays.
-  // Empty: every ray is generated.
+  // The screen-tile mask (lfd::LabelHull::ScreenTiles over the tiles of
+  // Cage, FrameCage::TileSize pixels, row after row): a tile marked 0 is
+  // background without generating its rays. Empty: every ray is generated.
   std::vector<std::uint8_t> Tiles;
-  int TileSize = 1;
+  // Width pixels of Background, RGB (WriteBackground).
+  std::vector<std::uint8_t> BackgroundRow;
 
+  /**
+   * The rows [begin, end), tile by tile: a tile that is all background is
+   * written as such at once, without a ray (the mask's tiles, and with
+   * RenderViewSettings::AllOwned those that list no box); a tile that lists
+   * no box has all its rays batched; in a tile that lists one, each ray
+   * whose walk finds a box is rendered alone (lfd::RenderWalk), the others
+   * batched. Tile by tile, a pixel costs no division or test of its own
+   * (the 3-box swim's frame 154.3 -> 142.8 M instructions, the fish at rest
+   * 98.5 -> 94.6 M).
+   */
   void operator()(vtkIdType begin, vtkIdType end) const
   {
     lfd::FrameRayScratch& scratch = this->Scratch.Local();
-    const int columns = (this->Width + this->TileSize - 1) / this->TileSize;
+    const int tileSize = this->Cage.TileSize;
     // Rays that no box may claim go through lfd::RenderPlainViews in
     // batches: all of them in a frame without boxes (or labels), else those
-    // of the frame cage's tiles that list no box.
+    // of the tiles that list no box and those whose walk finds none.
     const bool plain = !this->Settings.UseLabels || this->Cage.Boxes->empty();
+    // (They are background when every part has a box.)
+    const bool owned = !plain && this->Settings.AllOwned;
     int batch[lfd::MaximumPlainBatch];
     lfd::ViewSample batchSeen[lfd::MaximumPlainBatch];
     for (vtkIdType j = begin; j < end; ++j)
     {
       const int y = static_cast<int>(this->Height - 1 - j); // OpenCV row
+      const vtkIdType row = j * this->Width;
       const std::uint8_t* tiles =
-        this->Tiles.empty() ? nullptr : this->Tiles.data() + (y / this->TileSize) * columns;
+        this->Tiles.empty() ? nullptr : this->Tiles.data() + (y / tileSize) * this->Cage.TilesX;
       int batched = 0;
       const auto renderBatch = [&]
       {
@@ -211,37 +233,45 @@ struct RenderRows
           this->Cage, batch, y, batched, this->Light, this->Settings, batchSeen);
         for (int i = 0; i < batched; ++i)
         {
-          this->Write(j * this->Width + batch[i], batchSeen[i]);
+          this->Write(row + batch[i], batchSeen[i]);
         }
         batched = 0;
       };
-      for (int x = 0; x < this->Width; ++x)
+      for (int x0 = 0, tile = 0; x0 < this->Width; x0 += tileSize, ++tile)
       {
-        const vtkIdType id = j * this->Width + x;
-        if (tiles && !tiles[x / this->TileSize])
+        const int x1 = std::min(x0 + tileSize, this->Width);
+        const bool boxes = !plain && (!this->Accelerated || this->Cage.CountCandidates(x0, y) > 0);
+        if ((tiles && !tiles[tile]) || (owned && !boxes))
         {
-          // What a ray whose lookup the hull skips shows (label -1).
-          this->Write(id, lfd::ViewSample{});
+          this->WriteBackground(row + x0, x1 - x0);
           continue;
         }
-        if (plain || (this->Accelerated && this->Cage.CountCandidates(x, y) == 0))
+        for (int x = x0; x < x1; ++x)
         {
-          batch[batched++] = x;
-          if (batched == lfd::MaximumPlainBatch)
+          if (boxes && !this->Accelerated)
           {
-            renderBatch();
-          }
-          continue;
-        }
-        this->Write(id,
-          this->Accelerated
-            ? lfd::RenderView(this->Cage, x, y, this->Light, this->Settings, scratch)
-            : lfd::RenderView(this->Cage.Eye,
+            this->Write(row + x,
+              lfd::RenderView(this->Cage.Eye,
                 this->Cage.Direction(x, y),
                 *this->Cage.Boxes,
                 this->Light,
                 this->Settings,
                 scratch.Segments));
+            continue;
+          }
+          lfd::ViewSample seen;
+          if (boxes &&
+            lfd::RenderWalk(this->Cage, x, y, this->Light, this->Settings, scratch, seen))
+          {
+            this->Write(row + x, seen);
+            continue;
+          }
+          batch[batched++] = x;
+          if (batched == lfd::MaximumPlainBatch)
+          {
+            renderBatch();
+          }
+        }
       }
       renderBatch();
     }
@@ -268,6 +298,15 @@ struct RenderRows
     {
       rgb[c] = static_cast<std::uint8_t>(lfd::RoundHalfAway(std::clamp(seen.Color[c], 0.0, 255.0)));
     }
+  }
+
+  /// Writes background, as Write() does for a ray that shows it, into the
+  /// `count` <= Width pixels from `id` (VTK order), copied from BackgroundRow.
+  void WriteBackground(vtkIdType id, int count) const
+  {
+    std::fill_n(this->Labels + id, count, std::uint8_t{ 0 });
+    std::fill_n(this->Depths + id, count, 0.0f);
+    std::copy_n(this->BackgroundRow.data(), 3 * count, this->Radiance + 3 * id);
   }
 };
 
@@ -427,8 +466,12 @@ void RenderFrame(const Lookup& lookup,
     frame.Labels,
     frame.Depths,
     {},
-    std::move(tiles),
-    lfd::FrameCage::DefaultTileSize };
+    std::move(tiles) };
+  functor.BackgroundRow.resize(3 * static_cast<std::size_t>(frame.Width));
+  for (std::size_t i = 0; i < functor.BackgroundRow.size(); ++i)
+  {
+    functor.BackgroundRow[i] = frame.Background[i % 3];
+  }
   vtkSMPTools::For(0, frame.Height, functor);
 }
 }
@@ -721,18 +764,24 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     {
       // No surface box without a proxy (the sampler's default bounds are unbounded).
       const bool proxy = sampler.Depth.Present();
-      tiles = sampler.Hull->ScreenTiles(layout,
+      // The hull's tiles are MaskTileScale x MaskTileScale of the cage's.
+      const int side = MaskTileScale * cage.TileSize;
+      const std::vector<std::uint8_t> mask = sampler.Hull->ScreenTiles(layout,
         eye.Center(),
         eye.PixelToDirection(),
         this->Width,
         this->Height,
         sampler.FocalDistance,
-        lfd::FrameCage::DefaultTileSize,
+        side,
         proxy ? sampler.SurfaceLow : glm::dvec3(std::numeric_limits<double>::infinity()),
         proxy ? sampler.SurfaceHigh : glm::dvec3(-std::numeric_limits<double>::infinity()));
-      for (std::size_t t = 0; !boxes.empty() && t < tiles.size(); ++t)
+      const int maskColumns = (this->Width + side - 1) / side;
+      tiles.resize(static_cast<std::size_t>(cage.TilesX) * cage.TilesY);
+      for (std::size_t t = 0; t < tiles.size(); ++t)
       {
-        tiles[t] |= cage.TileStart[t] != cage.TileStart[t + 1];
+        const int tx = static_cast<int>(t) % cage.TilesX, ty = static_cast<int>(t) / cage.TilesX;
+        tiles[t] = mask[(ty / MaskTileScale) * maskColumns + tx / MaskTileScale] |
+          (cage.TileStart[t] != cage.TileStart[t + 1]);
       }
     }
     RenderFrame(lfd::SamplerLookup{ sampler, this->WidenedSearch, eye.Forward() },
