@@ -1838,17 +1838,14 @@ ViewSample RenderView(const FrameCage& cage,
     any,
     [&](detail::ViewRayLook<Lookup>& view, const detail::RunState& run)
     {
-      // (Once every box is warped, none is left to leave out: most rays
-      // that did not match their first interval, 21 000 of the swim's.)
-      const bool warping = scratch.NextEntry < scratch.Entries.size();
-      if (warping && run.Looked && run.Looked != scratch.RunSkipped)
+      if (run.Looked && run.Looked != scratch.RunSkipped)
       {
         // The run was looked up: its pieces behind are not warped either.
         cage.FollowRun(*run.Looked, cage.Boxes->size(), scratch);
         cage.LeaveOut(scratch.Chain.size(), scratch);
         scratch.RunSkipped = run.Looked;
       }
-      else if (warping && run.Deferred && run.Deferred != scratch.RunSkipped &&
+      else if (run.Deferred && run.Deferred != scratch.RunSkipped &&
         detail::PiecesAhead(run.Focal) > 0)
       {
         // (One piece more than the jump: the run's last is never left out.)
