@@ -1464,18 +1464,7 @@ struct LightFieldSampler
   bool Gather(const glm::dvec3& o, const glm::dvec3& d, RaySamples& out) const
   {
     RayAim aim;
-    aim.Focal = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
-    return this->GatherFocused(o, d, aim, out);
-  }
-
-  /**
-   * Gather() of a ray whose focal point (FocalPoint()) the caller has
-   * already found, in aim.Focal: RENDER_VIEW needs it before it decides to
-   * look a warped ray up (lfdRenderView.h), and does not find it twice.
-   */
-  bool GatherFocused(const glm::dvec3& o, const glm::dvec3& d, RayAim& aim, RaySamples& out) const
-  {
-    if (!this->AimFocused(o, d, aim))
+    if (!this->Aim(o, d, aim))
     {
       out.Count = 0;
       out.Surface = std::numeric_limits<double>::quiet_NaN();
@@ -1499,15 +1488,6 @@ struct LightFieldSampler
     std::uint32_t sectors = ~std::uint32_t(0)) const
   {
     aim.Focal = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
-    return this->AimFocused(o, d, aim, sectors);
-  }
-
-  /// Aim() of a ray whose focal point (FocalPoint()) is already in aim.Focal.
-  bool AimFocused(const glm::dvec3& o,
-    const glm::dvec3& d,
-    RayAim& aim,
-    std::uint32_t sectors = ~std::uint32_t(0)) const
-  {
     const bool hull = this->Hull && !this->Hull->Marks.empty();
     const int cell = hull ? this->Hull->Cell(aim.Focal, *this->Layout) : -1;
     // With a proxy, the stretch [enter, leave] of the ray that its walk may

@@ -43,10 +43,7 @@
  * batch of rays (SamplerLookup does): a type Aimed, AimBatch(o, d, count,
  * Aimed*, bool* aimed) (the geometry of the rays o + s d[i] through pixels
  * of one row, in order; aimed[i] false: no sample), Sample(o, d, Aimed&,
- * RaySamples&) (Gather's result) and FocalDepth(o, const Aimed&); such a
- * lookup also takes over the focal point that the walk of a ray's intervals
- * found before looking one up: FocalParameter(o, d, Aimed&) keeps it,
- * Gather(o, d, Aimed&, RaySamples&) gathers there (SegmentWalk).
+ * RaySamples&) (Gather's result) and FocalDepth(o, const Aimed&).
  *
  * A lookup sees the first surface along the whole line of a warped ray, not
  * only along its interval, and it samples the cameras at the line's focal
@@ -1085,35 +1082,14 @@ struct SamplerLookup
   }
   double FocalParameter(const glm::dvec3& o, const glm::dvec3& d) const
   {
-    RayAim aim;
-    return this->FocalParameter(o, d, aim);
-  }
-  /// FocalParameter() that keeps the focal point in aim.Focal, for Gather(o, d, aim, out).
-  double FocalParameter(const glm::dvec3& o, const glm::dvec3& d, RayAim& aim) const
-  {
-    aim.Focal = FocalPoint(this->Sampler.Layout->Cyl, o, d, this->Sampler.FocalDistance);
-    return glm::dot(aim.Focal - o, d) / glm::dot(d, d);
-  }
-  /// Gather() of a ray whose focal point FocalParameter(o, d, aim) kept in `aim`.
-  bool Gather(const glm::dvec3& o, const glm::dvec3& d, RayAim& aim, RaySamples& out) const
-  {
-    return this->Sampler.GatherFocused(o, d, aim, out);
+    return glm::dot(
+             FocalPoint(this->Sampler.Layout->Cyl, o, d, this->Sampler.FocalDistance) - o, d) /
+      glm::dot(d, d);
   }
 };
 
 namespace detail
 {
-/// Whether `Lookup` gathers in two stages (Aim(), Sample(); RenderPlainViews),
-/// and so can hand a focal point found before the lookup over to it (SegmentWalk).
-template<typename Lookup, typename = void>
-struct Staged : std::false_type
-{
-};
-template<typename Lookup>
-struct Staged<Lookup, std::void_t<typename Lookup::Aimed>> : std::true_type
-{
-};
-
 /**
  * The light field's samples along the view ray itself, gathered at most once
  * per ray: a box that did not move warps the ray onto itself, so every
@@ -1312,23 +1288,6 @@ inline std::size_t PiecesLeftOut(double focal, std::size_t following)
 }
 
 /**
- * The focal point that SegmentWalk::Focal() found for the warped ray of
- * interval `Entry`, kept for its lookup by a Lookup that gathers in two
- * stages (Staged; SamplerLookup::Gather(o, d, aim, out)): the lookup does not
- * find it again. Empty for other lookups.
- */
-template<typename Lookup, bool = Staged<Lookup>::value>
-struct FocusedInterval
-{
-};
-template<typename Lookup>
-struct FocusedInterval<Lookup, true>
-{
-  const BoxSegment* Entry = nullptr;
-  typename Lookup::Aimed Aim;
-};
-
-/**
  * One ray's walk through its intervals, front to back (ShadeSegments):
  * composited by label coverage (RenderViewSettings::AntiAliasing) into
  * Composite; the first interval whose warped ray shows its box's label
@@ -1367,7 +1326,6 @@ struct SegmentWalk
   RaySamples Samples;
   bool Matched = false;
   DeferredMatch Held;
-  FocusedInterval<Lookup> Focused;
 
   /// Past the match, only what still shows through is looked up.
   bool Going() const
@@ -1382,38 +1340,14 @@ struct SegmentWalk
    * for a box that did not move). Beyond 1, the lookup of `entry` waits for
    * the next interval; in [0, 1], `entry` holds its run's focal point.
    */
-  double Focal(const BoxSegment& entry)
+  double Focal(const BoxSegment& entry) const
   {
     if (!this->Settings.FocalBeforeLookup || !this->Boxes[entry.Box].Moved)
     {
       return std::numeric_limits<double>::quiet_NaN();
     }
     const WarpedSegment& segment = entry.Segment;
-    const glm::dvec3 direction = segment.RestExit - segment.RestEnter;
-    if constexpr (Staged<Lookup>::value)
-    {
-      this->Focused.Entry = &entry;
-      return this->Light.FocalParameter(segment.RestEnter, direction, this->Focused.Aim);
-    }
-    else
-    {
-      return this->Light.FocalParameter(segment.RestEnter, direction);
-    }
-  }
-
-  /// Looks the warped ray of `entry` (rest direction `direction`) up into
-  /// Samples, at the focal point Focal() found for it if it did.
-  bool Gather(const BoxSegment& entry, const glm::dvec3& direction)
-  {
-    if constexpr (Staged<Lookup>::value)
-    {
-      if (this->Focused.Entry == &entry)
-      {
-        return this->Light.Gather(
-          entry.Segment.RestEnter, direction, this->Focused.Aim, this->Samples);
-      }
-    }
-    return this->Light.Gather(entry.Segment.RestEnter, direction, this->Samples);
+    return this->Light.FocalParameter(segment.RestEnter, segment.RestExit - segment.RestEnter);
   }
 
   bool Continues(const BoxSegment& entry, const BoxSegment& next) const
@@ -1461,7 +1395,8 @@ struct SegmentWalk
     }
     else
     {
-      if (glm::dot(direction, direction) <= 0.0 || !this->Gather(entry, direction))
+      if (glm::dot(direction, direction) <= 0.0 ||
+        !this->Light.Gather(segment.RestEnter, direction, this->Samples))
       {
         return;
       }
@@ -1870,6 +1805,19 @@ ViewSample RenderView(const FrameCage& cage,
 
 /// The most rays RenderPlainViews takes at once.
 constexpr int MaximumPlainBatch = LightFieldSampler::MaximumBatch;
+
+namespace detail
+{
+/// Whether `Lookup` gathers in two stages (Aim(), Sample(); RenderPlainViews).
+template<typename Lookup, typename = void>
+struct Staged : std::false_type
+{
+};
+template<typename Lookup>
+struct Staged<Lookup, std::void_t<typename Lookup::Aimed>> : std::true_type
+{
+};
+} // namespace detail
 
 /**
  * RenderView for the rays through the pixels (xs[i], y), i < count <=
