@@ -617,35 +617,41 @@ struct FrameCage
       scratch.Held.assign(this->Boxes->size(), 0);
       scratch.Ray = 1;
     }
+    // The boxes whose projected hull holds the pixel, in order of their
+    // oriented entries (EnterOriented). A ray whose pixel one box's hull
+    // holds (most rays that meet a box of the swim) has nothing to order,
+    // and about always meets the bounds: a ray through the projected hull of
+    // the corners meets their convex hull, which the bounds hold. Its box is
+    // held back, and goes to the warp without the entry unless a second box
+    // comes (the swim's frame 153.1 -> 150.6 M instructions).
+    int alone = -1; // the first box's place in the tile while it is the only one
+    bool several = false;
     for (int i = this->TileStart[tile]; i < this->TileStart[tile + 1]; ++i)
     {
       const int b = this->TileBoxes[i];
-      if (this->Hulls[b].MayHold(x, y, this->TileHulls[i].Box))
+      if (!this->Hulls[b].MayHold(x, y, this->TileHulls[i].Box))
       {
-        scratch.Held[b] = scratch.Ray;
-        scratch.Entries.push_back({ 0.0, b, i });
+        continue;
       }
-    }
-    // The boxes in order of their oriented entries, those whose bounds the
-    // ray misses dropped (the widened bounds hold the box: a ray that meets
-    // only them, by less than their margin, crosses the box for no interval
-    // the warp keeps). A ray whose pixel one box's hull holds (most rays
-    // that meet a box of the swim) has nothing to order, and about always
-    // meets the bounds: a ray through the projected hull of the corners meets
-    // their convex hull, which the bounds hold; it goes straight to the warp
-    // (the swim's frame 153.1 -> 150.6 M instructions).
-    if (scratch.Entries.size() > 1)
-    {
-      std::size_t kept = 0;
-      for (const WalkEntry& entry : scratch.Entries)
+      scratch.Held[b] = scratch.Ray;
+      if (!several)
       {
-        double oriented = 0.0;
-        if (this->Oriented[entry.Box].Entry(d, oriented))
+        if (alone < 0)
         {
-          scratch.Entries[kept++] = { oriented, entry.Box, entry.Listed };
+          alone = i;
+          continue;
         }
+        several = true;
+        this->EnterOriented(alone, d, scratch);
       }
-      scratch.Entries.resize(kept);
+      this->EnterOriented(i, d, scratch);
+    }
+    if (!several && alone >= 0)
+    {
+      scratch.Entries.push_back({ 0.0, this->TileBoxes[alone], alone });
+    }
+    else if (scratch.Entries.size() > 1)
+    {
       std::sort(scratch.Entries.begin(), scratch.Entries.end());
     }
     if (scratch.Entries.empty())
@@ -773,6 +779,23 @@ struct FrameCage
   }
 
 private:
+  /**
+   * Appends the box listed at `i` in TileBoxes to scratch.Entries, with where
+   * the ray from the eye in direction `d` enters its oriented bounds, unless
+   * the ray misses them: the widened bounds hold the box, so a ray that
+   * meets only them (by less than their margin) crosses the box for no
+   * interval the warp keeps.
+   */
+  void EnterOriented(int i, const glm::dvec3& d, FrameRayScratch& scratch) const
+  {
+    const int b = this->TileBoxes[i];
+    double oriented = 0.0;
+    if (this->Oriented[b].Entry(d, oriented))
+    {
+      scratch.Entries.push_back({ oriented, b, i });
+    }
+  }
+
   /// Neighbors: faces whose 4 deformed corners are the same points, paired.
   void LinkFaces(const std::vector<RenderBox>& boxes)
   {
