@@ -377,8 +377,9 @@ struct HullsInTile
 struct OrientedBounds
 {
   glm::dmat3 ToAxes{ 1.0 }; ///< world to the axes' frame (rows: the unit axes)
-  glm::dvec3 Eye{ 0.0 };    ///< the eye in the axes' frame
-  AxisBounds Bounds{ glm::dvec3(0.0), glm::dvec3(0.0) }; ///< the corners', in that frame
+  /// The corners' bounds in that frame, less the eye's image there: the
+  /// rays of a frame leave the eye, and their entry needs no more.
+  AxisBounds Bounds{ glm::dvec3(0.0), glm::dvec3(0.0) };
 
   /**
    * The bounds of `box` along its axes (its mean edges, orthonormalised from
@@ -405,7 +406,6 @@ struct OrientedBounds
       // glm matrices are column-major: the transpose has the axes as rows.
       oriented.ToAxes = glm::transpose(glm::dmat3(a0, a1, glm::cross(a0, a1)));
     }
-    oriented.Eye = oriented.ToAxes * eye;
     Hexahedron local;
     for (int k = 0; k < 8; ++k)
     {
@@ -414,20 +414,26 @@ struct OrientedBounds
     oriented.Bounds = BoxBounds(local);
     oriented.Bounds.Min -= glm::dvec3(margin);
     oriented.Bounds.Max += glm::dvec3(margin);
+    // (The slab test's differences to the eye, once per frame: the same values.)
+    const glm::dvec3 axesEye = oriented.ToAxes * eye;
+    oriented.Bounds.Min -= axesEye;
+    oriented.Bounds.Max -= axesEye;
     return oriented;
   }
 
   /// Where the ray from the eye in direction `d` enters the bounds (false: it misses them).
   bool Entry(const glm::dvec3& d, double& tEnter) const
   {
-    return RayEntersBounds(this->Eye, this->ToAxes * d, this->Bounds, tEnter);
+    return RayEntersBounds(glm::dvec3(0.0), this->ToAxes * d, this->Bounds, tEnter);
   }
 };
 
 /// A box a ray of a frame may meet (FrameCage::StartWalk).
 struct WalkEntry
 {
-  double T; ///< where the ray enters the box's widened oriented bounds
+  /// Where the ray enters the box's widened oriented bounds (0 for a ray's
+  /// only box: there is nothing to order, see FrameCage::StartWalk).
+  double T;
   int Box;
   int Listed; ///< the box's place in the ray's tile (FrameCage::TileBoxes)
 
@@ -612,6 +618,15 @@ struct FrameCage
       scratch.Held.assign(this->Boxes->size(), 0);
       scratch.Ray = 1;
     }
+    // The boxes whose projected hull holds the pixel, in order of their
+    // oriented entries (EnterOriented). A ray whose pixel one box's hull
+    // holds (most rays that meet a box of the swim) has nothing to order,
+    // and about always meets the bounds: a ray through the projected hull of
+    // the corners meets their convex hull, which the bounds hold. Its box is
+    // held back, and goes to the warp without the entry unless a second box
+    // comes (the swim's frame 154.6 -> 152.7 M instructions).
+    int alone = -1; // the first box's place in the tile while it is the only one
+    bool several = false;
     for (int i = this->TileStart[tile]; i < this->TileStart[tile + 1]; ++i)
     {
       const int b = this->TileBoxes[i];
@@ -620,21 +635,29 @@ struct FrameCage
         continue;
       }
       scratch.Held[b] = scratch.Ray;
-      // The widened bounds hold the box: a ray that meets only them (by less
-      // than their margin) crosses the box for no interval the warp keeps.
-      double oriented = 0.0;
-      if (this->Oriented[b].Entry(d, oriented))
+      if (!several)
       {
-        scratch.Entries.push_back({ oriented, b, i });
+        if (alone < 0)
+        {
+          alone = i;
+          continue;
+        }
+        several = true;
+        this->EnterOriented(alone, d, scratch);
       }
+      this->EnterOriented(i, d, scratch);
+    }
+    if (!several && alone >= 0)
+    {
+      scratch.Entries.push_back({ 0.0, this->TileBoxes[alone], alone });
+    }
+    else if (scratch.Entries.size() > 1)
+    {
+      std::sort(scratch.Entries.begin(), scratch.Entries.end());
     }
     if (scratch.Entries.empty())
     {
       return 0;
-    }
-    if (scratch.Entries.size() > 1) // (most rays that meet a box of the swim meet one)
-    {
-      std::sort(scratch.Entries.begin(), scratch.Entries.end());
     }
     scratch.RunSkipped = nullptr;
     scratch.Landing = -1;
@@ -757,6 +780,23 @@ struct FrameCage
   }
 
 private:
+  /**
+   * Appends the box listed at `i` in TileBoxes to scratch.Entries, with where
+   * the ray from the eye in direction `d` enters its oriented bounds, unless
+   * the ray misses them: the widened bounds hold the box, so a ray that
+   * meets only them (by less than their margin) crosses the box for no
+   * interval the warp keeps.
+   */
+  void EnterOriented(int i, const glm::dvec3& d, FrameRayScratch& scratch) const
+  {
+    const int b = this->TileBoxes[i];
+    double oriented = 0.0;
+    if (this->Oriented[b].Entry(d, oriented))
+    {
+      scratch.Entries.push_back({ oriented, b, i });
+    }
+  }
+
   /// Neighbors: faces whose 4 deformed corners are the same points, paired.
   void LinkFaces(const std::vector<RenderBox>& boxes)
   {

@@ -429,7 +429,8 @@ void TiltedSlabs()
   {
     const lfd::AxisBounds& bounds = boxes[b].Bounds;
     const glm::dvec3 margin(1e-6 * glm::distance(bounds.Min, bounds.Max));
-    unoriented.Oriented[b] = { glm::dmat3(1.0), eye, { bounds.Min - margin, bounds.Max + margin } };
+    unoriented.Oriented[b] = { glm::dmat3(1.0),
+      { bounds.Min - margin - eye, bounds.Max + margin - eye } };
   }
   lfd::RenderViewSettings settings = SettingsFor(boxes);
   settings.FocalBeforeLookup = true;
