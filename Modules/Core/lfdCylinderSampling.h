@@ -136,6 +136,56 @@ inline int RoundHalfAway(double v)
 }
 
 /**
+ * The index of the first of the largest of `values[0, Count)` (`values`
+ * 16-byte aligned), the one a scan for a strictly
+ * larger value keeps; -1 when none is larger than -infinity. NaN is never
+ * chosen. With SSE2, two values a vector and without a branch per value
+ * (a scan's branches, taken as the data fall, are mispredicted often): the
+ * maximum, then the first lane equal to it.
+ */
+template<int Count>
+inline int FirstLargest(const double* values)
+{
+  static_assert(Count % 2 == 0 && Count <= 32, "pairs, and a bit per value in an int");
+  constexpr double none = -std::numeric_limits<double>::infinity();
+#if defined(__SSE2__)
+  // Two maxima in turn (two chains), then the first lane equal to the
+  // largest. maxpd returns its second operand where either is NaN: NaN
+  // never enters.
+  __m128d even = _mm_set1_pd(none);
+  __m128d odd = even;
+  for (int i = 0; i < Count; i += 4)
+  {
+    even = _mm_max_pd(_mm_load_pd(values + i), even);
+    odd = i + 2 < Count ? _mm_max_pd(_mm_load_pd(values + i + 2), odd) : odd;
+  }
+  __m128d largest = _mm_max_pd(even, odd);
+  largest = _mm_max_pd(largest, _mm_unpackhi_pd(largest, largest));
+  if (!(_mm_cvtsd_f64(largest) > none))
+  {
+    return -1;
+  }
+  largest = _mm_unpacklo_pd(largest, largest);
+  int equal = 0;
+  for (int i = 0; i < Count; i += 2)
+  {
+    equal |= _mm_movemask_pd(_mm_cmpeq_pd(_mm_load_pd(values + i), largest)) << i;
+  }
+  return __builtin_ctz(equal);
+#else
+  int first = -1;
+  double largest = none;
+  for (int i = 0; i < Count; ++i)
+  {
+    const bool larger = values[i] > largest;
+    first = larger ? i : first;
+    largest = larger ? values[i] : largest;
+  }
+  return first;
+#endif
+}
+
+/**
  * The bilinear footprint of the continuous position `uv` (pixel centres at
  * integers) in a width x height image: its top-left pixel (x0, y0), which
  * may lie outside the image by one, and the fraction uv - (x0, y0). False
@@ -353,7 +403,10 @@ struct RingRow
 
   /// The number of views whose azimuth is at most `azimuth`
   /// (std::upper_bound's index).
-  std::size_t Upper(double azimuth) const
+  /// Always inlined, as BracketAzimuth() and ChooseViews(): AimBatch's
+  /// stages are one large function, where GCC's growth limits otherwise
+  /// leave one of the three a call per ray, whichever changes elsewhere tip.
+  __attribute__((always_inline)) std::size_t Upper(double azimuth) const
   {
     // From the azimuth's bucket (without Index(), from the first view):
     // with 4 buckets per view, most rays' answer is their bucket's, the
@@ -409,7 +462,10 @@ struct WeightedView
  * The two views of a row around `azimuth`, linearly weighted by angular
  * distance (the row wraps around). Returns how many were written (0..2).
  */
-inline int BracketAzimuth(const RingRow& row, double azimuth, double rowWeight, WeightedView out[2])
+__attribute__((always_inline)) inline int BracketAzimuth(const RingRow& row,
+  double azimuth,
+  double rowWeight,
+  WeightedView out[2])
 {
   const std::size_t n = row.Azimuth.size();
   if (n == 0)
@@ -447,7 +503,10 @@ inline int BracketAzimuth(const RingRow& row, double azimuth, double rowWeight, 
  * The (up to) four cameras around an azimuth and height: two per row in the
  * one or two rows around the height (clamped to the outermost row).
  */
-inline int ChooseViews(const RingLayout& layout, double azimuth, double height, WeightedView out[4])
+__attribute__((always_inline)) inline int ChooseViews(const RingLayout& layout,
+  double azimuth,
+  double height,
+  WeightedView out[4])
 {
   const std::size_t rows = layout.Rows.size();
   if (rows == 0)
@@ -640,7 +699,7 @@ struct LabelHull
   /// the ray's azimuth is known.
   std::vector<std::uint32_t> Union;
   /// Per sector, its marks united with its two neighbours' (Unite()): the
-  /// proxy's candidate cameras (LightFieldSampler::ProxyCandidates, 4 per
+  /// proxy's candidate cameras (LightFieldSampler::FindProxyCandidates, 4 per
   /// row around the azimuth) use up the margin of one view that MarkSector
   /// leaves on each side for rounding, so the proxy's test takes it from the
   /// neighbouring sectors instead (see MaySeePart()).
@@ -1408,7 +1467,7 @@ struct LightFieldSampler
   /// Where rays may meet a part (LabelHull); null or empty: no ray is
   /// skipped. Only meaningful with labels (Gather).
   const LabelHull* Hull = nullptr;
-  /// Per view, its camera's Center() (ProxyCandidates computes each
+  /// Per view, its camera's Center() (FindProxyCandidates computes each
   /// candidate's angle from it, for every ray); null: computed per ray.
   const glm::dvec3* CameraCenters = nullptr;
   /// Views blended on the proxy surface (k of GatherOnSurface, 1..4).
@@ -1445,13 +1504,13 @@ struct LightFieldSampler
    * of GatherOnSurface, bilinear lookups at a point X = o + s d with s in
    * the stretch [enter, leave] (SurfaceStretch(); IntersectDepthMap only
    * walks, and interpolates its crossing, within it), in cameras among
-   * ProxyCandidates (the 4 views around the azimuth in each of the rows
+   * FindProxyCandidates (the 4 views around the azimuth in each of the rows
    * searched), or (b) the plane fallback's, at the focal point x in the
    * views of ChooseViews. The Hull marks a voxel of a sector's grid when the
    * label cone of any view that may be chosen for an azimuth in the sector,
    * in any row, comes within a bilinear footprint of it (a conservative
    * bound of the voxel's bounding sphere); a sector's Wide marks add its
-   * neighbours', which holds every ProxyCandidates view however the
+   * neighbours', which holds every FindProxyCandidates view however the
    * sector's bounds round. So a labelled sample at X needs X in a voxel
    * marked in Wide (MaySeePart() walks every voxel the stretch crosses,
    * with a margin for rounding), and one at x needs x's voxel marked
@@ -1807,10 +1866,16 @@ struct LightFieldSampler
   void AddBilinear(int view, double weight, const glm::dvec3& x, RaySamples& out) const
   {
     glm::dvec2 uv;
-    if (!this->Project(view, x, uv))
+    if (this->Project(view, x, uv))
     {
-      return;
+      this->AddBilinearAt(view, weight, uv, out);
     }
+  }
+
+  /// AddBilinear() at `uv`, the projection of its point into `view`
+  /// (Project()), for a caller that has projected it already.
+  void AddBilinearAt(int view, double weight, const glm::dvec2& uv, RaySamples& out) const
+  {
     const int width = this->Radiance.Width;
     const int height = this->Radiance.Height;
     int x0, y0;
@@ -2111,39 +2176,32 @@ struct LightFieldSampler
     }
     const glm::dvec3 x = o + surface * d;
     const glm::dvec3 toEye = -glm::normalize(d);
-    ProxyCandidate candidates[16];
-    const int n = this->ProxyCandidates(azimuth, height, x, toEye, candidates);
+    ProxyCandidates candidates;
+    this->FindProxyCandidates(azimuth, height, x, toEye, candidates);
     // The visible candidates, nearest first (ties in the order of
-    // ProxyCandidates), up to one more than blended. Each is the nearest of
-    // those not examined yet, picked when it is needed: a ray examines about
-    // 4 of its 12 candidates, so neither sorting them all nor the penalties
-    // of the others pay. (The running maximum, not the nearest's index,
-    // carries the scan: one maxsd per candidate on its critical path.)
+    // FindProxyCandidates), up to one more than blended. Each is the nearest
+    // of those not examined yet, picked when it is needed: a ray examines
+    // about 4 of its 12 candidates, so neither sorting them all nor the
+    // penalties of the others pay. A chosen one keeps its projection for
+    // AddBilinearAt().
     const int k = std::clamp(this->ProxyViews, 1, 4);
     struct Chosen
     {
       double Penalty;
       int View;
+      glm::dvec2 Pixel;
     };
     Chosen chosen[5];
     int visible = 0;
-    constexpr double examined = -std::numeric_limits<double>::infinity();
     while (visible <= k)
     {
-      int nearest = -1;
-      double nearness = examined;
-      for (int i = 0; i < n; ++i)
-      {
-        const bool nearer = candidates[i].Nearness > nearness;
-        nearest = nearer ? i : nearest;
-        nearness = nearer ? candidates[i].Nearness : nearness;
-      }
+      const int nearest = FirstLargest<ProxyCandidates::Maximum>(candidates.Nearness);
       if (nearest < 0)
       {
         break;
       }
-      candidates[nearest].Nearness = examined;
-      const int view = candidates[nearest].View;
+      candidates.Nearness[nearest] = -std::numeric_limits<double>::infinity(); // examined
+      const int view = candidates.View[nearest];
       glm::dvec2 uv;
       double z; // X's camera z, for the visibility test
       if (!this->Project(view, x, uv, z))
@@ -2168,8 +2226,9 @@ struct LightFieldSampler
         }
       }
       // ULR's angular penalty: the chord between the unit directions.
-      chosen[visible++] = { glm::distance(glm::normalize(this->CameraCenter(view) - x), toEye),
-        view };
+      chosen[visible++] = {
+        glm::distance(glm::normalize(candidates.ToCamera[nearest]), toEye), view, uv
+      };
     }
     if (visible == 0)
     {
@@ -2192,7 +2251,7 @@ struct LightFieldSampler
     }
     for (int i = 0; i < blended; ++i)
     {
-      this->AddBilinear(chosen[i].View, weights[i] / total, x, out);
+      this->AddBilinearAt(chosen[i].View, weights[i] / total, chosen[i].Pixel, out);
     }
     // Near a silhouette the depth maps are least certain (one depth per
     // pixel, nearest pixel): where the focused samples vote for background,
@@ -2224,28 +2283,37 @@ struct LightFieldSampler
       o, d, AxisBounds{ this->SurfaceLow, this->SurfaceHigh }, enter, leave);
   }
 
-  /// A candidate camera of GatherOnSurface (ProxyCandidates()).
-  struct ProxyCandidate
+  /**
+   * The candidate cameras of GatherOnSurface (FindProxyCandidates()), as arrays
+   * so that the search for the nearest runs two candidates a vector
+   * (FirstLargest()).
+   */
+  struct ProxyCandidates
   {
-    int View;
+    static constexpr int Maximum = 16;
     /// The squared cosine, with its sign, of the angle at the surface point
     /// between the directions to the camera and to the eye: the larger, the
     /// smaller ULR's angular penalty (the chord 2 sin(angle / 2)), without
-    /// the penalty's square roots.
-    double Nearness;
+    /// the penalty's square roots. (NaN, at a camera's centre: never
+    /// chosen.) -infinity beyond Count: FirstLargest() reads all Maximum.
+    alignas(16) double Nearness[Maximum];
+    int View[Maximum];
+    /// From the surface point to the camera's centre, for the penalty.
+    glm::dvec3 ToCamera[Maximum];
+    int Count = 0;
   };
 
   /**
    * The candidate cameras of GatherOnSurface: in each row from the one below
    * `height` minus one to the one above plus one, the 4 views around
    * `azimuth` (all of a row of fewer), each with its nearness in angle at
-   * `x` to the unit direction `toEye`. Returns their number (at most 16).
+   * `x` to the unit direction `toEye`, into `out`.
    */
-  int ProxyCandidates(double azimuth,
+  void FindProxyCandidates(double azimuth,
     double height,
     const glm::dvec3& x,
     const glm::dvec3& toEye,
-    ProxyCandidate* out) const
+    ProxyCandidates& out) const
   {
     const int rows = static_cast<int>(this->Layout->Rows.size());
     int below = 0;
@@ -2262,8 +2330,7 @@ struct LightFieldSampler
       {
         continue;
       }
-      const int upper = static_cast<int>(
-        std::upper_bound(row.Azimuth.begin(), row.Azimuth.end(), azimuth) - row.Azimuth.begin());
+      const int upper = static_cast<int>(row.Upper(azimuth));
       // The first of the 4 (cyclically); the others wrap at most once.
       const int start = ((upper - 2) % views + views) % views;
       for (int i = 0; i < std::min(views, 4); ++i)
@@ -2272,10 +2339,15 @@ struct LightFieldSampler
         const int view = row.View[index < views ? index : index - views];
         const glm::dvec3 toCamera = this->CameraCenter(view) - x;
         const double along = glm::dot(toCamera, toEye);
-        out[n++] = { view, along * std::abs(along) / glm::dot(toCamera, toCamera) };
+        out.Nearness[n] = along * std::abs(along) / glm::dot(toCamera, toCamera);
+        out.View[n] = view;
+        out.ToCamera[n++] = toCamera;
       }
     }
-    return n;
+    out.Count = n;
+    std::fill(out.Nearness + n,
+      out.Nearness + ProxyCandidates::Maximum,
+      -std::numeric_limits<double>::infinity());
   }
 
   /// The centre of `view`'s camera (from CameraCenters when given).

@@ -360,7 +360,7 @@ bool CountSkip(lfd::LightFieldSampler& sampler,
 // inside the sampler's surface bounds meets no part, else 0; `seen` counts
 // the labelled samples of such a stretch all the same: at 64 points along
 // it, bilinear lookups in every view GatherOnSurface may blend there
-// (ProxyCandidates).
+// (FindProxyCandidates).
 int ProvenStretch(const lfd::LightFieldSampler& sampler,
   const lfd::LabelHull& hull,
   const glm::dvec3& o,
@@ -381,12 +381,12 @@ int ProvenStretch(const lfd::LightFieldSampler& sampler,
   for (int k = 0; k <= 64; ++k)
   {
     const glm::dvec3 x = o + (enter + (leave - enter) * k / 64.0) * d;
-    lfd::LightFieldSampler::ProxyCandidate candidates[16];
-    const int n = sampler.ProxyCandidates(azimuth, height, x, -glm::normalize(d), candidates);
-    for (int c = 0; c < n; ++c)
+    lfd::LightFieldSampler::ProxyCandidates candidates;
+    sampler.FindProxyCandidates(azimuth, height, x, -glm::normalize(d), candidates);
+    for (int c = 0; c < candidates.Count; ++c)
     {
       lfd::RaySamples samples;
-      sampler.AddBilinear(candidates[c].View, 1.0, x, samples);
+      sampler.AddBilinear(candidates.View[c], 1.0, x, samples);
       for (int i = 0; i < samples.Count; ++i)
       {
         seen += samples.Samples[i].Label > 0 ? 1 : 0;
