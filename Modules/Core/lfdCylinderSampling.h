@@ -1992,14 +1992,18 @@ struct LightFieldSampler
    */
   bool DepthPixel(const glm::dvec2& uv, int& x, int& y) const
   {
-    // Also keeps NaN and far points from the conversions below.
-    if (!(uv.x > -1.0 && uv.y > -1.0 && uv.x < this->Depth.Width && uv.y < this->Depth.Height))
+    // A coordinate rounds (halves away from zero) into [0, n) exactly when
+    // it lies in (-0.5, n - 0.5): one test instead of one before and one
+    // after the rounding. It also keeps NaN and far points from the
+    // conversions below.
+    if (!(uv.x > -0.5 && uv.y > -0.5 && uv.x < this->Depth.Width - 0.5 &&
+          uv.y < this->Depth.Height - 0.5))
     {
       return false;
     }
     x = RoundHalfAway(uv.x);
     y = RoundHalfAway(uv.y);
-    return x >= 0 && y >= 0 && x < this->Depth.Width && y < this->Depth.Height;
+    return true;
   }
 
   /**
