@@ -1395,6 +1395,14 @@ struct NearestDepthTiles
     const int y1 = static_cast<int>(std::min(high.y, this->Height - 1.0)) / Size;
     const float* tiles =
       this->Depth.data() + static_cast<std::size_t>(view) * this->Columns * this->Rows;
+    if (x1 - x0 <= 1 && y1 - y0 <= 1)
+    {
+      // Most boxes (a walk of a step or two, and its margin) hold 2 x 2
+      // tiles or fewer: their 4 corner tiles, a tile counted twice where
+      // the box spans one, without the loops' branches.
+      return std::min(std::min(tiles[y0 * this->Columns + x0], tiles[y0 * this->Columns + x1]),
+        std::min(tiles[y1 * this->Columns + x0], tiles[y1 * this->Columns + x1]));
+    }
     float nearest = std::numeric_limits<float>::infinity();
     for (int y = y0; y <= y1; ++y)
     {
@@ -1984,14 +1992,18 @@ struct LightFieldSampler
    */
   bool DepthPixel(const glm::dvec2& uv, int& x, int& y) const
   {
-    // Also keeps NaN and far points from the conversions below.
-    if (!(uv.x > -1.0 && uv.y > -1.0 && uv.x < this->Depth.Width && uv.y < this->Depth.Height))
+    // A coordinate rounds (halves away from zero) into [0, n) exactly when
+    // it lies in (-0.5, n - 0.5): one test instead of one before and one
+    // after the rounding. It also keeps NaN and far points from the
+    // conversions below.
+    if (!(uv.x > -0.5 && uv.y > -0.5 && uv.x < this->Depth.Width - 0.5 &&
+          uv.y < this->Depth.Height - 0.5))
     {
       return false;
     }
     x = RoundHalfAway(uv.x);
     y = RoundHalfAway(uv.y);
-    return x >= 0 && y >= 0 && x < this->Depth.Width && y < this->Depth.Height;
+    return true;
   }
 
   /**
