@@ -42,6 +42,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <utility>
 #include <vector>
 
 /// Whether LightFieldSampler::AimBatch has a version for AVX2 (GCC and
@@ -285,8 +286,10 @@ inline void LoadTexelPair(const std::uint8_t* p,
  * each lane does the scalar path's operations in its order, so both give
  * the same bits where neither is contracted into fused multiply-adds (the
  * baseline has none; GCC contracts C++ by default where they exist).
+ * Always inlined: the lookup loops it sits in are large enough that GCC's
+ * growth limits would otherwise leave it a call per sample.
  */
-inline void BlendTexels(const std::uint8_t* top,
+__attribute__((always_inline)) inline void BlendTexels(const std::uint8_t* top,
   const std::uint8_t* bottom,
   double ax,
   double ay,
@@ -315,20 +318,19 @@ inline void BlendTexels(const std::uint8_t* top,
 }
 
 /**
- * Calls add(px, py, weight) for the (up to) 4 pixels of a width x height
- * image around the continuous position `uv` (pixel centres at integers),
- * with their bilinear weights; pixels outside the image and zero weights are
- * skipped. One bilinear lookup for every sampler (ring and two-plane).
+ * Calls add(px, py, weight) for the (up to) 4 pixels of the bilinear
+ * footprint at (x0, y0) with the fraction `fraction` (BilinearFootprint())
+ * in a width x height image, with their bilinear weights; pixels outside the
+ * image and zero weights are skipped.
  */
 template<typename Add>
-inline void ForEachBilinearPixel(const glm::dvec2& uv, int width, int height, Add&& add)
+inline void ForEachFootprintPixel(int x0,
+  int y0,
+  const glm::dvec2& fraction,
+  int width,
+  int height,
+  Add&& add)
 {
-  int x0, y0;
-  glm::dvec2 fraction;
-  if (!BilinearFootprint(uv, width, height, x0, y0, fraction))
-  {
-    return;
-  }
   double weights[4];
   BilinearWeights(fraction, weights);
   for (int corner = 0; corner < 4; ++corner)
@@ -339,6 +341,23 @@ inline void ForEachBilinearPixel(const glm::dvec2& uv, int width, int height, Ad
     {
       add(px, py, weights[corner]);
     }
+  }
+}
+
+/**
+ * Calls add(px, py, weight) for the (up to) 4 pixels of a width x height
+ * image around the continuous position `uv` (pixel centres at integers),
+ * with their bilinear weights; pixels outside the image and zero weights are
+ * skipped. One bilinear lookup for every sampler (ring and two-plane).
+ */
+template<typename Add>
+inline void ForEachBilinearPixel(const glm::dvec2& uv, int width, int height, Add&& add)
+{
+  int x0, y0;
+  glm::dvec2 fraction;
+  if (BilinearFootprint(uv, width, height, x0, y0, fraction))
+  {
+    ForEachFootprintPixel(x0, y0, fraction, width, height, std::forward<Add>(add));
   }
 }
 
@@ -1549,11 +1568,17 @@ struct LightFieldSampler
    * stage is a long dependent chain of divisions and square roots, and the
    * chains of neighbouring rays then overlap in the processor.
    */
-  bool Aim(const glm::dvec3& o,
-    const glm::dvec3& d,
-    RayAim& aim,
+  bool Aim(const glm::dvec3& origin,
+    const glm::dvec3& direction,
+    RayAim& __restrict aim,
     std::uint32_t sectors = ~std::uint32_t(0)) const
   {
+    // The ray in locals and `aim` declared unaliased: otherwise each store
+    // into `aim` (its doubles might be the ray's, or the layout's) has the
+    // compiler load them again and redo the products that FocalPoint() and
+    // Entry() share (o - Center, d . Axis, ...): -23 instructions a ray.
+    const glm::dvec3 o = origin;
+    const glm::dvec3 d = direction;
     aim.Focal = FocalPoint(this->Layout->Cyl, o, d, this->FocalDistance);
     const bool hull = this->Hull && !this->Hull->Marks.empty();
     const int cell = hull ? this->Hull->Cell(aim.Focal, *this->Layout) : -1;
@@ -1882,16 +1907,55 @@ struct LightFieldSampler
 
   /// AddBilinear() at `uv`, the projection of its point into `view`
   /// (Project()), for a caller that has projected it already.
-  void AddBilinearAt(int view, double weight, const glm::dvec2& uv, RaySamples& out) const
+  __attribute__((always_inline)) void AddBilinearAt(int view,
+    double weight,
+    const glm::dvec2& uv,
+    RaySamples& out) const
   {
     const int width = this->Radiance.Width;
-    const int height = this->Radiance.Height;
     int x0, y0;
     glm::dvec2 a;
-    if (!BilinearFootprint(uv, width, height, x0, y0, a))
+    if (!BilinearFootprint(uv, width, this->Radiance.Height, x0, y0, a))
     {
       return;
     }
+    // Most footprints lie inside the view, in memory, with one label: their
+    // sample is taken here, and the others in AddFootprint(), out of line,
+    // so that this path saves no registers and stores no label.
+    if (x0 >= 0 && y0 >= 0 && x0 + 1 < width && y0 + 1 < this->Radiance.Height &&
+      this->Radiance.Data && (this->Labels.Data || !this->Labels.Present()))
+    {
+      // Rows in VTK order: y0 + 1 is the row before y0's.
+      const std::size_t first = this->Radiance.Index(view, x0, y0);
+      const std::size_t below = first - width;
+      const std::uint8_t* labels = this->Labels.Data;
+      const int label = labels ? labels[first] : 0;
+      if (!labels ||
+        (labels[first + 1] == label && labels[below] == label && labels[below + 1] == label))
+      {
+        AddBlended(
+          this->Radiance.Data + 3 * first, this->Radiance.Data + 3 * below, a, weight, label, out);
+        return;
+      }
+    }
+    this->AddFootprint(view, weight, x0, y0, a, out);
+  }
+
+  /**
+   * AddBilinearAt()'s samples of the footprint at (x0, y0) with the
+   * fraction `a` (BilinearFootprint()) that its inline path does not take:
+   * footprints across the view's edge (a sample per texel inside it),
+   * with several labels (a sample per texel) or read out of core.
+   */
+  __attribute__((noinline)) void AddFootprint(int view,
+    double weight,
+    int x0,
+    int y0,
+    const glm::dvec2& a,
+    RaySamples& out) const
+  {
+    const int width = this->Radiance.Width;
+    const int height = this->Radiance.Height;
     if (x0 >= 0 && y0 >= 0 && x0 + 1 < width && y0 + 1 < height)
     {
       std::uint8_t copies[2][6];
@@ -1900,10 +1964,7 @@ struct LightFieldSampler
       this->Footprint(view, x0, y0, copies, rows, labels);
       if (labels[0] == labels[1] && labels[0] == labels[2] && labels[0] == labels[3])
       {
-        RaySample& sample = out.Samples[out.Count++];
-        BlendTexels(rows[0], rows[1], a.x, a.y, &sample.Color.x);
-        sample.Weight = weight;
-        sample.Label = labels[0];
+        AddBlended(rows[0], rows[1], a, weight, labels[0], out);
         return;
       }
       double weights[4];
@@ -1920,7 +1981,9 @@ struct LightFieldSampler
       }
       return;
     }
-    ForEachBilinearPixel(uv,
+    ForEachFootprintPixel(x0,
+      y0,
+      a,
       width,
       height,
       [&](int px, int py, double bw)
@@ -1931,6 +1994,25 @@ struct LightFieldSampler
         sample.Weight = weight * bw;
         sample.Label = this->Labels.Present() ? *this->Labels.Pixel(view, px, py) : 0;
       });
+  }
+
+  /**
+   * Appends the one sample of a footprint whose 4 texels carry `label`:
+   * their bilinear blend at the fraction `a` (BlendTexels(), texels at
+   * top[0..5] and bottom[0..5]), weighing `weight`. Always inlined, as
+   * BlendTexels().
+   */
+  __attribute__((always_inline)) static void AddBlended(const std::uint8_t* top,
+    const std::uint8_t* bottom,
+    const glm::dvec2& a,
+    double weight,
+    int label,
+    RaySamples& out)
+  {
+    RaySample& sample = out.Samples[out.Count++];
+    BlendTexels(top, bottom, a.x, a.y, &sample.Color.x);
+    sample.Weight = weight;
+    sample.Label = label;
   }
 
   /**
