@@ -1258,6 +1258,14 @@ inline void AcceptMatch(const DeferredMatch& match,
   }
 }
 
+/// Whether the part an interval of `box` shows may be the part its lookup
+/// saw rather than the box's own (ShownPart): the proxy puts the surface
+/// at `surface` inside this moved box. Else the vote does not decide it.
+inline bool ShowsSeenPart(const RenderBox& box, double surface)
+{
+  return box.Moved && surface >= 0.0 && surface <= 1.0;
+}
+
 /**
  * The part an interval of `box` shows when its lookup saw part `seen` on a
  * surface at `surface` (the proxy's crossing, in units of the rest segment;
@@ -1270,7 +1278,7 @@ inline void AcceptMatch(const DeferredMatch& match,
  */
 inline int ShownPart(const RenderBox& box, int seen, double surface)
 {
-  return box.Moved && seen > 0 && surface >= 0.0 && surface <= 1.0 ? seen : box.Label;
+  return ShowsSeenPart(box, surface) && seen > 0 ? seen : box.Label;
 }
 
 /// `next` goes on with the part of `entry` where `entry` leaves off: a moved
@@ -1424,22 +1432,37 @@ struct SegmentWalk
       {
         return;
       }
-      entry.Seen = VoteLabel(this->Samples);
       surface = this->Samples.Surface;
-      shown = ShownPart(box, entry.Seen, surface);
+      const bool byVote = ShowsSeenPart(box, surface);
+      if (byVote)
+      {
+        entry.Seen = VoteLabel(this->Samples);
+        shown = ShownPart(box, entry.Seen, surface);
+      }
       // The coverage and the blend of the shown label in one pass over the
-      // samples (each sum in the samples' order, as BlendLabel's).
+      // samples (each sum in the samples' order, as BlendLabel's), which
+      // also finds whether they all carry the first one's label.
       double total = 0.0, covered = 0.0;
       glm::dvec3 sum(0.0);
+      const int first = this->Samples.Count > 0 ? this->Samples.Samples[0].Label : -1;
+      bool uniform = true;
       for (int i = 0; i < this->Samples.Count; ++i)
       {
         const RaySample& sample = this->Samples.Samples[i];
         total += sample.Weight;
+        uniform &= sample.Label == first;
         if (sample.Label == shown)
         {
           covered += sample.Weight;
           sum += sample.Weight * sample.Color;
         }
+      }
+      if (!byVote)
+      {
+        // One label (most intervals: inside a part, or beside it) is the
+        // vote when it weighs anything, its weight summed as `total`, as
+        // VoteLabel's tally sums it; else the tally decides.
+        entry.Seen = uniform ? (total > 0.0 ? first : -1) : VoteLabel(this->Samples);
       }
       candidate.Alpha = this->Settings.AntiAliasing ? LabelCoverage(covered, total)
                                                     : (entry.Seen == shown ? 1.0 : 0.0);
