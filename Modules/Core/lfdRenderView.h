@@ -1908,14 +1908,17 @@ bool RenderWalk(const FrameCage& cage,
     true,
     [&](detail::ViewRayLook<Lookup>& view, const detail::RunState& run)
     {
-      if (run.Looked && run.Looked != scratch.RunSkipped)
+      // (Once every box of the walk is warped, there is none left to leave
+      // out: most rays that meet a box of the swim have one.)
+      const bool warping = scratch.NextEntry < scratch.Entries.size();
+      if (warping && run.Looked && run.Looked != scratch.RunSkipped)
       {
         // The run was looked up: its pieces behind are not warped either.
         cage.FollowRun(*run.Looked, cage.Boxes->size(), scratch);
         cage.LeaveOut(scratch.Chain.size(), scratch);
         scratch.RunSkipped = run.Looked;
       }
-      else if (run.Deferred && run.Deferred != scratch.RunSkipped &&
+      else if (warping && run.Deferred && run.Deferred != scratch.RunSkipped &&
         detail::PiecesAhead(run.Focal) > 0)
       {
         // (One piece more than the jump: the run's last is never left out.)
