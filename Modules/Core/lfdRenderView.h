@@ -676,9 +676,11 @@ struct FrameCage
   BoxSegment* NextSegment(const glm::dvec3& d, FrameRayScratch& scratch, Skip&& skip) const
   {
     std::vector<BoxSegment>& segments = scratch.Segments;
+    // (Counted here: segments.size() divides by the 136 bytes of an interval.)
+    std::size_t count = segments.size();
     // Warp every box the ray enters no later than the nearest pending interval.
     while (scratch.NextEntry < scratch.Entries.size() &&
-      (scratch.Handed == segments.size() ||
+      (scratch.Handed == count ||
         !(scratch.Entries[scratch.NextEntry].T > segments[scratch.Handed].Segment.TEnter)))
     {
       const WalkEntry& entry = scratch.Entries[scratch.NextEntry++];
@@ -713,7 +715,7 @@ struct FrameCage
         // Into its place among the pending intervals, after those of equal
         // order (the first pending one stays where it is written).
         segments.push_back({ found[k], b, -1, b == scratch.Landing });
-        if (segments.size() > scratch.Handed + 1)
+        if (++count > scratch.Handed + 1)
         {
           std::rotate(std::upper_bound(segments.begin() + scratch.Handed,
                         segments.end() - 1,
@@ -724,7 +726,7 @@ struct FrameCage
         }
       }
     }
-    if (scratch.Handed == segments.size())
+    if (scratch.Handed == count)
     {
       return nullptr;
     }
