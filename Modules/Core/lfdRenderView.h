@@ -308,9 +308,12 @@ struct ScreenHull
    */
   bool MayHold(double x, double y, unsigned edges) const
   {
-    for (int i = 0; edges != 0; ++i, edges >>= 1)
+    // Set bit after set bit: no test of a bit, whose outcome varies from
+    // tile to tile (a mispredicted branch), for the edges in between.
+    for (; edges != 0; edges &= edges - 1)
     {
-      if ((edges & 1) && this->Edges[i].x * x + this->Edges[i].y * y + this->Edges[i].z < -Margin)
+      const glm::dvec3& edge = this->Edges[detail::LowestSetBit(static_cast<int>(edges))];
+      if (edge.x * x + edge.y * y + edge.z < -Margin)
       {
         return false;
       }
@@ -692,10 +695,11 @@ struct FrameCage
       const RenderBox& box = (*this->Boxes)[b];
       const HullsInTile& hulls = this->TileHulls[entry.Listed];
       int faces = hulls.FacesIn;
-      for (int face = 0, across = hulls.FacesAcross; across != 0; ++face, across >>= 1)
+      for (int across = hulls.FacesAcross; across != 0;
+           across &= across - 1) // (as MayHold's edges)
       {
-        if ((across & 1) &&
-          this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y, hulls.Faces[face]))
+        const int face = detail::LowestSetBit(across);
+        if (this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y, hulls.Faces[face]))
         {
           faces |= 1 << face;
         }
