@@ -531,6 +531,10 @@ struct FrameCage
   int TileSize = 1;
   int TilesX = 1;
   int TilesY = 1;
+  /// Per pixel column x, x / TileSize; per pixel row y, (y / TileSize)
+  /// TilesX: TileOf without the two integer divisions, whose latency (tens
+  /// of cycles) every ray in a tile that lists a box waited for.
+  std::vector<int> TileColumns, TileRows;
   std::vector<int> TileStart; ///< tile i lists TileBoxes[TileStart[i], TileStart[i + 1])
   std::vector<int> TileBoxes; ///< box indices, nearest first within a tile (BinBoxes)
   /// Per entry of TileBoxes, how the box's projected hulls meet the tile.
@@ -582,6 +586,16 @@ struct FrameCage
     this->TileSize = tileSize > 0 ? tileSize : std::max(width, height);
     this->TilesX = (width + this->TileSize - 1) / this->TileSize;
     this->TilesY = (height + this->TileSize - 1) / this->TileSize;
+    this->TileColumns.resize(width);
+    for (int x = 0; x < width; ++x)
+    {
+      this->TileColumns[x] = x / this->TileSize;
+    }
+    this->TileRows.resize(height);
+    for (int y = 0; y < height; ++y)
+    {
+      this->TileRows[y] = (y / this->TileSize) * this->TilesX;
+    }
     this->BinBoxes(boxes, width, height, tileSize > 0);
   }
 
@@ -848,10 +862,8 @@ private:
     }
   }
 
-  int TileOf(int x, int y) const
-  {
-    return (y / this->TileSize) * this->TilesX + x / this->TileSize;
-  }
+  /// The tile of pixel (x, y) of the image.
+  int TileOf(int x, int y) const { return this->TileRows[y] + this->TileColumns[x]; }
 
   /// The pixel (x z, y z, z) of `point`, z its depth along the eye's axis;
   /// false when it lies at or behind the eye plane.
