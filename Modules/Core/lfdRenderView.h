@@ -459,6 +459,7 @@ struct FrameRayScratch
   /// The boxes still to warp, sorted from NextEntry.
   std::vector<WalkEntry> Entries;
   std::size_t NextEntry = 0;
+  std::size_t Warps = 0;   ///< the boxes NextSegment warped for the ray
   glm::dvec2 Pixel{ 0.0 }; ///< the pixel of the ray (StartWalk)
   /// Per box, the number of the last ray that left it out (FrameCage::LeaveOut).
   std::vector<unsigned> Skipped;
@@ -623,6 +624,7 @@ struct FrameCage
     scratch.Handed = 0;
     scratch.Entries.clear();
     scratch.NextEntry = 0;
+    scratch.Warps = 0;
     scratch.Pixel = glm::dvec2(x, y);
     const int tile = this->TileOf(x, y);
     if (this->TileStart[tile] == this->TileStart[tile + 1])
@@ -706,6 +708,7 @@ struct FrameCage
       {
         continue;
       }
+      ++scratch.Warps;
       const RenderBox& box = (*this->Boxes)[b];
       const HullsInTile& hulls = this->TileHulls[entry.Listed];
       int faces = hulls.FacesIn;
