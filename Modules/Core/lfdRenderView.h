@@ -308,9 +308,12 @@ struct ScreenHull
    */
   bool MayHold(double x, double y, unsigned edges) const
   {
-    for (int i = 0; edges != 0; ++i, edges >>= 1)
+    // Set bit after set bit: no test of a bit, whose outcome varies from
+    // tile to tile (a mispredicted branch), for the edges in between.
+    for (; edges != 0; edges &= edges - 1)
     {
-      if ((edges & 1) && this->Edges[i].x * x + this->Edges[i].y * y + this->Edges[i].z < -Margin)
+      const glm::dvec3& edge = this->Edges[detail::LowestSetBit(static_cast<int>(edges))];
+      if (edge.x * x + edge.y * y + edge.z < -Margin)
       {
         return false;
       }
@@ -456,6 +459,7 @@ struct FrameRayScratch
   /// The boxes still to warp, sorted from NextEntry.
   std::vector<WalkEntry> Entries;
   std::size_t NextEntry = 0;
+  std::size_t Warps = 0;   ///< the boxes NextSegment warped for the ray
   glm::dvec2 Pixel{ 0.0 }; ///< the pixel of the ray (StartWalk)
   /// Per box, the number of the last ray that left it out (FrameCage::LeaveOut).
   std::vector<unsigned> Skipped;
@@ -528,6 +532,10 @@ struct FrameCage
   int TileSize = 1;
   int TilesX = 1;
   int TilesY = 1;
+  /// Per pixel column x, x / TileSize; per pixel row y, (y / TileSize)
+  /// TilesX: TileOf without the two integer divisions, whose latency (tens
+  /// of cycles) every ray in a tile that lists a box waited for.
+  std::vector<int> TileColumns, TileRows;
   std::vector<int> TileStart; ///< tile i lists TileBoxes[TileStart[i], TileStart[i + 1])
   std::vector<int> TileBoxes; ///< box indices, nearest first within a tile (BinBoxes)
   /// Per entry of TileBoxes, how the box's projected hulls meet the tile.
@@ -579,6 +587,16 @@ struct FrameCage
     this->TileSize = tileSize > 0 ? tileSize : std::max(width, height);
     this->TilesX = (width + this->TileSize - 1) / this->TileSize;
     this->TilesY = (height + this->TileSize - 1) / this->TileSize;
+    this->TileColumns.resize(width);
+    for (int x = 0; x < width; ++x)
+    {
+      this->TileColumns[x] = x / this->TileSize;
+    }
+    this->TileRows.resize(height);
+    for (int y = 0; y < height; ++y)
+    {
+      this->TileRows[y] = (y / this->TileSize) * this->TilesX;
+    }
     this->BinBoxes(boxes, width, height, tileSize > 0);
   }
 
@@ -606,6 +624,7 @@ struct FrameCage
     scratch.Handed = 0;
     scratch.Entries.clear();
     scratch.NextEntry = 0;
+    scratch.Warps = 0;
     scratch.Pixel = glm::dvec2(x, y);
     const int tile = this->TileOf(x, y);
     if (this->TileStart[tile] == this->TileStart[tile + 1])
@@ -676,9 +695,11 @@ struct FrameCage
   BoxSegment* NextSegment(const glm::dvec3& d, FrameRayScratch& scratch, Skip&& skip) const
   {
     std::vector<BoxSegment>& segments = scratch.Segments;
+    // (Counted here: segments.size() divides by the 136 bytes of an interval.)
+    std::size_t count = segments.size();
     // Warp every box the ray enters no later than the nearest pending interval.
     while (scratch.NextEntry < scratch.Entries.size() &&
-      (scratch.Handed == segments.size() ||
+      (scratch.Handed == count ||
         !(scratch.Entries[scratch.NextEntry].T > segments[scratch.Handed].Segment.TEnter)))
     {
       const WalkEntry& entry = scratch.Entries[scratch.NextEntry++];
@@ -687,13 +708,15 @@ struct FrameCage
       {
         continue;
       }
+      ++scratch.Warps;
       const RenderBox& box = (*this->Boxes)[b];
       const HullsInTile& hulls = this->TileHulls[entry.Listed];
       int faces = hulls.FacesIn;
-      for (int face = 0, across = hulls.FacesAcross; across != 0; ++face, across >>= 1)
+      for (int across = hulls.FacesAcross; across != 0;
+           across &= across - 1) // (as MayHold's edges)
       {
-        if ((across & 1) &&
-          this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y, hulls.Faces[face]))
+        const int face = detail::LowestSetBit(across);
+        if (this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y, hulls.Faces[face]))
         {
           faces |= 1 << face;
         }
@@ -713,7 +736,7 @@ struct FrameCage
         // Into its place among the pending intervals, after those of equal
         // order (the first pending one stays where it is written).
         segments.push_back({ found[k], b, -1, b == scratch.Landing });
-        if (segments.size() > scratch.Handed + 1)
+        if (++count > scratch.Handed + 1)
         {
           std::rotate(std::upper_bound(segments.begin() + scratch.Handed,
                         segments.end() - 1,
@@ -724,7 +747,7 @@ struct FrameCage
         }
       }
     }
-    if (scratch.Handed == segments.size())
+    if (scratch.Handed == count)
     {
       return nullptr;
     }
@@ -842,10 +865,8 @@ private:
     }
   }
 
-  int TileOf(int x, int y) const
-  {
-    return (y / this->TileSize) * this->TilesX + x / this->TileSize;
-  }
+  /// The tile of pixel (x, y) of the image.
+  int TileOf(int x, int y) const { return this->TileRows[y] + this->TileColumns[x]; }
 
   /// The pixel (x z, y z, z) of `point`, z its depth along the eye's axis;
   /// false when it lies at or behind the eye plane.
@@ -1258,6 +1279,14 @@ inline void AcceptMatch(const DeferredMatch& match,
   }
 }
 
+/// Whether the part an interval of `box` shows may be the part its lookup
+/// saw rather than the box's own (ShownPart): the proxy puts the surface
+/// at `surface` inside this moved box. Else the vote does not decide it.
+inline bool ShowsSeenPart(const RenderBox& box, double surface)
+{
+  return box.Moved && surface >= 0.0 && surface <= 1.0;
+}
+
 /**
  * The part an interval of `box` shows when its lookup saw part `seen` on a
  * surface at `surface` (the proxy's crossing, in units of the rest segment;
@@ -1270,7 +1299,7 @@ inline void AcceptMatch(const DeferredMatch& match,
  */
 inline int ShownPart(const RenderBox& box, int seen, double surface)
 {
-  return box.Moved && seen > 0 && surface >= 0.0 && surface <= 1.0 ? seen : box.Label;
+  return ShowsSeenPart(box, surface) && seen > 0 ? seen : box.Label;
 }
 
 /// `next` goes on with the part of `entry` where `entry` leaves off: a moved
@@ -1424,22 +1453,37 @@ struct SegmentWalk
       {
         return;
       }
-      entry.Seen = VoteLabel(this->Samples);
       surface = this->Samples.Surface;
-      shown = ShownPart(box, entry.Seen, surface);
+      const bool byVote = ShowsSeenPart(box, surface);
+      if (byVote)
+      {
+        entry.Seen = VoteLabel(this->Samples);
+        shown = ShownPart(box, entry.Seen, surface);
+      }
       // The coverage and the blend of the shown label in one pass over the
-      // samples (each sum in the samples' order, as BlendLabel's).
+      // samples (each sum in the samples' order, as BlendLabel's), which
+      // also finds whether they all carry the first one's label.
       double total = 0.0, covered = 0.0;
       glm::dvec3 sum(0.0);
+      const int first = this->Samples.Count > 0 ? this->Samples.Samples[0].Label : -1;
+      bool uniform = true;
       for (int i = 0; i < this->Samples.Count; ++i)
       {
         const RaySample& sample = this->Samples.Samples[i];
         total += sample.Weight;
+        uniform &= sample.Label == first;
         if (sample.Label == shown)
         {
           covered += sample.Weight;
           sum += sample.Weight * sample.Color;
         }
+      }
+      if (!byVote)
+      {
+        // One label (most intervals: inside a part, or beside it) is the
+        // vote when it weighs anything, its weight summed as `total`, as
+        // VoteLabel's tally sums it; else the tally decides.
+        entry.Seen = uniform ? (total > 0.0 ? first : -1) : VoteLabel(this->Samples);
       }
       candidate.Alpha = this->Settings.AntiAliasing ? LabelCoverage(covered, total)
                                                     : (entry.Seen == shown ? 1.0 : 0.0);
@@ -1885,14 +1929,17 @@ bool RenderWalk(const FrameCage& cage,
     true,
     [&](detail::ViewRayLook<Lookup>& view, const detail::RunState& run)
     {
-      if (run.Looked && run.Looked != scratch.RunSkipped)
+      // (Once every box of the walk is warped, there is none left to leave
+      // out: most rays that meet a box of the swim have one.)
+      const bool warping = scratch.NextEntry < scratch.Entries.size();
+      if (warping && run.Looked && run.Looked != scratch.RunSkipped)
       {
         // The run was looked up: its pieces behind are not warped either.
         cage.FollowRun(*run.Looked, cage.Boxes->size(), scratch);
         cage.LeaveOut(scratch.Chain.size(), scratch);
         scratch.RunSkipped = run.Looked;
       }
-      else if (run.Deferred && run.Deferred != scratch.RunSkipped &&
+      else if (warping && run.Deferred && run.Deferred != scratch.RunSkipped &&
         detail::PiecesAhead(run.Focal) > 0)
       {
         // (One piece more than the jump: the run's last is never left out.)
