@@ -9,8 +9,8 @@
  * the faces of a trilinear box are bilinear patches, the ray is intersected
  * with each face (a quadratic in one patch parameter, Ramsey, Potter and
  * Hansen 2004; Reshetov 2019), and a hit at patch parameters (s,t) on face k
- * is the box parametric point FaceToBox(k, (s,t)), whose rest image is
- * TrilinearMap(rest, uvw) (DESIGN.md section 4.2).
+ * is the box parametric point uvw of FaceOfBox::BoxPoint, whose rest image
+ * is TrilinearMap(rest, uvw) (DESIGN.md section 4.2; FaceOfBox::Map).
  *
  * A twisted box is not convex, so a ray can enter and leave it several
  * times; WarpRayThroughBox returns every interval.
@@ -443,21 +443,6 @@ constexpr int HexFacePatch[6][4] = { { 0, 3, 4, 7 },
   { 0, 1, 3, 2 },
   { 4, 5, 7, 6 } };
 
-namespace detail
-{
-/// Per axis a face is normal to, where the box coordinates along x, y, z
-/// are in (the face's side, s, t): FaceAxes put back in the axes' order.
-constexpr int BoxFromFace[3][3] = { { 0, 1, 2 }, { 1, 0, 2 }, { 1, 2, 0 } };
-} // namespace detail
-
-/// The box parametric point of face `face` at patch parameters `st`.
-inline glm::dvec3 FaceToBox(int face, const glm::dvec2& st)
-{
-  const double onFace[3] = { static_cast<double>(face % 2), st.x, st.y };
-  const int* from = detail::BoxFromFace[face / 2];
-  return { onFace[from[0]], onFace[from[1]], onFace[from[2]] };
-}
-
 /// Rest image of a deformed-space point: the rest map at the deformed map's
 /// inverse. Returns false when the Newton inverse does not converge.
 inline bool WarpPoint(const Hexahedron& rest,
@@ -588,7 +573,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
         // The box point, clamped to the face, and its rest image.
         const double s = std::min(std::max(hits[k].ST.x, 0.0), 1.0);
         const double t = std::min(std::max(hits[k].ST.y, 0.0), 1.0);
-        hit.Uvw = FaceToBox(face, glm::dvec2(s, t));
+        hit.Uvw = box.RestFaces[face].BoxPoint(s, t);
         hit.Rest = box.RestFaces[face].Map(s, t);
       }
     }

@@ -151,15 +151,16 @@ constexpr int FaceAxes[6][3] = { { 0, 1, 2 },
   { 2, 0, 1 } };
 
 /**
- * One face of a box as Eq. (2) maps it: TrilinearMap of the face's points,
- * to the bit at half the cost. On the face the coordinate along its axis is
- * exactly 0 or 1, so the basis factor along that axis is exactly 1 or +-0,
- * and a product with 1 is exact: each term that does not vanish is the
- * product of its other two factors, in TrilinearTerm's order, times its
- * corner; the 4 that vanish weigh +-0, and adding them to a sum that starts
- * at +0 leaves it unchanged. The sum of the 4 others, in the same order, is
- * therefore the same point. Built once per box and face, so that a caller
- * looping over faces maps a point of any face by one code path (no switch).
+ * One face of a box as Eq. (2) maps it: its points as box parametric points,
+ * and their TrilinearMap, to the bit at half the cost. On the face the
+ * coordinate along its axis is exactly 0 or 1, so the basis factor along
+ * that axis is exactly 1 or +-0, and a product with 1 is exact: each term
+ * that does not vanish is the product of its other two factors, in
+ * TrilinearTerm's order, times its corner; the 4 that vanish weigh +-0, and
+ * adding them to a sum that starts at +0 leaves it unchanged. The sum of
+ * the 4 others, in the same order, is therefore the same point. Built once
+ * per box and face, so that a caller looping over faces maps a point of any
+ * face by one code path (no switch).
  */
 struct FaceOfBox
 {
@@ -171,11 +172,20 @@ struct FaceOfBox
   /// start in (1 - s, s, 1 - s): 0 when they are 1 - s then s, 1 when s then
   /// 1 - s.
   int Flip[2] = { 0, 0 };
+  /// The face's coordinate along its axis (its side: 0 or 1).
+  double Side = 0.0;
+  /// Per box axis, where its coordinate is in (Side, s, t) (FaceAxes inverted).
+  int From[3] = { 0, 1, 2 };
 
   FaceOfBox() = default;
   FaceOfBox(const Hexahedron& box, int face)
+    : Side(face % 2)
   {
     const int* axes = FaceAxes[face];
+    for (int j = 0; j < 3; ++j)
+    {
+      this->From[axes[j]] = j;
+    }
     int k = 0;
     for (int i = 0; i < 8; ++i)
     {
@@ -189,6 +199,13 @@ struct FaceOfBox
         ++k;
       }
     }
+  }
+
+  /// The box parametric point of the face at coordinates s, t.
+  glm::dvec3 BoxPoint(double s, double t) const
+  {
+    const double onFace[3] = { this->Side, s, t };
+    return { onFace[this->From[0]], onFace[this->From[1]], onFace[this->From[2]] };
   }
 
   /// TrilinearMap of the face's point at coordinates s, t (both in [0, 1]).
@@ -205,16 +222,6 @@ struct FaceOfBox
     return p;
   }
 };
-
-/**
- * TrilinearMap of a point on face `face` of the box (VTK's hexahedron face
- * order): its coordinate there is exactly 0 or 1 and the others lie in
- * [0, 1]. The same point to the bit (FaceOfBox).
- */
-inline glm::dvec3 TrilinearMapOnFace(const Hexahedron& box, int face, const glm::dvec3& uvw)
-{
-  return FaceOfBox(box, face).Map(uvw[FaceAxes[face][1]], uvw[FaceAxes[face][2]]);
-}
 
 /// Jacobian d p / d (u,v,w) of the map; column k is the derivative along k.
 inline glm::dmat3 TrilinearJacobian(const Hexahedron& box, const glm::dvec3& uvw)
