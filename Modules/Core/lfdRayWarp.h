@@ -9,8 +9,8 @@
  * the faces of a trilinear box are bilinear patches, the ray is intersected
  * with each face (a quadratic in one patch parameter, Ramsey, Potter and
  * Hansen 2004; Reshetov 2019), and a hit at patch parameters (s,t) on face k
- * is the box parametric point FaceToBox(k, (s,t)), whose rest image is
- * TrilinearMap(rest, uvw) (DESIGN.md section 4.2).
+ * is the box parametric point uvw of FaceOfBox::BoxPoint, whose rest image
+ * is TrilinearMap(rest, uvw) (DESIGN.md section 4.2; FaceOfBox::Map).
  *
  * A twisted box is not convex, so a ray can enter and leave it several
  * times; WarpRayThroughBox returns every interval.
@@ -50,22 +50,22 @@ namespace detail
 {
 #if defined(__GNUC__) && defined(__x86_64__)
 /**
- * DifferenceOfProducts with the processor's FMA3 instructions. Built for the
- * x86-64 baseline (no -mfma), std::fma is a library call that emulates the
- * fused operation in software, about 15 ns: a third of the cost of a ray /
- * box warp, which needs 12 of them. The instruction rounds exactly as
- * std::fma does (once, IEEE 754 fusedMultiplyAdd), so the results are the
- * same bit for bit; only this function is built for FMA3, so no other
+ * fma(a, b, c) by the processor's FMA3 instruction, when HasFma3(). Built
+ * for the x86-64 baseline (no -mfma), std::fma is a library call that
+ * emulates the fused operation in software, about 15 ns; and a function
+ * built for FMA3 (target("fma")) is not inlined into baseline code, so each
+ * call saves and restores every floating-point value its caller holds in
+ * registers (the x86-64 System V ABI keeps none across a call). As inline
+ * assembly the one instruction inlines into any caller. It rounds once, as
+ * std::fma does (IEEE 754 fusedMultiplyAdd), so the results are the same
+ * bit for bit; and since only this instruction is fused, no other
  * expression is contracted differently.
  */
-__attribute__((target("fma"))) inline double DifferenceOfProductsFma3(double a,
-  double b,
-  double c,
-  double d)
+inline double FusedMultiplyAddFma3(double a, double b, double c)
 {
-  const double cd = c * d;
-  const double error = __builtin_fma(-c, d, cd);
-  return __builtin_fma(a, b, -cd) + error;
+  // (AT&T operand order: c = a * b + c.)
+  __asm__("vfmadd231sd %[b], %[a], %[c]" : [c] "+x"(c) : [a] "x"(a), [b] "x"(b));
+  return c;
 }
 
 /// Whether the processor has FMA3 (asked once).
@@ -97,7 +97,9 @@ inline double DifferenceOfProducts(double a, double b, double c, double d)
 #if defined(__GNUC__) && defined(__x86_64__)
   if (HasFma3())
   {
-    return DifferenceOfProductsFma3(a, b, c, d);
+    const double cd = c * d;
+    const double error = FusedMultiplyAddFma3(-c, d, cd);
+    return FusedMultiplyAddFma3(a, b, -cd) + error;
   }
 #endif
   const double cd = c * d;
@@ -441,36 +443,6 @@ constexpr int HexFacePatch[6][4] = { { 0, 3, 4, 7 },
   { 0, 1, 3, 2 },
   { 4, 5, 7, 6 } };
 
-/// The box parametric point of face `face` at patch parameters `st`.
-inline glm::dvec3 FaceToBox(int face, const glm::dvec2& st)
-{
-  const double side = face % 2;
-  switch (face / 2)
-  {
-    case 0:
-      return { side, st.x, st.y };
-    case 1:
-      return { st.x, side, st.y };
-    default:
-      return { st.x, st.y, side };
-  }
-}
-
-namespace detail
-{
-/// The box point (clamped to the face) and rest image of the hit `st` on face
-/// `Face`, with the face known to the compiler (TrilinearMapOnFace inlined).
-template<int Face>
-void MapFaceHit(const Hexahedron& rest,
-  const glm::dvec2& st,
-  glm::dvec3& uvw,
-  glm::dvec3& restPoint)
-{
-  uvw = FaceToBox(Face, glm::clamp(st, 0.0, 1.0));
-  restPoint = TrilinearMapOnFace<Face>(rest, uvw);
-}
-} // namespace detail
-
 /// Rest image of a deformed-space point: the rest map at the deformed map's
 /// inverse. Returns false when the Newton inverse does not converge.
 inline bool WarpPoint(const Hexahedron& rest,
@@ -502,15 +474,17 @@ struct WarpedSegment
 constexpr int MaxWarpedSegments = 6;
 
 /// A deformed box seen from a fixed ray origin: its faces (HexFacePatch) as
-/// PatchFromOrigin and its size, computed once per box and frame.
+/// PatchFromOrigin, its size, and the faces of its rest box (FaceOfBox, in
+/// the face order of HexFacePatch), computed once per box and frame.
 struct BoxFromOrigin
 {
   PatchFromOrigin Faces[6];
+  FaceOfBox RestFaces[6];
   glm::dvec3 Origin{ 0.0 };
   double Size = 0.0; ///< BoxSize of the deformed box
 
   BoxFromOrigin() = default;
-  BoxFromOrigin(const Hexahedron& deformed, const glm::dvec3& o)
+  BoxFromOrigin(const Hexahedron& rest, const Hexahedron& deformed, const glm::dvec3& o)
     : Origin(o)
     , Size(BoxSize(deformed))
   {
@@ -522,6 +496,7 @@ struct BoxFromOrigin
         deformed.Corners[c[2]],
         deformed.Corners[c[3]],
         o);
+      this->RestFaces[face] = FaceOfBox(rest, face);
     }
   }
 };
@@ -547,7 +522,8 @@ struct BoxFromOrigin
  * crossings is then inside between them by parity, and the Newton test of
  * that stretch is skipped.
  *
- * `box` is the deformed box seen from the ray's origin o (box.Origin).
+ * `box` is the box seen from the ray's origin o (box.Origin), built from
+ * `rest` and `deformed`.
  * Only the faces whose bit (1 << face) is set in `faces` are intersected:
  * the caller's promise that the ray misses the others.
  */
@@ -594,26 +570,11 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
         FaceHit& hit = found[nFound++];
         hit.T = std::max(hits[k].T, tMin);
         hit.Face = face;
-        switch (face)
-        {
-          case 0:
-            detail::MapFaceHit<0>(rest, hits[k].ST, hit.Uvw, hit.Rest);
-            break;
-          case 1:
-            detail::MapFaceHit<1>(rest, hits[k].ST, hit.Uvw, hit.Rest);
-            break;
-          case 2:
-            detail::MapFaceHit<2>(rest, hits[k].ST, hit.Uvw, hit.Rest);
-            break;
-          case 3:
-            detail::MapFaceHit<3>(rest, hits[k].ST, hit.Uvw, hit.Rest);
-            break;
-          case 4:
-            detail::MapFaceHit<4>(rest, hits[k].ST, hit.Uvw, hit.Rest);
-            break;
-          default:
-            detail::MapFaceHit<5>(rest, hits[k].ST, hit.Uvw, hit.Rest);
-        }
+        // The box point, clamped to the face, and its rest image.
+        const double s = std::min(std::max(hits[k].ST.x, 0.0), 1.0);
+        const double t = std::min(std::max(hits[k].ST.y, 0.0), 1.0);
+        hit.Uvw = box.RestFaces[face].BoxPoint(s, t);
+        hit.Rest = box.RestFaces[face].Map(s, t);
       }
     }
   }
@@ -761,7 +722,7 @@ inline int WarpRayThroughBox(const Hexahedron& rest,
   bool startsOutside = false)
 {
   return WarpRayThroughBox(
-    BoxFromOrigin(deformed, o), rest, deformed, d, tMin, out, maxSegments, startsOutside);
+    BoxFromOrigin(rest, deformed, o), rest, deformed, d, tMin, out, maxSegments, startsOutside);
 }
 
 } // namespace lfd

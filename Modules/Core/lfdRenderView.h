@@ -572,7 +572,7 @@ struct FrameCage
     this->FaceHulls.resize(boxes.size());
     for (std::size_t b = 0; b < boxes.size(); ++b)
     {
-      this->Seen[b] = BoxFromOrigin(boxes[b].Deformed, eye);
+      this->Seen[b] = BoxFromOrigin(boxes[b].Rest, boxes[b].Deformed, eye);
       this->Hulls[b] = this->ProjectedHull(boxes[b].Deformed.Corners, HexCorners);
       for (int face = 0; face < 6; ++face)
       {

@@ -140,61 +140,88 @@ inline glm::dvec3 TrilinearMap(const Hexahedron& box, const glm::dvec3& uvw)
   return p;
 }
 
-namespace detail
-{
-/**
- * TrilinearMapOnFace on face `Face` (VTK's hexahedron face order: axis Face / 2,
- * side Face % 2). The basis factor along the face's axis is exactly 1 there,
- * and a product with 1 is exact, so each term is the product of the other
- * two factors, in TrilinearTerm's order, times its corner.
- */
-template<int Face>
-glm::dvec3 TrilinearMapOnFace(const Hexahedron& box, const glm::dvec3& uvw)
-{
-  constexpr int axis = Face / 2;
-  constexpr int first = axis == 0 ? 1 : 0;
-  constexpr int second = axis == 2 ? 1 : 2;
-  glm::dvec3 p(0.0);
-  for (int i = 0; i < 8; ++i)
-  {
-    if (HexCorner[i][axis] == Face % 2)
-    {
-      const double b1 = HexCorner[i][first] ? uvw[first] : 1.0 - uvw[first];
-      const double b2 = HexCorner[i][second] ? uvw[second] : 1.0 - uvw[second];
-      p += (b1 * b2) * box.Corners[i];
-    }
-  }
-  return p;
-}
-} // namespace detail
+/// Of each face (VTK's hexahedron face order: 0 is u = 0, 1 is u = 1, 2 is
+/// v = 0, ...): the axis it is normal to, then its two free axes, along
+/// which its coordinates s and t run.
+constexpr int FaceAxes[6][3] = { { 0, 1, 2 },
+  { 0, 1, 2 },
+  { 1, 0, 2 },
+  { 1, 0, 2 },
+  { 2, 0, 1 },
+  { 2, 0, 1 } };
 
 /**
- * TrilinearMap of a point on face `face` of the box (VTK's hexahedron face
- * order: 0 is u = 0, 1 is u = 1, 2 is v = 0, ...): its coordinate there is
- * exactly 0 or 1 and the others lie in [0, 1]. The 4 corners of the
- * opposite face weigh exactly +0, and adding their +-0 terms leaves a sum
- * that starts at +0 unchanged, so the sum of the other 4, in the same
- * order, is the same point to the bit at half the cost (and one product
- * fewer per term: the factor 1 along the face's axis).
+ * One face of a box as Eq. (2) maps it: its points as box parametric points,
+ * and their TrilinearMap, to the bit at half the cost. On the face the
+ * coordinate along its axis is exactly 0 or 1, so the basis factor along
+ * that axis is exactly 1 or +-0, and a product with 1 is exact: each term
+ * that does not vanish is the product of its other two factors, in
+ * TrilinearTerm's order, times its corner; the 4 that vanish weigh +-0, and
+ * adding them to a sum that starts at +0 leaves it unchanged. The sum of
+ * the 4 others, in the same order, is therefore the same point. Built once
+ * per box and face, so that a caller looping over faces maps a point of any
+ * face by one code path (no switch).
  */
-inline glm::dvec3 TrilinearMapOnFace(const Hexahedron& box, int face, const glm::dvec3& uvw)
+struct FaceOfBox
 {
-  switch (face)
+  /// The corners of the terms that do not vanish, in TrilinearMap's order:
+  /// on every face the two whose factor along t is 1 - t, then the two whose
+  /// factor is t (VTK's corner order).
+  glm::dvec3 Corners[4];
+  /// Of each of those two pairs, where the factors along s of its two terms
+  /// start in (1 - s, s, 1 - s): 0 when they are 1 - s then s, 1 when s then
+  /// 1 - s.
+  int Flip[2] = { 0, 0 };
+  /// The face's coordinate along its axis (its side: 0 or 1).
+  double Side = 0.0;
+  /// Per box axis, where its coordinate is in (Side, s, t) (FaceAxes inverted).
+  int From[3] = { 0, 1, 2 };
+
+  FaceOfBox() = default;
+  FaceOfBox(const Hexahedron& box, int face)
+    : Side(face % 2)
   {
-    case 0:
-      return detail::TrilinearMapOnFace<0>(box, uvw);
-    case 1:
-      return detail::TrilinearMapOnFace<1>(box, uvw);
-    case 2:
-      return detail::TrilinearMapOnFace<2>(box, uvw);
-    case 3:
-      return detail::TrilinearMapOnFace<3>(box, uvw);
-    case 4:
-      return detail::TrilinearMapOnFace<4>(box, uvw);
-    default:
-      return detail::TrilinearMapOnFace<5>(box, uvw);
+    const int* axes = FaceAxes[face];
+    for (int j = 0; j < 3; ++j)
+    {
+      this->From[axes[j]] = j;
+    }
+    int k = 0;
+    for (int i = 0; i < 8; ++i)
+    {
+      if (HexCorner[i][axes[0]] == face % 2)
+      {
+        this->Corners[k] = box.Corners[i];
+        if (k % 2 == 0)
+        {
+          this->Flip[k / 2] = HexCorner[i][axes[1]];
+        }
+        ++k;
+      }
+    }
   }
-}
+
+  /// The box parametric point of the face at coordinates s, t.
+  glm::dvec3 BoxPoint(double s, double t) const
+  {
+    const double onFace[3] = { this->Side, s, t };
+    return { onFace[this->From[0]], onFace[this->From[1]], onFace[this->From[2]] };
+  }
+
+  /// TrilinearMap of the face's point at coordinates s, t (both in [0, 1]).
+  glm::dvec3 Map(double s, double t) const
+  {
+    const double sFactors[3] = { 1.0 - s, s, 1.0 - s };
+    const double* low = sFactors + this->Flip[0];
+    const double* high = sFactors + this->Flip[1];
+    glm::dvec3 p(0.0);
+    p += (low[0] * (1.0 - t)) * this->Corners[0];
+    p += (low[1] * (1.0 - t)) * this->Corners[1];
+    p += (high[0] * t) * this->Corners[2];
+    p += (high[1] * t) * this->Corners[3];
+    return p;
+  }
+};
 
 /// Jacobian d p / d (u,v,w) of the map; column k is the derivative along k.
 inline glm::dmat3 TrilinearJacobian(const Hexahedron& box, const glm::dvec3& uvw)

@@ -392,16 +392,16 @@ void SharedFace()
 }
 
 /**
- * The warp maps its face crossings into the rest box with TrilinearMapOnFace:
- * the same points, to the bit, as TrilinearMap, on random boxes (corners
- * anywhere, of either sign) at random points of every face, its edges and
- * its corners.
+ * The warp maps its face crossings into the rest box with FaceOfBox: box
+ * points on the face, and the same rest points, to the bit, as TrilinearMap
+ * of them, on random boxes (corners anywhere, of either sign) at random
+ * points of every face, its edges and its corners.
  */
 void MapOnFaces()
 {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0), corner(-3.0, 3.0);
-  int different = 0;
+  int different = 0, misplaced = 0;
   for (int trial = 0; trial < 2000; ++trial)
   {
     lfd::Hexahedron box;
@@ -416,12 +416,16 @@ void MapOnFaces()
       : glm::dvec2(unit(rng), unit(rng));
     for (int face = 0; face < 6; ++face)
     {
-      const glm::dvec3 uvw = lfd::FaceToBox(face, st);
-      const glm::dvec3 onFace = lfd::TrilinearMapOnFace(box, face, uvw);
+      const lfd::FaceOfBox onBox(box, face);
+      const glm::dvec3 uvw = onBox.BoxPoint(st.x, st.y);
+      const int* axes = lfd::FaceAxes[face];
+      misplaced += uvw[axes[0]] != face % 2 || uvw[axes[1]] != st.x || uvw[axes[2]] != st.y;
+      const glm::dvec3 onFace = onBox.Map(st.x, st.y);
       const glm::dvec3 anywhere = lfd::TrilinearMap(box, uvw);
       different += std::memcmp(&onFace, &anywhere, sizeof(onFace)) != 0;
     }
   }
+  Expect("points of faces (12000) off their face's box coordinates", misplaced, 0);
   Expect("points of faces (12000) mapped unlike TrilinearMap, bitwise", different, 0);
 }
 
