@@ -468,7 +468,7 @@ BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
       // The SSE2 version too where AimBatch took the AVX2 one.
       lfd::RayAim baseline[16];
       bool baselineAimed[16];
-      sampler.AimStages(o, d, count, baseline, baselineAimed);
+      sampler.AimStages<0>(&o, d, count, baseline, baselineAimed);
       for (int i = 0; i < count; ++i)
       {
         counts.Differing += SameAim(baseline[i], baselineAimed[i], aims[i], aimed[i]) ? 0 : 1;
