@@ -241,6 +241,14 @@ struct RenderRows
         }
         batched = 0;
       };
+      const auto addToBatch = [&](int x)
+      {
+        batch[batched++] = x;
+        if (batched == lfd::MaximumPlainBatch)
+        {
+          renderBatch();
+        }
+      };
       for (int x0 = 0, tile = 0; x0 < this->Width; x0 += tileSize, ++tile)
       {
         const int x1 = std::min(x0 + tileSize, this->Width);
@@ -250,7 +258,15 @@ struct RenderRows
           this->WriteBackground(row + x0, x1 - x0);
           continue;
         }
-        if (boxes && !this->Accelerated)
+        if (!boxes)
+        {
+          for (int x = x0; x < x1; ++x)
+          {
+            addToBatch(x);
+          }
+          continue;
+        }
+        if (!this->Accelerated)
         {
           for (int x = x0; x < x1; ++x)
           {
@@ -271,29 +287,24 @@ struct RenderRows
           {
             walks[i] = x + i;
           }
-          if (boxes)
-          {
-            lfd::RenderWalks(this->Cage,
-              walks,
-              y,
-              count,
-              this->Light,
-              this->Settings,
-              scratch.data(),
-              walkSeen,
-              walked);
-          }
+          lfd::RenderWalks(this->Cage,
+            walks,
+            y,
+            count,
+            this->Light,
+            this->Settings,
+            scratch.data(),
+            walkSeen,
+            walked);
           for (int i = 0; i < count; ++i)
           {
-            if (boxes && walked[i])
+            if (walked[i])
             {
               this->Write(row + walks[i], walkSeen[i]);
-              continue;
             }
-            batch[batched++] = walks[i];
-            if (batched == lfd::MaximumPlainBatch)
+            else
             {
-              renderBatch();
+              addToBatch(walks[i]);
             }
           }
         }
