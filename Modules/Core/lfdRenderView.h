@@ -1888,16 +1888,16 @@ constexpr int MaximumPlainBatch = LightFieldSampler::MaximumBatch;
 /**
  * RenderView for the rays through the pixels (xs[i], y), i < count <=
  * MaximumPlainBatch, xs ascending, of a frame, rays that no box may claim
- * (RenderWalk() false: the frame has no box or no labels, the ray's tile
- * lists none or its walk finds none): the same results, into `seen`. With a lookup that
- * gathers in two stages (SamplerLookup: AimBatch() and Sample()), the batch
- * runs the first stage, the rays' geometry, for every ray before the
- * second, the texels, for any (and the first stage may bound the batch's
- * geometry at once: LightFieldSampler::EntrySectors()). A ray's lookup is
- * one dependent chain of divisions and square roots (some 900
- * instructions, more than the processor's reorder window holds), so looked
- * up ray after ray, the rays do not overlap; the first stages of
- * neighbouring rays, run back to back, do.
+ * (not walked by RenderWalks(): the frame has no box or no labels, the
+ * ray's tile lists none or its walk finds none): the same results, into
+ * `seen`. With a lookup that gathers in two stages (SamplerLookup:
+ * AimBatch() and Sample()), the batch runs the first stage, the rays'
+ * geometry, for every ray before the second, the texels, for any (and the
+ * first stage may bound the batch's geometry at once: LightFieldSampler::
+ * EntrySectors()). A ray's lookup is one dependent chain of divisions and
+ * square roots (some 900 instructions, more than the processor's reorder
+ * window holds), so looked up ray after ray, the rays do not overlap; the
+ * first stages of neighbouring rays, run back to back, do.
  */
 template<typename Lookup>
 void RenderPlainViews(const FrameCage& cage,
@@ -2091,25 +2091,10 @@ void RenderWalks(const FrameCage& cage,
   }
 }
 
-/// RenderWalks() for the one ray through pixel (x, y): true when a box may claim it.
-template<typename Lookup>
-bool RenderWalk(const FrameCage& cage,
-  int x,
-  int y,
-  const Lookup& lookup,
-  const RenderViewSettings& settings,
-  FrameRayScratch& scratch,
-  ViewSample& seen)
-{
-  bool walked;
-  RenderWalks(cage, &x, y, 1, lookup, settings, &scratch, &seen, &walked);
-  return walked;
-}
-
 /**
  * RenderView for the ray through pixel (x, y) of a frame: the same result,
- * with the boxes tried and warped through `cage` (RenderWalk()); scratch as
- * RenderWalk leaves it.
+ * with the boxes tried and warped through `cage` (RenderWalks(), a batch
+ * of one); scratch as RenderWalks leaves it.
  */
 template<typename Lookup>
 ViewSample RenderView(const FrameCage& cage,
@@ -2120,7 +2105,9 @@ ViewSample RenderView(const FrameCage& cage,
   FrameRayScratch& scratch)
 {
   ViewSample seen;
-  if (!RenderWalk(cage, x, y, lookup, settings, scratch, seen))
+  bool walked;
+  RenderWalks(cage, &x, y, 1, lookup, settings, &scratch, &seen, &walked);
+  if (!walked)
   {
     scratch.Segments.clear();
     scratch.Handed = 0;
