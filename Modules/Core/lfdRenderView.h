@@ -615,6 +615,10 @@ struct FrameCage
   /// Per box and face, the box sharing the face (the same 4 deformed corners)
   /// times 6 plus the face's index in it; -1 for none.
   std::vector<std::array<int, 6>> Neighbors;
+  /// Per box and face, where a run goes on straight through the face
+  /// (FollowRun): the neighbour's index times 8 plus its face opposite the
+  /// one shared, when the neighbour moved and has the box's label; else -1.
+  std::vector<std::array<int, 6>> Through;
   glm::dvec3 Eye{ 0.0 };
   glm::dmat3 PixelToDirection{ 1.0 };
   int TileSize = 1;
@@ -735,19 +739,15 @@ struct FrameCage
       scratch.Held.assign(this->Boxes->size(), 0);
       scratch.Ray = 1;
     }
-    // The boxes whose projected hull holds the pixel, in order of their
-    // oriented entries (EnterOriented). A ray whose pixel one box's hull
-    // holds (most rays that meet a box of the swim) has nothing to order,
-    // and about always meets the bounds: a ray through the projected hull of
-    // the corners meets their convex hull, which the bounds hold. Its box is
-    // held back, and goes to the warp without the entry unless a second box
-    // comes (the swim's frame 154.6 -> 152.7 M instructions).
-    // (Locals, not members: the stores into scratch could alias the tile's
-    // tables and the direction, which the compiler would then read again
-    // box after box.)
-    int alone = -1; // the first box's place in the tile while it is the only one
-    bool several = false;
-    const glm::dvec3 direction = d;
+    // The boxes whose projected hull holds the pixel, then in order of their
+    // oriented entries. A ray whose pixel one box's hull holds (most rays
+    // that meet a box of the swim) has nothing to order, and about always
+    // meets the bounds: a ray through the projected hull of the corners
+    // meets their convex hull, which the bounds hold. Its box goes to the
+    // warp without the entry (the swim's frame 154.6 -> 152.7 M
+    // instructions). (Locals, not members: the stores into scratch could
+    // alias the tile's tables and the direction, which the compiler would
+    // then read again box after box.)
     const int end = this->TileStart[tile + 1];
     const int* tileBoxes = this->TileBoxes.data();
     const std::uint64_t* pixels = this->TilePixels.empty() ? nullptr : this->TilePixels.data();
@@ -763,24 +763,29 @@ struct FrameCage
         continue;
       }
       held[b] = ray;
-      if (!several)
+      scratch.Entries.push_back({ 0.0, b, i });
+    }
+    if (scratch.Entries.size() > 1)
+    {
+      // Where the ray enters each box's oriented bounds; a box whose bounds
+      // it misses is dropped: the widened bounds hold the box, so a ray that
+      // meets only them (by less than their margin) crosses the box for no
+      // interval the warp keeps. (One loop over the held boxes, after the
+      // hull tests: the ray's direction stays in registers.)
+      const glm::dvec3 direction = d;
+      WalkEntry* entries = scratch.Entries.data();
+      const OrientedBounds* oriented = this->Oriented.data();
+      std::size_t kept = 0;
+      for (std::size_t k = 0; k < scratch.Entries.size(); ++k)
       {
-        if (alone < 0)
+        const WalkEntry entry = entries[k];
+        double t = 0.0;
+        if (oriented[entry.Box].Entry(direction, t))
         {
-          alone = i;
-          continue;
+          entries[kept++] = { t, entry.Box, entry.Listed };
         }
-        several = true;
-        this->EnterOriented(alone, direction, scratch);
       }
-      this->EnterOriented(i, direction, scratch);
-    }
-    if (!several && alone >= 0)
-    {
-      scratch.Entries.push_back({ 0.0, this->TileBoxes[alone], alone });
-    }
-    else if (scratch.Entries.size() > 1)
-    {
+      scratch.Entries.resize(kept);
       std::sort(scratch.Entries.begin(), scratch.Entries.end());
     }
     if (scratch.Entries.empty())
@@ -873,25 +878,24 @@ struct FrameCage
    */
   void FollowRun(const BoxSegment& from, std::size_t limit, FrameRayScratch& scratch) const
   {
-    const std::vector<RenderBox>& boxes = *this->Boxes;
-    const int label = boxes[from.Box].Label;
     std::vector<int>& chain = scratch.Chain;
     chain.clear();
+    const std::size_t most = std::min(limit, this->Boxes->size());
+    const unsigned* held = scratch.Held.data();
+    const unsigned ray = scratch.Ray;
     int b = from.Box;
     int face = from.Segment.FaceExit;
-    while (face >= 0 && chain.size() < std::min(limit, boxes.size()))
+    // (Each box of the chain moved and has the label of the one before it,
+    // so of `from`: Through.)
+    while (face >= 0 && chain.size() < most)
     {
-      const int link = this->Neighbors[b][face];
-      if (link < 0)
+      const int next = this->Through[b][face];
+      if (next < 0 || held[next >> 3] != ray)
       {
         break;
       }
-      b = link / 6;
-      face = (link % 6) ^ 1; // the opposite face of the one shared
-      if (!boxes[b].Moved || boxes[b].Label != label || scratch.Held[b] != scratch.Ray)
-      {
-        break;
-      }
+      b = next >> 3;
+      face = next & 7;
       chain.push_back(b);
     }
   }
@@ -912,24 +916,7 @@ struct FrameCage
   }
 
 private:
-  /**
-   * Appends the box listed at `i` in TileBoxes to scratch.Entries, with where
-   * the ray from the eye in direction `d` enters its oriented bounds, unless
-   * the ray misses them: the widened bounds hold the box, so a ray that
-   * meets only them (by less than their margin) crosses the box for no
-   * interval the warp keeps.
-   */
-  void EnterOriented(int i, glm::dvec3 d, FrameRayScratch& scratch) const
-  {
-    const int b = this->TileBoxes[i];
-    double oriented = 0.0;
-    if (this->Oriented[b].Entry(d, oriented))
-    {
-      scratch.Entries.push_back({ oriented, b, i });
-    }
-  }
-
-  /// Neighbors: faces whose 4 deformed corners are the same points, paired.
+  /// Neighbors: faces whose 4 deformed corners are the same points, paired; and Through.
   void LinkFaces(const std::vector<RenderBox>& boxes)
   {
     std::vector<std::pair<std::array<double, 12>, int>> faces;
@@ -971,6 +958,19 @@ private:
         this->Neighbors[b / 6][b % 6] = a;
       }
       i = end - 1;
+    }
+    this->Through.assign(boxes.size(), { -1, -1, -1, -1, -1, -1 });
+    for (std::size_t b = 0; b < boxes.size(); ++b)
+    {
+      for (int face = 0; face < 6; ++face)
+      {
+        const int link = this->Neighbors[b][face];
+        if (link >= 0 && boxes[link / 6].Moved && boxes[link / 6].Label == boxes[b].Label)
+        {
+          this->Through[b][face] =
+            link / 6 * 8 + ((link % 6) ^ 1); // the face opposite the shared one
+        }
+      }
     }
   }
 
