@@ -786,7 +786,19 @@ struct FrameCage
         }
       }
       scratch.Entries.resize(kept);
-      std::sort(scratch.Entries.begin(), scratch.Entries.end());
+      // An insertion sort: the tile lists its boxes nearest first, so the
+      // entries come about sorted (std::sort's own insertion sort took
+      // about twice the instructions of this loop over the same moves).
+      for (std::size_t k = 1; k < kept; ++k)
+      {
+        const WalkEntry entry = entries[k];
+        std::size_t j = k;
+        for (; j > 0 && entry < entries[j - 1]; --j)
+        {
+          entries[j] = entries[j - 1];
+        }
+        entries[j] = entry;
+      }
     }
     if (scratch.Entries.empty())
     {
