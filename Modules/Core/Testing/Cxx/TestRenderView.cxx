@@ -316,6 +316,24 @@ void HundredBoxFrame()
   lfd::FrameCage culled, unculled;
   culled.Build(boxes, eye, pixelToDirection, 64, 64, 8);
   unculled.Build(boxes, eye, pixelToDirection, 64, 64, 0);
+  // A tile's pixel masks (FrameCage::TilePixels) answer as each pixel's own
+  // hull test; unculled, each ray tests the hull.
+  int maskedUnlike = 0;
+  for (int tile = 0; tile < 64; ++tile)
+  {
+    for (int i = culled.TileStart[tile]; i < culled.TileStart[tile + 1]; ++i)
+    {
+      const lfd::ScreenHull& hull = culled.Hulls[culled.TileBoxes[i]];
+      for (int pixel = 0; pixel < 64; ++pixel)
+      {
+        const int x = tile % 8 * 8 + pixel % 8, y = tile / 8 * 8 + pixel / 8;
+        maskedUnlike +=
+          static_cast<bool>((culled.TilePixels[i] >> pixel) & 1u) != hull.MayHold(x, y);
+      }
+    }
+  }
+  Expect("100-box frame: tile pixels whose mask is not their hull test", maskedUnlike, 0, 0.0);
+  Expect("  unculled frame's pixel masks", static_cast<double>(unculled.TilePixels.size()), 0, 0.0);
   const lfd::RenderViewSettings settings = SettingsFor(boxes);
   std::vector<lfd::BoxSegment> reference;
   lfd::FrameRayScratch scratch;
