@@ -43,7 +43,9 @@
  * batch of rays (SamplerLookup does): a type Aimed, AimBatch(o, d, count,
  * Aimed*, bool* aimed) (the geometry of the rays o + s d[i] through pixels
  * of one row, in order; aimed[i] false: no sample), Sample(o, d, Aimed&,
- * RaySamples&) (Gather's result) and FocalDepth(o, const Aimed&).
+ * RaySamples&) (Gather's result) and FocalDepth(o, const Aimed&); and
+ * AimBatch(const glm::dvec3* o, d, count, Aimed*, bool* aimed), the rays
+ * o[i] + s d[i] from origins of their own (the warped rays of RenderWalks()).
  *
  * A lookup sees the first surface along the whole line of a warped ray, not
  * only along its interval, and it samples the cameras at the line's focal
@@ -1107,6 +1109,15 @@ struct SamplerLookup
   {
     this->Sampler.AimBatch(o, d, count, aims, aimed);
   }
+  /// The same from an origin per ray (RenderWalks).
+  void AimBatch(const glm::dvec3* o,
+    const glm::dvec3* d,
+    int count,
+    RayAim* aims,
+    bool* aimed) const
+  {
+    this->Sampler.AimBatch(o, d, count, aims, aimed);
+  }
   bool Sample(const glm::dvec3& o, const glm::dvec3& d, const RayAim& aim, RaySamples& out) const
   {
     return this->Sampler.Sample(o, d, aim, out);
@@ -1135,6 +1146,45 @@ struct SamplerLookup
 
 namespace detail
 {
+/// Whether `Lookup` gathers in two stages (Aim(), Sample(); RenderPlainViews).
+template<typename Lookup, typename = void>
+struct Staged : std::false_type
+{
+};
+template<typename Lookup>
+struct Staged<Lookup, std::void_t<typename Lookup::Aimed>> : std::true_type
+{
+};
+
+/// The first stage of a Lookup's gathering (Lookup::Aimed; none for a lookup without stages).
+template<typename Lookup, bool = Staged<Lookup>::value>
+struct FirstStage
+{
+  using type = typename Lookup::Aimed;
+};
+template<typename Lookup>
+struct FirstStage<Lookup, false>
+{
+  struct type
+  {
+  };
+};
+
+/**
+ * A ray's first interval, taken and aimed ahead of its walk with those of
+ * other rays (RenderWalks()): Segment (null: none, the walk ends at once)
+ * and, with a lookup that gathers in two stages, its warped ray's first
+ * stage (Aim; null: not aimed ahead, the walk gathers it) and whether the
+ * ray may have samples (Found: Aim's result).
+ */
+template<typename Lookup>
+struct PrimedSegment
+{
+  BoxSegment* Segment = nullptr;
+  const typename FirstStage<Lookup>::type* Aim = nullptr;
+  bool Found = false;
+};
+
 /**
  * The light field's samples along the view ray itself, gathered at most once
  * per ray: a box that did not move warps the ray onto itself, so every
@@ -1379,6 +1429,28 @@ struct SegmentWalk
   RaySamples Samples;
   bool Matched = false;
   DeferredMatch Held;
+  /// The interval aimed ahead of the walk, if any (see RenderWalks()).
+  const PrimedSegment<Lookup>* Primed = nullptr;
+
+  /// Gather() of the warped ray of `entry`, from its first stage if it was aimed ahead.
+  bool Gather(const BoxSegment& entry, const glm::dvec3& direction)
+  {
+    if constexpr (Staged<Lookup>::value)
+    {
+      if (this->Primed && this->Primed->Segment == &entry && this->Primed->Aim)
+      {
+        if (!this->Primed->Found)
+        {
+          this->Samples.Count = 0; // (as Gather)
+          this->Samples.Surface = std::numeric_limits<double>::quiet_NaN();
+          return false;
+        }
+        return this->Light.Sample(
+          entry.Segment.RestEnter, direction, *this->Primed->Aim, this->Samples);
+      }
+    }
+    return this->Light.Gather(entry.Segment.RestEnter, direction, this->Samples);
+  }
 
   /// Past the match, only what still shows through is looked up.
   bool Going() const
@@ -1448,8 +1520,7 @@ struct SegmentWalk
     }
     else
     {
-      if (glm::dot(direction, direction) <= 0.0 ||
-        !this->Light.Gather(segment.RestEnter, direction, this->Samples))
+      if (glm::dot(direction, direction) <= 0.0 || !this->Gather(entry, direction))
       {
         return;
       }
@@ -1560,9 +1631,11 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
   const RenderViewSettings& settings,
   ViewRayLook<Lookup>& view,
   ViewSample& result,
-  CoverageComposite& composite)
+  CoverageComposite& composite,
+  const PrimedSegment<Lookup>* primed)
 {
   SegmentWalk<Lookup> walk{ boxes, lookup, settings, view, result, composite };
+  walk.Primed = primed;
   BoxSegment* deferred = nullptr; // an interval whose lookup waits for the next one
   double deferredFocal = 0.0;
   BoxSegment* looked = nullptr; // the last interval of a run that was looked up
@@ -1707,7 +1780,8 @@ inline ViewSample Composite(const CoverageComposite& front,
 
 /**
  * RENDER_VIEW (Sec. 6) of the ray o + t d whose intervals `next(view)`
- * hands out front to back into `segments` (`any`: the ray may have some).
+ * hands out front to back into `segments` (`any`: the ray may have some);
+ * `primed`, if not null, the first of them aimed ahead (ShadeSegments).
  */
 template<typename Lookup, typename Next>
 ViewSample ShadeView(const glm::dvec3& o,
@@ -1717,7 +1791,8 @@ ViewSample ShadeView(const glm::dvec3& o,
   const RenderViewSettings& settings,
   bool any,
   Next&& next,
-  const std::vector<BoxSegment>& segments)
+  const std::vector<BoxSegment>& segments,
+  const PrimedSegment<Lookup>* primed)
 {
   ViewRayLook<Lookup> view{ lookup, o, d };
   CoverageComposite front;
@@ -1726,7 +1801,7 @@ ViewSample ShadeView(const glm::dvec3& o,
     ViewSample result;
     // (Most rays of a frame miss every box: they skip the segment walk. The
     // widened search runs after the walk handed every interval out.)
-    if (any && ShadeSegments(boxes, next, lookup, settings, view, result, front))
+    if (any && ShadeSegments(boxes, next, lookup, settings, view, result, front, primed))
     {
       if (front.Transmittance <= CoverageComposite::Opaque)
       {
@@ -1803,38 +1878,26 @@ ViewSample RenderView(const glm::dvec3& o,
       }
       return k < segments.size() ? &segments[k++] : nullptr;
     },
-    segments);
+    segments,
+    static_cast<const detail::PrimedSegment<Lookup>*>(nullptr));
 }
 
 /// The most rays RenderPlainViews takes at once.
 constexpr int MaximumPlainBatch = LightFieldSampler::MaximumBatch;
 
-namespace detail
-{
-/// Whether `Lookup` gathers in two stages (Aim(), Sample(); RenderPlainViews).
-template<typename Lookup, typename = void>
-struct Staged : std::false_type
-{
-};
-template<typename Lookup>
-struct Staged<Lookup, std::void_t<typename Lookup::Aimed>> : std::true_type
-{
-};
-} // namespace detail
-
 /**
  * RenderView for the rays through the pixels (xs[i], y), i < count <=
  * MaximumPlainBatch, xs ascending, of a frame, rays that no box may claim
- * (RenderWalk() false: the frame has no box or no labels, the ray's tile
- * lists none or its walk finds none): the same results, into `seen`. With a lookup that
- * gathers in two stages (SamplerLookup: AimBatch() and Sample()), the batch
- * runs the first stage, the rays' geometry, for every ray before the
- * second, the texels, for any (and the first stage may bound the batch's
- * geometry at once: LightFieldSampler::EntrySectors()). A ray's lookup is
- * one dependent chain of divisions and square roots (some 900
- * instructions, more than the processor's reorder window holds), so looked
- * up ray after ray, the rays do not overlap; the first stages of
- * neighbouring rays, run back to back, do.
+ * (not walked by RenderWalks(): the frame has no box or no labels, the
+ * ray's tile lists none or its walk finds none): the same results, into
+ * `seen`. With a lookup that gathers in two stages (SamplerLookup:
+ * AimBatch() and Sample()), the batch runs the first stage, the rays'
+ * geometry, for every ray before the second, the texels, for any (and the
+ * first stage may bound the batch's geometry at once: LightFieldSampler::
+ * EntrySectors()). A ray's lookup is one dependent chain of divisions and
+ * square roots (some 900 instructions, more than the processor's reorder
+ * window holds), so looked up ray after ray, the rays do not overlap; the
+ * first stages of neighbouring rays, run back to back, do.
  */
 template<typename Lookup>
 void RenderPlainViews(const FrameCage& cage,
@@ -1886,87 +1949,152 @@ void RenderPlainViews(const FrameCage& cage,
 }
 
 /**
- * RenderView for the ray through pixel (x, y) of a frame, into `seen`, when
- * a box may claim the ray: the frame has labels and the ray's walk finds a
- * box (FrameCage::StartWalk()). The boxes are tried and warped through
- * `cage`, front to back and only as far as needed. On return the first
- * scratch.Handed of scratch.Segments are the ray's intervals up to the one
- * that gave the pixel (all of them when none did), but those of boxes that
- * did not move and whose label the view ray does not show.
+ * RenderView for the rays through the pixels (xs[i], y), i < count <=
+ * MaximumPlainBatch, of a frame, into seen[i], when a box may claim the
+ * ray (walked[i]): the frame has labels and the ray's walk finds a box
+ * (FrameCage::StartWalk()). The boxes are tried and warped through `cage`,
+ * front to back and only as far as needed, ray i in scratch[i]. On return
+ * the first scratch[i].Handed of scratch[i].Segments are the ray's
+ * intervals up to the one that gave the pixel (all of them when none did),
+ * but those of boxes that did not move and whose label the view ray does
+ * not show.
  *
- * False, `seen` untouched: no box may claim the ray, which sees what
- * RenderPlainViews() gives it. A frame's renderer batches those rays, and
- * calls RenderWalk only in the tiles that list a box (FrameCage::
+ * walked[i] false, seen[i] untouched: no box may claim the ray, which sees
+ * what RenderPlainViews() gives it. A frame's renderer batches those rays,
+ * and calls RenderWalks only in the tiles that list a box (FrameCage::
  * CountCandidates(): 40 800 of the 3-box swim's 262 000 rays, 3 400 of
  * which meet none).
+ *
+ * With a lookup that gathers in two stages, every ray's first interval is
+ * taken (its boxes warped) before any ray's walk goes on, and the warped
+ * rays of those of moved boxes are aimed in one batch (AimBatch() from an
+ * origin per ray): each one's geometry is a long dependent chain, as a
+ * plain ray's (RenderPlainViews()), and the chains of the batch overlap.
+ * A ray whose walk may meet a box that did not move takes its first
+ * interval in its walk as the others (whether such a box is warped
+ * depends on the view ray's own lookup).
  */
 template<typename Lookup>
-bool RenderWalk(const FrameCage& cage,
-  int x,
+void RenderWalks(const FrameCage& cage,
+  const int* xs,
   int y,
+  int count,
   const Lookup& lookup,
   const RenderViewSettings& settings,
-  FrameRayScratch& scratch,
-  ViewSample& seen)
+  FrameRayScratch* scratch,
+  ViewSample* seen,
+  bool* walked)
 {
   if (!settings.UseLabels)
   {
-    return false;
+    std::fill(walked, walked + count, false);
+    return;
   }
-  const glm::dvec3 d = cage.Direction(x, y);
-  if (cage.StartWalk(x, y, d, scratch) == 0)
+  const std::vector<RenderBox>& boxes = *cage.Boxes;
+  glm::dvec3 d[MaximumPlainBatch];
+  detail::PrimedSegment<Lookup> primed[MaximumPlainBatch];
+  bool taken[MaximumPlainBatch]; // the ray's first interval is primed[i].Segment
+  for (int i = 0; i < count; ++i)
   {
-    return false;
-  }
-  // (The widened search reads scratch.Segments when no interval matched: the
-  // walk then handed every one out.)
-  seen = detail::ShadeView(
-    cage.Eye,
-    d,
-    *cage.Boxes,
-    lookup,
-    settings,
-    true,
-    [&](detail::ViewRayLook<Lookup>& view, const detail::RunState& run)
+    d[i] = cage.Direction(xs[i], y);
+    walked[i] = cage.StartWalk(xs[i], y, d[i], scratch[i]) > 0;
+    taken[i] = detail::Staged<Lookup>::value && walked[i] &&
+      std::all_of(scratch[i].Entries.begin(),
+        scratch[i].Entries.end(),
+        [&](const WalkEntry& entry) { return boxes[entry.Box].Moved; });
+    if (taken[i])
     {
-      // (Once every box of the walk is warped, there is none left to leave
-      // out: most rays that meet a box of the swim have one.)
-      const bool warping = scratch.NextEntry < scratch.Entries.size();
-      if (warping && run.Looked && run.Looked != scratch.RunSkipped)
+      // The walk's first step (the first call of `next` below: nothing looked
+      // up yet, no box of the walk at rest to skip).
+      primed[i].Segment = cage.NextSegment(d[i], scratch[i], [](int) { return false; });
+    }
+  }
+  typename detail::FirstStage<Lookup>::type aims[MaximumPlainBatch]; // (PrimedSegment::Aim)
+  if constexpr (detail::Staged<Lookup>::value)
+  {
+    glm::dvec3 origins[MaximumPlainBatch], directions[MaximumPlainBatch];
+    bool aimed[MaximumPlainBatch];
+    int rays[MaximumPlainBatch];
+    int n = 0;
+    for (int i = 0; i < count; ++i)
+    {
+      if (taken[i] && primed[i].Segment)
       {
-        // The run was looked up: its pieces behind are not warped either.
-        cage.FollowRun(*run.Looked, cage.Boxes->size(), scratch);
-        cage.LeaveOut(scratch.Chain.size(), scratch);
-        scratch.RunSkipped = run.Looked;
+        const WarpedSegment& segment = primed[i].Segment->Segment;
+        origins[n] = segment.RestEnter;
+        directions[n] = segment.RestExit - segment.RestEnter;
+        rays[n++] = i;
       }
-      else if (warping && run.Deferred && run.Deferred != scratch.RunSkipped &&
-        detail::PiecesAhead(run.Focal) > 0)
+    }
+    lookup.AimBatch(origins, directions, n, aims, aimed);
+    for (int k = 0; k < n; ++k)
+    {
+      primed[rays[k]].Aim = &aims[k];
+      primed[rays[k]].Found = aimed[k];
+    }
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    if (!walked[i])
+    {
+      continue;
+    }
+    FrameRayScratch& ray = scratch[i];
+    bool first = taken[i];
+    // (The widened search reads ray.Segments when no interval matched: the
+    // walk then handed every one out.)
+    seen[i] = detail::ShadeView(
+      cage.Eye,
+      d[i],
+      boxes,
+      lookup,
+      settings,
+      true,
+      [&](detail::ViewRayLook<Lookup>& view, const detail::RunState& run) -> BoxSegment*
       {
-        // (One piece more than the jump: the run's last is never left out.)
-        cage.FollowRun(*run.Deferred, detail::PiecesAhead(run.Focal) + 1, scratch);
-        scratch.Landing =
-          cage.LeaveOut(detail::PiecesLeftOut(run.Focal, scratch.Chain.size()), scratch);
-        scratch.RunSkipped = run.Deferred;
-      }
-      // A box that did not move shows the view ray's own label (ShadeSegments):
-      // when that is not its label, none of its intervals can give the pixel
-      // (and the widened search only tries moved boxes), so it is not warped.
-      return cage.NextSegment(d,
-        scratch,
-        [&](int b)
+        if (first)
         {
-          const RenderBox& box = (*cage.Boxes)[b];
-          return !box.Moved && view.Look() != box.Label;
-        });
-    },
-    scratch.Segments);
-  return true;
+          first = false;
+          return primed[i].Segment;
+        }
+        // (Once every box of the walk is warped, there is none left to leave
+        // out: most rays that meet a box of the swim have one.)
+        const bool warping = ray.NextEntry < ray.Entries.size();
+        if (warping && run.Looked && run.Looked != ray.RunSkipped)
+        {
+          // The run was looked up: its pieces behind are not warped either.
+          cage.FollowRun(*run.Looked, boxes.size(), ray);
+          cage.LeaveOut(ray.Chain.size(), ray);
+          ray.RunSkipped = run.Looked;
+        }
+        else if (warping && run.Deferred && run.Deferred != ray.RunSkipped &&
+          detail::PiecesAhead(run.Focal) > 0)
+        {
+          // (One piece more than the jump: the run's last is never left out.)
+          cage.FollowRun(*run.Deferred, detail::PiecesAhead(run.Focal) + 1, ray);
+          ray.Landing = cage.LeaveOut(detail::PiecesLeftOut(run.Focal, ray.Chain.size()), ray);
+          ray.RunSkipped = run.Deferred;
+        }
+        // A box that did not move shows the view ray's own label (ShadeSegments):
+        // when that is not its label, none of its intervals can give the pixel
+        // (and the widened search only tries moved boxes), so it is not warped.
+        return cage.NextSegment(d[i],
+          ray,
+          [&](int b)
+          {
+            const RenderBox& box = boxes[b];
+            return !box.Moved && view.Look() != box.Label;
+          });
+      },
+      ray.Segments,
+      &primed[i]);
+  }
 }
 
 /**
  * RenderView for the ray through pixel (x, y) of a frame: the same result,
- * with the boxes tried and warped through `cage` (RenderWalk()); scratch as
- * RenderWalk leaves it.
+ * with the boxes tried and warped through `cage` (RenderWalks(), a batch
+ * of one); scratch as RenderWalks leaves it.
  */
 template<typename Lookup>
 ViewSample RenderView(const FrameCage& cage,
@@ -1977,7 +2105,9 @@ ViewSample RenderView(const FrameCage& cage,
   FrameRayScratch& scratch)
 {
   ViewSample seen;
-  if (!RenderWalk(cage, x, y, lookup, settings, scratch, seen))
+  bool walked;
+  RenderWalks(cage, &x, y, 1, lookup, settings, &scratch, &seen, &walked);
+  if (!walked)
   {
     scratch.Segments.clear();
     scratch.Handed = 0;
