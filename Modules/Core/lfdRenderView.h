@@ -84,6 +84,7 @@
 #include <optional>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace lfd
@@ -1171,21 +1172,6 @@ struct FirstStage<Lookup, false>
 };
 
 /**
- * A ray's first interval, taken and aimed ahead of its walk with those of
- * other rays (RenderWalks()): Segment (null: none, the walk ends at once)
- * and, with a lookup that gathers in two stages, its warped ray's first
- * stage (Aim; null: not aimed ahead, the walk gathers it) and whether the
- * ray may have samples (Found: Aim's result).
- */
-template<typename Lookup>
-struct PrimedSegment
-{
-  BoxSegment* Segment = nullptr;
-  const typename FirstStage<Lookup>::type* Aim = nullptr;
-  bool Found = false;
-};
-
-/**
  * The light field's samples along the view ray itself, gathered at most once
  * per ray: a box that did not move warps the ray onto itself, so every
  * interval in such a box, and the final undeformed lookup, see exactly
@@ -1391,6 +1377,131 @@ inline std::size_t PiecesLeftOut(double focal, std::size_t following)
 }
 
 /**
+ * Where the warped ray of `entry` samples the cameras, in units of its rest
+ * segment (RenderViewSettings::FocalBeforeLookup; NaN without it, or for a
+ * box that did not move). Beyond 1, the lookup of `entry` waits for the
+ * next interval; in [0, 1], `entry` holds its run's focal point.
+ */
+template<typename Lookup>
+double SegmentFocal(const std::vector<RenderBox>& boxes,
+  const Lookup& lookup,
+  const RenderViewSettings& settings,
+  const BoxSegment& entry)
+{
+  if (!settings.FocalBeforeLookup || !boxes[entry.Box].Moved)
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  const WarpedSegment& segment = entry.Segment;
+  return lookup.FocalParameter(segment.RestEnter, segment.RestExit - segment.RestEnter);
+}
+
+/// Where ShadeSegments is in a run, for the walk that hands its intervals out.
+struct RunState
+{
+  const BoxSegment* Looked = nullptr;   ///< the interval the run was looked up from
+  const BoxSegment* Deferred = nullptr; ///< the interval waiting for the next one
+  double Focal = 0.0;                   ///< the deferred one's SegmentFocal (> 1)
+};
+
+/**
+ * Which of a ray's intervals ShadeSegments looks up, and in what order: the
+ * rules on runs of its description, apart from the lookups (which decide
+ * only when the walk stops), so that RenderWalks() can take the rays of a
+ * batch to their first lookup before any ray is looked up.
+ */
+struct RunCursor
+{
+  BoxSegment* Looked = nullptr;   ///< the last interval of a run that was looked up
+  BoxSegment* Deferred = nullptr; ///< an interval whose lookup waits for the next one
+  double DeferredFocal = 0.0;
+  /// Handed out behind a deferred interval that ended its run (Waits):
+  /// looked up after it.
+  BoxSegment* Waiting = nullptr;
+  bool Waits = false;
+
+  /**
+   * The next interval to look up, of those `next(view, run)` hands out
+   * front to back (`focal`: its SegmentFocal, Shade's `known`); nullptr
+   * when none is left.
+   */
+  template<typename Lookup, typename Next>
+  BoxSegment* Advance(const std::vector<RenderBox>& boxes,
+    const Lookup& lookup,
+    const RenderViewSettings& settings,
+    Next& next,
+    ViewRayLook<Lookup>& view,
+    double& focal)
+  {
+    for (;;)
+    {
+      BoxSegment* handed = this->Waiting;
+      if (this->Waits)
+      {
+        this->Waits = false;
+      }
+      else
+      {
+        handed = next(view, RunState{ this->Looked, this->Deferred, this->DeferredFocal });
+        if (this->Deferred && !(handed && GoesOn(boxes, *this->Deferred, *handed)))
+        {
+          // The run ends with the deferred interval: it is looked up after all.
+          focal = this->DeferredFocal;
+          this->Waiting = handed;
+          this->Waits = true;
+          return std::exchange(this->Deferred, nullptr);
+        }
+        this->Deferred = nullptr;
+      }
+      if (!handed)
+      {
+        return nullptr;
+      }
+      if (this->Looked && GoesOn(boxes, *this->Looked, *handed))
+      {
+        // The run was looked up from its focal piece: the pieces behind it
+        // sample the cameras at a focal point in front of their entry, about
+        // where that lookup did.
+        this->Looked = handed;
+        continue;
+      }
+      focal = SegmentFocal(boxes, lookup, settings, *handed);
+      if (focal > 1.0)
+      {
+        this->Deferred = handed;
+        this->DeferredFocal = focal;
+        this->Looked = nullptr;
+        continue;
+      }
+      // A run entered behind its focal point is looked up from its first piece:
+      // the pieces behind sample the cameras near where it did too (against
+      // the ground truth, looking each up was worse: a dragged slab corner,
+      // 23.60 dB; this, 25.92 dB; only runs holding their focal point, 23.65).
+      this->Looked = std::isnan(focal) ? nullptr : handed;
+      return handed;
+    }
+  }
+};
+
+/**
+ * A ray's walk taken ahead to its first lookup with those of other rays
+ * (RenderWalks()): Run, where the walk then is; Segment, the interval
+ * looked up first (nullptr: none, the walk ends at once), and Focal, its
+ * SegmentFocal; with a lookup that gathers in two stages, the first stage
+ * of its warped ray (Aim; nullptr: not aimed ahead, the walk gathers it)
+ * and whether the ray may have samples (Found: the first stage's result).
+ */
+template<typename Lookup>
+struct PrimedSegment
+{
+  RunCursor Run;
+  BoxSegment* Segment = nullptr;
+  double Focal = 0.0;
+  const typename FirstStage<Lookup>::type* Aim = nullptr;
+  bool Found = false;
+};
+
+/**
  * One ray's walk through its intervals, front to back (ShadeSegments):
  * composited by label coverage (RenderViewSettings::AntiAliasing) into
  * Composite; the first interval whose warped ray shows its box's label
@@ -1460,29 +1571,8 @@ struct SegmentWalk
   }
 
   /**
-   * Where the warped ray of `entry` samples the cameras, in units of its
-   * rest segment (RenderViewSettings::FocalBeforeLookup; NaN without it, or
-   * for a box that did not move). Beyond 1, the lookup of `entry` waits for
-   * the next interval; in [0, 1], `entry` holds its run's focal point.
-   */
-  double Focal(const BoxSegment& entry) const
-  {
-    if (!this->Settings.FocalBeforeLookup || !this->Boxes[entry.Box].Moved)
-    {
-      return std::numeric_limits<double>::quiet_NaN();
-    }
-    const WarpedSegment& segment = entry.Segment;
-    return this->Light.FocalParameter(segment.RestEnter, segment.RestExit - segment.RestEnter);
-  }
-
-  bool Continues(const BoxSegment& entry, const BoxSegment& next) const
-  {
-    return GoesOn(this->Boxes, entry, next);
-  }
-
-  /**
    * Looks `entry` up and composites it (records what it showed in
-   * BoxSegment::Seen); `known` is Focal(entry), so that a focal point found
+   * BoxSegment::Seen); `known` is its SegmentFocal, so that a focal point found
    * before the lookup is not found again.
    */
   void Shade(BoxSegment& entry, double known)
@@ -1594,19 +1684,12 @@ struct SegmentWalk
   }
 };
 
-/// Where ShadeSegments is in a run, for the walk that hands its intervals out.
-struct RunState
-{
-  const BoxSegment* Looked = nullptr;   ///< the interval the run was looked up from
-  const BoxSegment* Deferred = nullptr; ///< the interval waiting for the next one
-  double Focal = 0.0;                   ///< the deferred one's SegmentWalk::Focal (> 1)
-};
-
 /**
  * The intervals, front to back (`next(view, run)` hands them out, nullptr
  * after the last; a pointer it returned stays valid for the ray; `run` is a
- * RunState), shaded by SegmentWalk into `result` and `composite`. True when
- * an interval matched.
+ * RunState), shaded by SegmentWalk into `result` and `composite`, in
+ * RunCursor's order; `primed`, if not null, the walk taken ahead to its
+ * first lookup (RenderWalks()). True when an interval matched.
  *
  * With RenderViewSettings::FocalBeforeLookup, a run of intervals of a moved
  * part (boxes of one label, each entered where the one before is left: the
@@ -1636,48 +1719,23 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
 {
   SegmentWalk<Lookup> walk{ boxes, lookup, settings, view, result, composite };
   walk.Primed = primed;
-  BoxSegment* deferred = nullptr; // an interval whose lookup waits for the next one
-  double deferredFocal = 0.0;
-  BoxSegment* looked = nullptr; // the last interval of a run that was looked up
-  while (walk.Going())
+  RunCursor run;
+  double focal = 0.0;
+  BoxSegment* entry = nullptr;
+  if (primed)
   {
-    BoxSegment* handed = next(view, RunState{ looked, deferred, deferredFocal });
-    if (deferred && !(handed && walk.Continues(*deferred, *handed)))
-    {
-      // The run ends with the deferred interval: it is looked up after all.
-      walk.Shade(*deferred, deferredFocal);
-      if (!walk.Going())
-      {
-        break;
-      }
-    }
-    deferred = nullptr;
-    if (!handed)
-    {
-      break;
-    }
-    if (looked && walk.Continues(*looked, *handed))
-    {
-      // The run was looked up from its focal piece: the pieces behind it
-      // sample the cameras at a focal point in front of their entry, about
-      // where that lookup did.
-      looked = handed;
-      continue;
-    }
-    const double focal = walk.Focal(*handed);
-    if (focal > 1.0)
-    {
-      deferred = handed;
-      deferredFocal = focal;
-      looked = nullptr;
-      continue;
-    }
-    walk.Shade(*handed, focal);
-    // A run entered behind its focal point is looked up from its first piece:
-    // the pieces behind sample the cameras near where it did too (against
-    // the ground truth, looking each up was worse: a dragged slab corner,
-    // 23.60 dB; this, 25.92 dB; only runs holding their focal point, 23.65).
-    looked = std::isnan(focal) ? nullptr : handed;
+    run = primed->Run;
+    entry = primed->Segment;
+    focal = primed->Focal;
+  }
+  else
+  {
+    entry = run.Advance(boxes, lookup, settings, next, view, focal);
+  }
+  while (entry)
+  {
+    walk.Shade(*entry, focal);
+    entry = walk.Going() ? run.Advance(boxes, lookup, settings, next, view, focal) : nullptr;
   }
   if (walk.Held.Label >= 0)
   {
@@ -1779,13 +1837,12 @@ inline ViewSample Composite(const CoverageComposite& front,
 }
 
 /**
- * RENDER_VIEW (Sec. 6) of the ray o + t d whose intervals `next(view)`
- * hands out front to back into `segments` (`any`: the ray may have some);
- * `primed`, if not null, the first of them aimed ahead (ShadeSegments).
+ * RENDER_VIEW (Sec. 6) of the ray `view` looks up, whose intervals
+ * `next(view, run)` hands out front to back into `segments` (`any`: the ray
+ * may have some); `primed` as ShadeSegments'.
  */
 template<typename Lookup, typename Next>
-ViewSample ShadeView(const glm::dvec3& o,
-  const glm::dvec3& d,
+ViewSample ShadeView(ViewRayLook<Lookup>& view,
   const std::vector<RenderBox>& boxes,
   const Lookup& lookup,
   const RenderViewSettings& settings,
@@ -1794,7 +1851,6 @@ ViewSample ShadeView(const glm::dvec3& o,
   const std::vector<BoxSegment>& segments,
   const PrimedSegment<Lookup>* primed)
 {
-  ViewRayLook<Lookup> view{ lookup, o, d };
   CoverageComposite front;
   if (settings.UseLabels && !boxes.empty())
   {
@@ -1853,9 +1909,9 @@ ViewSample RenderView(const glm::dvec3& o,
   }
   std::size_t k = 0;
   const BoxSegment* jumped = nullptr;
+  detail::ViewRayLook<Lookup> view{ lookup, o, d };
   return detail::ShadeView(
-    o,
-    d,
+    view,
     boxes,
     lookup,
     settings,
@@ -1965,14 +2021,13 @@ void RenderPlainViews(const FrameCage& cage,
  * CountCandidates(): 40 800 of the 3-box swim's 262 000 rays, 3 400 of
  * which meet none).
  *
- * With a lookup that gathers in two stages, every ray's first interval is
- * taken (its boxes warped) before any ray's walk goes on, and the warped
- * rays of those of moved boxes are aimed in one batch (AimBatch() from an
- * origin per ray): each one's geometry is a long dependent chain, as a
- * plain ray's (RenderPlainViews()), and the chains of the batch overlap.
- * A ray whose walk may meet a box that did not move takes its first
- * interval in its walk as the others (whether such a box is warped
- * depends on the view ray's own lookup).
+ * Every ray's walk is taken to its first lookup (RunCursor: its boxes
+ * warped, a slab run's pieces in front of its focal point left out) before
+ * any ray's walk goes on; with a lookup that gathers in two stages, the
+ * warped rays of those first lookups (of moved boxes) are aimed in one
+ * batch (AimBatch() from an origin per ray): each one's geometry is a long
+ * dependent chain, as a plain ray's (RenderPlainViews()), and the chains
+ * of the batch overlap. Only what the walk looks up is aimed.
  */
 template<typename Lookup>
 void RenderWalks(const FrameCage& cage,
@@ -1992,21 +2047,54 @@ void RenderWalks(const FrameCage& cage,
   }
   const std::vector<RenderBox>& boxes = *cage.Boxes;
   glm::dvec3 d[MaximumPlainBatch];
+  // The intervals of ray i, handed out one by one (ShadeSegments' `next`).
+  const auto nextOf = [&](int i)
+  {
+    return [&, i](detail::ViewRayLook<Lookup>& view, const detail::RunState& run)
+    {
+      FrameRayScratch& ray = scratch[i];
+      // (Once every box of the walk is warped, there is none left to leave
+      // out: most rays that meet a box of the swim have one.)
+      const bool warping = ray.NextEntry < ray.Entries.size();
+      if (warping && run.Looked && run.Looked != ray.RunSkipped)
+      {
+        // The run was looked up: its pieces behind are not warped either.
+        cage.FollowRun(*run.Looked, boxes.size(), ray);
+        cage.LeaveOut(ray.Chain.size(), ray);
+        ray.RunSkipped = run.Looked;
+      }
+      else if (warping && run.Deferred && run.Deferred != ray.RunSkipped &&
+        detail::PiecesAhead(run.Focal) > 0)
+      {
+        // (One piece more than the jump: the run's last is never left out.)
+        cage.FollowRun(*run.Deferred, detail::PiecesAhead(run.Focal) + 1, ray);
+        ray.Landing = cage.LeaveOut(detail::PiecesLeftOut(run.Focal, ray.Chain.size()), ray);
+        ray.RunSkipped = run.Deferred;
+      }
+      // A box that did not move shows the view ray's own label (ShadeSegments):
+      // when that is not its label, none of its intervals can give the pixel
+      // (and the widened search only tries moved boxes), so it is not warped.
+      return cage.NextSegment(d[i],
+        ray,
+        [&](int b)
+        {
+          const RenderBox& box = boxes[b];
+          return !box.Moved && view.Look() != box.Label;
+        });
+    };
+  };
+  std::optional<detail::ViewRayLook<Lookup>> views[MaximumPlainBatch];
   detail::PrimedSegment<Lookup> primed[MaximumPlainBatch];
-  bool taken[MaximumPlainBatch]; // the ray's first interval is primed[i].Segment
   for (int i = 0; i < count; ++i)
   {
     d[i] = cage.Direction(xs[i], y);
     walked[i] = cage.StartWalk(xs[i], y, d[i], scratch[i]) > 0;
-    taken[i] = detail::Staged<Lookup>::value && walked[i] &&
-      std::all_of(scratch[i].Entries.begin(),
-        scratch[i].Entries.end(),
-        [&](const WalkEntry& entry) { return boxes[entry.Box].Moved; });
-    if (taken[i])
+    if (walked[i])
     {
-      // The walk's first step (the first call of `next` below: nothing looked
-      // up yet, no box of the walk at rest to skip).
-      primed[i].Segment = cage.NextSegment(d[i], scratch[i], [](int) { return false; });
+      views[i].emplace(lookup, cage.Eye, d[i]);
+      auto next = nextOf(i);
+      primed[i].Segment =
+        primed[i].Run.Advance(boxes, lookup, settings, next, *views[i], primed[i].Focal);
     }
   }
   typename detail::FirstStage<Lookup>::type aims[MaximumPlainBatch]; // (PrimedSegment::Aim)
@@ -2018,12 +2106,17 @@ void RenderWalks(const FrameCage& cage,
     int n = 0;
     for (int i = 0; i < count; ++i)
     {
-      if (taken[i] && primed[i].Segment)
+      // (SegmentWalk::Shade gathers the warped rays of moved boxes only, and
+      // only when they have a direction.)
+      const BoxSegment* first = walked[i] ? primed[i].Segment : nullptr;
+      if (first && boxes[first->Box].Moved)
       {
-        const WarpedSegment& segment = primed[i].Segment->Segment;
-        origins[n] = segment.RestEnter;
-        directions[n] = segment.RestExit - segment.RestEnter;
-        rays[n++] = i;
+        origins[n] = first->Segment.RestEnter;
+        directions[n] = first->Segment.RestExit - first->Segment.RestEnter;
+        if (glm::dot(directions[n], directions[n]) > 0.0)
+        {
+          rays[n++] = i;
+        }
       }
     }
     lookup.AimBatch(origins, directions, n, aims, aimed);
@@ -2035,59 +2128,13 @@ void RenderWalks(const FrameCage& cage,
   }
   for (int i = 0; i < count; ++i)
   {
-    if (!walked[i])
+    if (walked[i])
     {
-      continue;
+      // (The widened search reads scratch[i].Segments when no interval
+      // matched: the walk then handed every one out.)
+      seen[i] = detail::ShadeView(
+        *views[i], boxes, lookup, settings, true, nextOf(i), scratch[i].Segments, &primed[i]);
     }
-    FrameRayScratch& ray = scratch[i];
-    bool first = taken[i];
-    // (The widened search reads ray.Segments when no interval matched: the
-    // walk then handed every one out.)
-    seen[i] = detail::ShadeView(
-      cage.Eye,
-      d[i],
-      boxes,
-      lookup,
-      settings,
-      true,
-      [&](detail::ViewRayLook<Lookup>& view, const detail::RunState& run) -> BoxSegment*
-      {
-        if (first)
-        {
-          first = false;
-          return primed[i].Segment;
-        }
-        // (Once every box of the walk is warped, there is none left to leave
-        // out: most rays that meet a box of the swim have one.)
-        const bool warping = ray.NextEntry < ray.Entries.size();
-        if (warping && run.Looked && run.Looked != ray.RunSkipped)
-        {
-          // The run was looked up: its pieces behind are not warped either.
-          cage.FollowRun(*run.Looked, boxes.size(), ray);
-          cage.LeaveOut(ray.Chain.size(), ray);
-          ray.RunSkipped = run.Looked;
-        }
-        else if (warping && run.Deferred && run.Deferred != ray.RunSkipped &&
-          detail::PiecesAhead(run.Focal) > 0)
-        {
-          // (One piece more than the jump: the run's last is never left out.)
-          cage.FollowRun(*run.Deferred, detail::PiecesAhead(run.Focal) + 1, ray);
-          ray.Landing = cage.LeaveOut(detail::PiecesLeftOut(run.Focal, ray.Chain.size()), ray);
-          ray.RunSkipped = run.Deferred;
-        }
-        // A box that did not move shows the view ray's own label (ShadeSegments):
-        // when that is not its label, none of its intervals can give the pixel
-        // (and the widened search only tries moved boxes), so it is not warped.
-        return cage.NextSegment(d[i],
-          ray,
-          [&](int b)
-          {
-            const RenderBox& box = boxes[b];
-            return !box.Moved && view.Look() != box.Label;
-          });
-      },
-      ray.Segments,
-      &primed[i]);
   }
 }
 
