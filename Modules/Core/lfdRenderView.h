@@ -81,6 +81,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <new>
 #include <optional>
 #include <tuple>
 #include <type_traits>
@@ -692,10 +693,13 @@ struct FrameCage
    * The next interval, front to back (in CollectSegments' order), of the ray
    * StartWalk started, handed out of scratch.Segments; nullptr after the last.
    * Boxes for which `skip(box index)` is true are not warped: their
-   * intervals are left out.
+   * intervals are left out. (Always inlined: a step of the walk, see
+   * detail::RunCursor::Advance.)
    */
   template<typename Skip>
-  BoxSegment* NextSegment(const glm::dvec3& d, FrameRayScratch& scratch, Skip&& skip) const
+  __attribute__((always_inline)) BoxSegment* NextSegment(const glm::dvec3& d,
+    FrameRayScratch& scratch,
+    Skip&& skip) const
   {
     std::vector<BoxSegment>& segments = scratch.Segments;
     // (Counted here: segments.size() divides by the 136 bytes of an interval.)
@@ -1381,9 +1385,10 @@ inline std::size_t PiecesLeftOut(double focal, std::size_t following)
  * segment (RenderViewSettings::FocalBeforeLookup; NaN without it, or for a
  * box that did not move). Beyond 1, the lookup of `entry` waits for the
  * next interval; in [0, 1], `entry` holds its run's focal point.
+ * (Always inlined: a step of the walk, see RunCursor::Advance.)
  */
 template<typename Lookup>
-double SegmentFocal(const std::vector<RenderBox>& boxes,
+__attribute__((always_inline)) inline double SegmentFocal(const std::vector<RenderBox>& boxes,
   const Lookup& lookup,
   const RenderViewSettings& settings,
   const BoxSegment& entry)
@@ -1425,8 +1430,12 @@ struct RunCursor
    * front to back (`focal`: its SegmentFocal, Shade's `known`); nullptr
    * when none is left.
    */
+  // (Inlined into both its callers, RenderWalks' first steps and
+  // ShadeSegments, with the walk's steps it calls, as one loop: as calls,
+  // they cost the 100-slab bend 255.0 M instructions a frame, 244.3 M
+  // inlined.)
   template<typename Lookup, typename Next>
-  BoxSegment* Advance(const std::vector<RenderBox>& boxes,
+  __attribute__((always_inline)) BoxSegment* Advance(const std::vector<RenderBox>& boxes,
     const Lookup& lookup,
     const RenderViewSettings& settings,
     Next& next,
@@ -2004,6 +2013,60 @@ void RenderPlainViews(const FrameCage& cage,
   }
 }
 
+namespace detail
+{
+/**
+ * The intervals of the ray `cage` walks in `Ray` (FrameCage::StartWalk()),
+ * handed out one by one as ShadeSegments' `next` (RenderWalks()): boxes
+ * warped only as far as needed, a run's pieces that its lookup leaves out
+ * not warped.
+ */
+template<typename Lookup>
+struct FrameWalk
+{
+  const FrameCage& Cage;
+  FrameRayScratch& Ray;
+  const glm::dvec3& D;
+
+  // (Inlined: see RunCursor::Advance.)
+  __attribute__((always_inline)) BoxSegment* operator()(ViewRayLook<Lookup>& view,
+    const RunState& run) const
+  {
+    const FrameCage& cage = this->Cage;
+    const std::vector<RenderBox>& boxes = *cage.Boxes;
+    FrameRayScratch& ray = this->Ray;
+    // (Once every box of the walk is warped, there is none left to leave
+    // out: most rays that meet a box of the swim have one.)
+    const bool warping = ray.NextEntry < ray.Entries.size();
+    if (warping && run.Looked && run.Looked != ray.RunSkipped)
+    {
+      // The run was looked up: its pieces behind are not warped either.
+      cage.FollowRun(*run.Looked, boxes.size(), ray);
+      cage.LeaveOut(ray.Chain.size(), ray);
+      ray.RunSkipped = run.Looked;
+    }
+    else if (warping && run.Deferred && run.Deferred != ray.RunSkipped &&
+      PiecesAhead(run.Focal) > 0)
+    {
+      // (One piece more than the jump: the run's last is never left out.)
+      cage.FollowRun(*run.Deferred, PiecesAhead(run.Focal) + 1, ray);
+      ray.Landing = cage.LeaveOut(PiecesLeftOut(run.Focal, ray.Chain.size()), ray);
+      ray.RunSkipped = run.Deferred;
+    }
+    // A box that did not move shows the view ray's own label (ShadeSegments):
+    // when that is not its label, none of its intervals can give the pixel
+    // (and the widened search only tries moved boxes), so it is not warped.
+    return cage.NextSegment(this->D,
+      ray,
+      [&](int b)
+      {
+        const RenderBox& box = boxes[b];
+        return !box.Moved && view.Look() != box.Label;
+      });
+  }
+};
+} // namespace detail
+
 /**
  * RenderView for the rays through the pixels (xs[i], y), i < count <=
  * MaximumPlainBatch, of a frame, into seen[i], when a box may claim the
@@ -2047,43 +2110,15 @@ void RenderWalks(const FrameCage& cage,
   }
   const std::vector<RenderBox>& boxes = *cage.Boxes;
   glm::dvec3 d[MaximumPlainBatch];
-  // The intervals of ray i, handed out one by one (ShadeSegments' `next`).
-  const auto nextOf = [&](int i)
+  // The view rays' lookups, constructed for the walked rays only (as an
+  // array of std::optional, all ~11 KB would be zeroed for every batch).
+  static_assert(std::is_trivially_destructible<detail::ViewRayLook<Lookup>>::value,
+    "the views are never destroyed");
+  union Views
   {
-    return [&, i](detail::ViewRayLook<Lookup>& view, const detail::RunState& run)
-    {
-      FrameRayScratch& ray = scratch[i];
-      // (Once every box of the walk is warped, there is none left to leave
-      // out: most rays that meet a box of the swim have one.)
-      const bool warping = ray.NextEntry < ray.Entries.size();
-      if (warping && run.Looked && run.Looked != ray.RunSkipped)
-      {
-        // The run was looked up: its pieces behind are not warped either.
-        cage.FollowRun(*run.Looked, boxes.size(), ray);
-        cage.LeaveOut(ray.Chain.size(), ray);
-        ray.RunSkipped = run.Looked;
-      }
-      else if (warping && run.Deferred && run.Deferred != ray.RunSkipped &&
-        detail::PiecesAhead(run.Focal) > 0)
-      {
-        // (One piece more than the jump: the run's last is never left out.)
-        cage.FollowRun(*run.Deferred, detail::PiecesAhead(run.Focal) + 1, ray);
-        ray.Landing = cage.LeaveOut(detail::PiecesLeftOut(run.Focal, ray.Chain.size()), ray);
-        ray.RunSkipped = run.Deferred;
-      }
-      // A box that did not move shows the view ray's own label (ShadeSegments):
-      // when that is not its label, none of its intervals can give the pixel
-      // (and the widened search only tries moved boxes), so it is not warped.
-      return cage.NextSegment(d[i],
-        ray,
-        [&](int b)
-        {
-          const RenderBox& box = boxes[b];
-          return !box.Moved && view.Look() != box.Label;
-        });
-    };
-  };
-  std::optional<detail::ViewRayLook<Lookup>> views[MaximumPlainBatch];
+    Views() {} // (none constructed)
+    detail::ViewRayLook<Lookup> Ray[MaximumPlainBatch];
+  } views;
   detail::PrimedSegment<Lookup> primed[MaximumPlainBatch];
   for (int i = 0; i < count; ++i)
   {
@@ -2091,10 +2126,10 @@ void RenderWalks(const FrameCage& cage,
     walked[i] = cage.StartWalk(xs[i], y, d[i], scratch[i]) > 0;
     if (walked[i])
     {
-      views[i].emplace(lookup, cage.Eye, d[i]);
-      auto next = nextOf(i);
+      new (&views.Ray[i]) detail::ViewRayLook<Lookup>(lookup, cage.Eye, d[i]);
+      detail::FrameWalk<Lookup> next{ cage, scratch[i], d[i] };
       primed[i].Segment =
-        primed[i].Run.Advance(boxes, lookup, settings, next, *views[i], primed[i].Focal);
+        primed[i].Run.Advance(boxes, lookup, settings, next, views.Ray[i], primed[i].Focal);
     }
   }
   typename detail::FirstStage<Lookup>::type aims[MaximumPlainBatch]; // (PrimedSegment::Aim)
@@ -2132,8 +2167,14 @@ void RenderWalks(const FrameCage& cage,
     {
       // (The widened search reads scratch[i].Segments when no interval
       // matched: the walk then handed every one out.)
-      seen[i] = detail::ShadeView(
-        *views[i], boxes, lookup, settings, true, nextOf(i), scratch[i].Segments, &primed[i]);
+      seen[i] = detail::ShadeView(views.Ray[i],
+        boxes,
+        lookup,
+        settings,
+        true,
+        detail::FrameWalk<Lookup>{ cage, scratch[i], d[i] },
+        scratch[i].Segments,
+        &primed[i]);
     }
   }
 }
