@@ -1356,7 +1356,7 @@ inline bool GoesOn(const std::vector<RenderBox>& boxes,
 
 /**
  * How many pieces of its run ShadeSegments leaves out ahead of an interval
- * whose focal point lies `focal` (> 1, SegmentWalk::Focal) rest segments
+ * whose focal point lies `focal` (> 1, SegmentFocal) rest segments
  * along its warped ray: pieces about as long as it along the ray put the
  * focal point floor(focal) pieces ahead; the walk jumps to the one before
  * and takes the last steps itself.
