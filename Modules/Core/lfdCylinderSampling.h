@@ -1622,15 +1622,38 @@ struct LightFieldSampler
     RayAim* aims,
     bool* aimed) const
   {
+    this->AimBatch<0>(&o, d, count, aims, aimed);
+  }
+
+  /**
+   * Aim() for the rays o[i] + s d[i], i < count, each from its own origin
+   * (the warped rays of several view rays: RenderWalks), into aims[i]: the
+   * same results as ray by ray, as AimBatch() over one origin, but every
+   * sector tried (no bound: the rays share no origin).
+   */
+  void AimBatch(const glm::dvec3* o,
+    const glm::dvec3* d,
+    int count,
+    RayAim* aims,
+    bool* aimed) const
+  {
+    this->AimBatch<1>(o, d, count, aims, aimed);
+  }
+
+  /// AimBatch() from origin o[OriginStep * i] (0: one origin for all rays, 1: one each).
+  template<int OriginStep>
+  void AimBatch(const glm::dvec3* o, const glm::dvec3* d, int count, RayAim* aims, bool* aimed)
+    const
+  {
 #if LFD_AIM_AVX2
     static const bool avx2 = __builtin_cpu_supports("avx2");
     if (avx2)
     {
-      this->AimBatchAvx2(o, d, count, aims, aimed);
+      this->AimBatchAvx2<OriginStep>(o, d, count, aims, aimed);
       return;
     }
 #endif
-    this->AimStages(o, d, count, aims, aimed);
+    this->AimStages<OriginStep>(o, d, count, aims, aimed);
   }
 
 #if LFD_AIM_AVX2
@@ -1639,29 +1662,32 @@ struct LightFieldSampler
    * results as with SSE2 (no instruction of AVX2 rounds differently, and it
    * has no fused multiply-add to contract the stages' products into).
    */
-  __attribute__((target("avx2"))) void AimBatchAvx2(const glm::dvec3& o,
+  template<int OriginStep>
+  __attribute__((target("avx2"))) void AimBatchAvx2(const glm::dvec3* o,
     const glm::dvec3* d,
     int count,
     RayAim* aims,
     bool* aimed) const
   {
-    this->AimStages(o, d, count, aims, aimed);
+    this->AimStages<OriginStep>(o, d, count, aims, aimed);
   }
 #endif
 
   /// AimBatch()'s body, inlined into each of its instruction sets' versions.
-  __attribute__((always_inline)) inline void AimStages(const glm::dvec3& o,
+  template<int OriginStep>
+  __attribute__((always_inline)) inline void AimStages(const glm::dvec3* o,
     const glm::dvec3* d,
     int count,
     RayAim* aims,
     bool* aimed) const
   {
-    const std::uint32_t sectors = this->EntrySectors(o, d, count);
+    const std::uint32_t sectors =
+      OriginStep == 0 ? this->EntrySectors(*o, d, count) : ~std::uint32_t(0);
     if (count > MaximumBatch)
     {
       for (int i = 0; i < count; ++i)
       {
-        aimed[i] = this->Aim(o, d[i], aims[i], sectors);
+        aimed[i] = this->Aim(o[OriginStep * i], d[i], aims[i], sectors);
       }
       return;
     }
@@ -1674,7 +1700,8 @@ struct LightFieldSampler
     int cells[MaximumBatch];
     for (int i = 0; i < count; ++i)
     {
-      const glm::dvec3 focal = FocalPoint(this->Layout->Cyl, o, d[i], this->FocalDistance);
+      const glm::dvec3 focal =
+        FocalPoint(this->Layout->Cyl, o[OriginStep * i], d[i], this->FocalDistance);
       x[i] = focal.x;
       y[i] = focal.y;
       z[i] = focal.z;
@@ -1694,10 +1721,13 @@ struct LightFieldSampler
     const bool proxy = this->Depth.Present();
     for (int i = 0; i < count; ++i)
     {
-      aims[i].Stretch = proxy && this->SurfaceStretch(o, d[i], aims[i].Enter, aims[i].Leave);
+      aims[i].Stretch =
+        proxy && this->SurfaceStretch(o[OriginStep * i], d[i], aims[i].Enter, aims[i].Leave);
     }
     // The rays the hull does not skip before their entry (as Aim()), their
     // directions gathered.
+    // (With one origin each, the origins too.)
+    double ox[MaximumBatch], oy[MaximumBatch], oz[MaximumBatch];
     double dx[MaximumBatch], dy[MaximumBatch], dz[MaximumBatch];
     int kept[MaximumBatch];
     int n = 0;
@@ -1708,6 +1738,12 @@ struct LightFieldSampler
       aims[i].Focal = glm::dvec3(x[i], y[i], z[i]);
       if (!this->SkippedBeforeEntry(cells[i], sectors, aims[i].Stretch))
       {
+        if constexpr (OriginStep != 0)
+        {
+          ox[n] = o[i].x;
+          oy[n] = o[i].y;
+          oz[n] = o[i].z;
+        }
         dx[n] = d[i].x;
         dy[n] = d[i].y;
         dz[n] = d[i].z;
@@ -1719,14 +1755,18 @@ struct LightFieldSampler
     for (int k = 0; k < n; ++k)
     {
       double s, azimuth;
-      const bool hit = this->Entry(o, glm::dvec3(dx[k], dy[k], dz[k]), s, azimuth, heights[k]);
+      const bool hit = this->Entry(OriginStep == 0 ? *o : glm::dvec3(ox[k], oy[k], oz[k]),
+        glm::dvec3(dx[k], dy[k], dz[k]),
+        s,
+        azimuth,
+        heights[k]);
       azimuths[k] = hit ? azimuth : -1.0;
     }
     for (int k = 0; k < n; ++k)
     {
       const int i = kept[k];
       if (azimuths[k] >= 0.0 &&
-        !(hull && this->SkippedAtEntry(o, d[i], azimuths[k], cells[i], aims[i])))
+        !(hull && this->SkippedAtEntry(o[OriginStep * i], d[i], azimuths[k], cells[i], aims[i])))
       {
         aims[i].Azimuth = azimuths[k];
         aims[i].Height = heights[k];

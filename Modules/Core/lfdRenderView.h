@@ -43,7 +43,9 @@
  * batch of rays (SamplerLookup does): a type Aimed, AimBatch(o, d, count,
  * Aimed*, bool* aimed) (the geometry of the rays o + s d[i] through pixels
  * of one row, in order; aimed[i] false: no sample), Sample(o, d, Aimed&,
- * RaySamples&) (Gather's result) and FocalDepth(o, const Aimed&).
+ * RaySamples&) (Gather's result) and FocalDepth(o, const Aimed&); and
+ * AimBatch(const glm::dvec3* o, d, count, Aimed*, bool* aimed), the rays
+ * o[i] + s d[i] from origins of their own (the warped rays of RenderWalks()).
  *
  * A lookup sees the first surface along the whole line of a warped ray, not
  * only along its interval, and it samples the cameras at the line's focal
@@ -83,9 +85,11 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <new>
 #include <optional>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace lfd
@@ -815,10 +819,13 @@ struct FrameCage
    * The next interval, front to back (in CollectSegments' order), of the ray
    * StartWalk started, handed out of scratch.Segments; nullptr after the last.
    * Boxes for which `skip(box index)` is true are not warped: their
-   * intervals are left out.
+   * intervals are left out. (Always inlined: a step of the walk, see
+   * detail::RunCursor::Advance.)
    */
   template<typename Skip>
-  BoxSegment* NextSegment(const glm::dvec3& d, FrameRayScratch& scratch, Skip&& skip) const
+  __attribute__((always_inline)) BoxSegment* NextSegment(const glm::dvec3& d,
+    FrameRayScratch& scratch,
+    Skip&& skip) const
   {
     std::vector<BoxSegment>& segments = scratch.Segments;
     // (Counted here: segments.size() divides by the 136 bytes of an interval.)
@@ -1233,6 +1240,15 @@ struct SamplerLookup
   {
     this->Sampler.AimBatch(o, d, count, aims, aimed);
   }
+  /// The same from an origin per ray (RenderWalks).
+  void AimBatch(const glm::dvec3* o,
+    const glm::dvec3* d,
+    int count,
+    RayAim* aims,
+    bool* aimed) const
+  {
+    this->Sampler.AimBatch(o, d, count, aims, aimed);
+  }
   bool Sample(const glm::dvec3& o, const glm::dvec3& d, const RayAim& aim, RaySamples& out) const
   {
     return this->Sampler.Sample(o, d, aim, out);
@@ -1261,6 +1277,30 @@ struct SamplerLookup
 
 namespace detail
 {
+/// Whether `Lookup` gathers in two stages (Aim(), Sample(); RenderPlainViews).
+template<typename Lookup, typename = void>
+struct Staged : std::false_type
+{
+};
+template<typename Lookup>
+struct Staged<Lookup, std::void_t<typename Lookup::Aimed>> : std::true_type
+{
+};
+
+/// The first stage of a Lookup's gathering (Lookup::Aimed; none for a lookup without stages).
+template<typename Lookup, bool = Staged<Lookup>::value>
+struct FirstStage
+{
+  using type = typename Lookup::Aimed;
+};
+template<typename Lookup>
+struct FirstStage<Lookup, false>
+{
+  struct type
+  {
+  };
+};
+
 /**
  * The light field's samples along the view ray itself, gathered at most once
  * per ray: a box that did not move warps the ray onto itself, so every
@@ -1442,7 +1482,7 @@ inline bool GoesOn(const std::vector<RenderBox>& boxes,
 
 /**
  * How many pieces of its run ShadeSegments leaves out ahead of an interval
- * whose focal point lies `focal` (> 1, SegmentWalk::Focal) rest segments
+ * whose focal point lies `focal` (> 1, SegmentFocal) rest segments
  * along its warped ray: pieces about as long as it along the ray put the
  * focal point floor(focal) pieces ahead; the walk jumps to the one before
  * and takes the last steps itself.
@@ -1465,6 +1505,136 @@ inline std::size_t PiecesLeftOut(double focal, std::size_t following)
 {
   return std::min(PiecesAhead(focal), following - (following > 0));
 }
+
+/**
+ * Where the warped ray of `entry` samples the cameras, in units of its rest
+ * segment (RenderViewSettings::FocalBeforeLookup; NaN without it, or for a
+ * box that did not move). Beyond 1, the lookup of `entry` waits for the
+ * next interval; in [0, 1], `entry` holds its run's focal point.
+ * (Always inlined: a step of the walk, see RunCursor::Advance.)
+ */
+template<typename Lookup>
+__attribute__((always_inline)) inline double SegmentFocal(const std::vector<RenderBox>& boxes,
+  const Lookup& lookup,
+  const RenderViewSettings& settings,
+  const BoxSegment& entry)
+{
+  if (!settings.FocalBeforeLookup || !boxes[entry.Box].Moved)
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  const WarpedSegment& segment = entry.Segment;
+  return lookup.FocalParameter(segment.RestEnter, segment.RestExit - segment.RestEnter);
+}
+
+/// Where ShadeSegments is in a run, for the walk that hands its intervals out.
+struct RunState
+{
+  const BoxSegment* Looked = nullptr;   ///< the interval the run was looked up from
+  const BoxSegment* Deferred = nullptr; ///< the interval waiting for the next one
+  double Focal = 0.0;                   ///< the deferred one's SegmentFocal (> 1)
+};
+
+/**
+ * Which of a ray's intervals ShadeSegments looks up, and in what order: the
+ * rules on runs of its description, apart from the lookups (which decide
+ * only when the walk stops), so that RenderWalks() can take the rays of a
+ * batch to their first lookup before any ray is looked up.
+ */
+struct RunCursor
+{
+  BoxSegment* Looked = nullptr;   ///< the last interval of a run that was looked up
+  BoxSegment* Deferred = nullptr; ///< an interval whose lookup waits for the next one
+  double DeferredFocal = 0.0;
+  /// Handed out behind a deferred interval that ended its run (Waits):
+  /// looked up after it.
+  BoxSegment* Waiting = nullptr;
+  bool Waits = false;
+
+  /**
+   * The next interval to look up, of those `next(view, run)` hands out
+   * front to back (`focal`: its SegmentFocal, Shade's `known`); nullptr
+   * when none is left.
+   */
+  // (Inlined into both its callers, RenderWalks' first steps and
+  // ShadeSegments, with the walk's steps it calls, as one loop: as calls,
+  // they cost the 100-slab bend 255.0 M instructions a frame, 244.3 M
+  // inlined.)
+  template<typename Lookup, typename Next>
+  __attribute__((always_inline)) BoxSegment* Advance(const std::vector<RenderBox>& boxes,
+    const Lookup& lookup,
+    const RenderViewSettings& settings,
+    Next& next,
+    ViewRayLook<Lookup>& view,
+    double& focal)
+  {
+    for (;;)
+    {
+      BoxSegment* handed = this->Waiting;
+      if (this->Waits)
+      {
+        this->Waits = false;
+      }
+      else
+      {
+        handed = next(view, RunState{ this->Looked, this->Deferred, this->DeferredFocal });
+        if (this->Deferred && !(handed && GoesOn(boxes, *this->Deferred, *handed)))
+        {
+          // The run ends with the deferred interval: it is looked up after all.
+          focal = this->DeferredFocal;
+          this->Waiting = handed;
+          this->Waits = true;
+          return std::exchange(this->Deferred, nullptr);
+        }
+        this->Deferred = nullptr;
+      }
+      if (!handed)
+      {
+        return nullptr;
+      }
+      if (this->Looked && GoesOn(boxes, *this->Looked, *handed))
+      {
+        // The run was looked up from its focal piece: the pieces behind it
+        // sample the cameras at a focal point in front of their entry, about
+        // where that lookup did.
+        this->Looked = handed;
+        continue;
+      }
+      focal = SegmentFocal(boxes, lookup, settings, *handed);
+      if (focal > 1.0)
+      {
+        this->Deferred = handed;
+        this->DeferredFocal = focal;
+        this->Looked = nullptr;
+        continue;
+      }
+      // A run entered behind its focal point is looked up from its first piece:
+      // the pieces behind sample the cameras near where it did too (against
+      // the ground truth, looking each up was worse: a dragged slab corner,
+      // 23.60 dB; this, 25.92 dB; only runs holding their focal point, 23.65).
+      this->Looked = std::isnan(focal) ? nullptr : handed;
+      return handed;
+    }
+  }
+};
+
+/**
+ * A ray's walk taken ahead to its first lookup with those of other rays
+ * (RenderWalks()): Run, where the walk then is; Segment, the interval
+ * looked up first (nullptr: none, the walk ends at once), and Focal, its
+ * SegmentFocal; with a lookup that gathers in two stages, the first stage
+ * of its warped ray (Aim; nullptr: not aimed ahead, the walk gathers it)
+ * and whether the ray may have samples (Found: the first stage's result).
+ */
+template<typename Lookup>
+struct PrimedSegment
+{
+  RunCursor Run;
+  BoxSegment* Segment = nullptr;
+  double Focal = 0.0;
+  const typename FirstStage<Lookup>::type* Aim = nullptr;
+  bool Found = false;
+};
 
 /**
  * One ray's walk through its intervals, front to back (ShadeSegments):
@@ -1505,6 +1675,28 @@ struct SegmentWalk
   RaySamples Samples;
   bool Matched = false;
   DeferredMatch Held;
+  /// The interval aimed ahead of the walk, if any (see RenderWalks()).
+  const PrimedSegment<Lookup>* Primed = nullptr;
+
+  /// Gather() of the warped ray of `entry`, from its first stage if it was aimed ahead.
+  bool Gather(const BoxSegment& entry, const glm::dvec3& direction)
+  {
+    if constexpr (Staged<Lookup>::value)
+    {
+      if (this->Primed && this->Primed->Segment == &entry && this->Primed->Aim)
+      {
+        if (!this->Primed->Found)
+        {
+          this->Samples.Count = 0; // (as Gather)
+          this->Samples.Surface = std::numeric_limits<double>::quiet_NaN();
+          return false;
+        }
+        return this->Light.Sample(
+          entry.Segment.RestEnter, direction, *this->Primed->Aim, this->Samples);
+      }
+    }
+    return this->Light.Gather(entry.Segment.RestEnter, direction, this->Samples);
+  }
 
   /// Past the match, only what still shows through is looked up.
   bool Going() const
@@ -1514,29 +1706,8 @@ struct SegmentWalk
   }
 
   /**
-   * Where the warped ray of `entry` samples the cameras, in units of its
-   * rest segment (RenderViewSettings::FocalBeforeLookup; NaN without it, or
-   * for a box that did not move). Beyond 1, the lookup of `entry` waits for
-   * the next interval; in [0, 1], `entry` holds its run's focal point.
-   */
-  double Focal(const BoxSegment& entry) const
-  {
-    if (!this->Settings.FocalBeforeLookup || !this->Boxes[entry.Box].Moved)
-    {
-      return std::numeric_limits<double>::quiet_NaN();
-    }
-    const WarpedSegment& segment = entry.Segment;
-    return this->Light.FocalParameter(segment.RestEnter, segment.RestExit - segment.RestEnter);
-  }
-
-  bool Continues(const BoxSegment& entry, const BoxSegment& next) const
-  {
-    return GoesOn(this->Boxes, entry, next);
-  }
-
-  /**
    * Looks `entry` up and composites it (records what it showed in
-   * BoxSegment::Seen); `known` is Focal(entry), so that a focal point found
+   * BoxSegment::Seen); `known` is its SegmentFocal, so that a focal point found
    * before the lookup is not found again.
    */
   void Shade(BoxSegment& entry, double known)
@@ -1574,8 +1745,7 @@ struct SegmentWalk
     }
     else
     {
-      if (glm::dot(direction, direction) <= 0.0 ||
-        !this->Light.Gather(segment.RestEnter, direction, this->Samples))
+      if (glm::dot(direction, direction) <= 0.0 || !this->Gather(entry, direction))
       {
         return;
       }
@@ -1649,19 +1819,12 @@ struct SegmentWalk
   }
 };
 
-/// Where ShadeSegments is in a run, for the walk that hands its intervals out.
-struct RunState
-{
-  const BoxSegment* Looked = nullptr;   ///< the interval the run was looked up from
-  const BoxSegment* Deferred = nullptr; ///< the interval waiting for the next one
-  double Focal = 0.0;                   ///< the deferred one's SegmentWalk::Focal (> 1)
-};
-
 /**
  * The intervals, front to back (`next(view, run)` hands them out, nullptr
  * after the last; a pointer it returned stays valid for the ray; `run` is a
- * RunState), shaded by SegmentWalk into `result` and `composite`. True when
- * an interval matched.
+ * RunState), shaded by SegmentWalk into `result` and `composite`, in
+ * RunCursor's order; `primed`, if not null, the walk taken ahead to its
+ * first lookup (RenderWalks()). True when an interval matched.
  *
  * With RenderViewSettings::FocalBeforeLookup, a run of intervals of a moved
  * part (boxes of one label, each entered where the one before is left: the
@@ -1686,51 +1849,28 @@ bool ShadeSegments(const std::vector<RenderBox>& boxes,
   const RenderViewSettings& settings,
   ViewRayLook<Lookup>& view,
   ViewSample& result,
-  CoverageComposite& composite)
+  CoverageComposite& composite,
+  const PrimedSegment<Lookup>* primed)
 {
   SegmentWalk<Lookup> walk{ boxes, lookup, settings, view, result, composite };
-  BoxSegment* deferred = nullptr; // an interval whose lookup waits for the next one
-  double deferredFocal = 0.0;
-  BoxSegment* looked = nullptr; // the last interval of a run that was looked up
-  while (walk.Going())
+  walk.Primed = primed;
+  RunCursor run;
+  double focal = 0.0;
+  BoxSegment* entry = nullptr;
+  if (primed)
   {
-    BoxSegment* handed = next(view, RunState{ looked, deferred, deferredFocal });
-    if (deferred && !(handed && walk.Continues(*deferred, *handed)))
-    {
-      // The run ends with the deferred interval: it is looked up after all.
-      walk.Shade(*deferred, deferredFocal);
-      if (!walk.Going())
-      {
-        break;
-      }
-    }
-    deferred = nullptr;
-    if (!handed)
-    {
-      break;
-    }
-    if (looked && walk.Continues(*looked, *handed))
-    {
-      // The run was looked up from its focal piece: the pieces behind it
-      // sample the cameras at a focal point in front of their entry, about
-      // where that lookup did.
-      looked = handed;
-      continue;
-    }
-    const double focal = walk.Focal(*handed);
-    if (focal > 1.0)
-    {
-      deferred = handed;
-      deferredFocal = focal;
-      looked = nullptr;
-      continue;
-    }
-    walk.Shade(*handed, focal);
-    // A run entered behind its focal point is looked up from its first piece:
-    // the pieces behind sample the cameras near where it did too (against
-    // the ground truth, looking each up was worse: a dragged slab corner,
-    // 23.60 dB; this, 25.92 dB; only runs holding their focal point, 23.65).
-    looked = std::isnan(focal) ? nullptr : handed;
+    run = primed->Run;
+    entry = primed->Segment;
+    focal = primed->Focal;
+  }
+  else
+  {
+    entry = run.Advance(boxes, lookup, settings, next, view, focal);
+  }
+  while (entry)
+  {
+    walk.Shade(*entry, focal);
+    entry = walk.Going() ? run.Advance(boxes, lookup, settings, next, view, focal) : nullptr;
   }
   if (walk.Held.Label >= 0)
   {
@@ -1832,27 +1972,27 @@ inline ViewSample Composite(const CoverageComposite& front,
 }
 
 /**
- * RENDER_VIEW (Sec. 6) of the ray o + t d whose intervals `next(view)`
- * hands out front to back into `segments` (`any`: the ray may have some).
+ * RENDER_VIEW (Sec. 6) of the ray `view` looks up, whose intervals
+ * `next(view, run)` hands out front to back into `segments` (`any`: the ray
+ * may have some); `primed` as ShadeSegments'.
  */
 template<typename Lookup, typename Next>
-ViewSample ShadeView(const glm::dvec3& o,
-  const glm::dvec3& d,
+ViewSample ShadeView(ViewRayLook<Lookup>& view,
   const std::vector<RenderBox>& boxes,
   const Lookup& lookup,
   const RenderViewSettings& settings,
   bool any,
   Next&& next,
-  const std::vector<BoxSegment>& segments)
+  const std::vector<BoxSegment>& segments,
+  const PrimedSegment<Lookup>* primed)
 {
-  ViewRayLook<Lookup> view{ lookup, o, d };
   CoverageComposite front;
   if (settings.UseLabels && !boxes.empty())
   {
     ViewSample result;
     // (Most rays of a frame miss every box: they skip the segment walk. The
     // widened search runs after the walk handed every interval out.)
-    if (any && ShadeSegments(boxes, next, lookup, settings, view, result, front))
+    if (any && ShadeSegments(boxes, next, lookup, settings, view, result, front, primed))
     {
       if (front.Transmittance <= CoverageComposite::Opaque)
       {
@@ -1904,9 +2044,9 @@ ViewSample RenderView(const glm::dvec3& o,
   }
   std::size_t k = 0;
   const BoxSegment* jumped = nullptr;
+  detail::ViewRayLook<Lookup> view{ lookup, o, d };
   return detail::ShadeView(
-    o,
-    d,
+    view,
     boxes,
     lookup,
     settings,
@@ -1929,38 +2069,26 @@ ViewSample RenderView(const glm::dvec3& o,
       }
       return k < segments.size() ? &segments[k++] : nullptr;
     },
-    segments);
+    segments,
+    static_cast<const detail::PrimedSegment<Lookup>*>(nullptr));
 }
 
 /// The most rays RenderPlainViews takes at once.
 constexpr int MaximumPlainBatch = LightFieldSampler::MaximumBatch;
 
-namespace detail
-{
-/// Whether `Lookup` gathers in two stages (Aim(), Sample(); RenderPlainViews).
-template<typename Lookup, typename = void>
-struct Staged : std::false_type
-{
-};
-template<typename Lookup>
-struct Staged<Lookup, std::void_t<typename Lookup::Aimed>> : std::true_type
-{
-};
-} // namespace detail
-
 /**
  * RenderView for the rays through the pixels (xs[i], y), i < count <=
  * MaximumPlainBatch, xs ascending, of a frame, rays that no box may claim
- * (RenderWalk() false: the frame has no box or no labels, the ray's tile
- * lists none or its walk finds none): the same results, into `seen`. With a lookup that
- * gathers in two stages (SamplerLookup: AimBatch() and Sample()), the batch
- * runs the first stage, the rays' geometry, for every ray before the
- * second, the texels, for any (and the first stage may bound the batch's
- * geometry at once: LightFieldSampler::EntrySectors()). A ray's lookup is
- * one dependent chain of divisions and square roots (some 900
- * instructions, more than the processor's reorder window holds), so looked
- * up ray after ray, the rays do not overlap; the first stages of
- * neighbouring rays, run back to back, do.
+ * (not walked by RenderWalks(): the frame has no box or no labels, the
+ * ray's tile lists none or its walk finds none): the same results, into
+ * `seen`. With a lookup that gathers in two stages (SamplerLookup:
+ * AimBatch() and Sample()), the batch runs the first stage, the rays'
+ * geometry, for every ray before the second, the texels, for any (and the
+ * first stage may bound the batch's geometry at once: LightFieldSampler::
+ * EntrySectors()). A ray's lookup is one dependent chain of divisions and
+ * square roots (some 900 instructions, more than the processor's reorder
+ * window holds), so looked up ray after ray, the rays do not overlap; the
+ * first stages of neighbouring rays, run back to back, do.
  */
 template<typename Lookup>
 void RenderPlainViews(const FrameCage& cage,
@@ -2011,88 +2139,176 @@ void RenderPlainViews(const FrameCage& cage,
   }
 }
 
+namespace detail
+{
 /**
- * RenderView for the ray through pixel (x, y) of a frame, into `seen`, when
- * a box may claim the ray: the frame has labels and the ray's walk finds a
- * box (FrameCage::StartWalk()). The boxes are tried and warped through
- * `cage`, front to back and only as far as needed. On return the first
- * scratch.Handed of scratch.Segments are the ray's intervals up to the one
- * that gave the pixel (all of them when none did), but those of boxes that
- * did not move and whose label the view ray does not show.
- *
- * False, `seen` untouched: no box may claim the ray, which sees what
- * RenderPlainViews() gives it. A frame's renderer batches those rays, and
- * calls RenderWalk only in the tiles that list a box (FrameCage::
- * CountCandidates(): 40 800 of the 3-box swim's 262 000 rays, 3 400 of
- * which meet none).
+ * The intervals of the ray `cage` walks in `Ray` (FrameCage::StartWalk()),
+ * handed out one by one as ShadeSegments' `next` (RenderWalks()): boxes
+ * warped only as far as needed, a run's pieces that its lookup leaves out
+ * not warped.
  */
 template<typename Lookup>
-bool RenderWalk(const FrameCage& cage,
-  int x,
+struct FrameWalk
+{
+  const FrameCage& Cage;
+  FrameRayScratch& Ray;
+  const glm::dvec3& D;
+
+  // (Inlined: see RunCursor::Advance.)
+  __attribute__((always_inline)) BoxSegment* operator()(ViewRayLook<Lookup>& view,
+    const RunState& run) const
+  {
+    const FrameCage& cage = this->Cage;
+    const std::vector<RenderBox>& boxes = *cage.Boxes;
+    FrameRayScratch& ray = this->Ray;
+    // (Once every box of the walk is warped, there is none left to leave
+    // out: most rays that meet a box of the swim have one.)
+    const bool warping = ray.NextEntry < ray.Entries.size();
+    if (warping && run.Looked && run.Looked != ray.RunSkipped)
+    {
+      // The run was looked up: its pieces behind are not warped either.
+      cage.FollowRun(*run.Looked, boxes.size(), ray);
+      cage.LeaveOut(ray.Chain.size(), ray);
+      ray.RunSkipped = run.Looked;
+    }
+    else if (warping && run.Deferred && run.Deferred != ray.RunSkipped &&
+      PiecesAhead(run.Focal) > 0)
+    {
+      // (One piece more than the jump: the run's last is never left out.)
+      cage.FollowRun(*run.Deferred, PiecesAhead(run.Focal) + 1, ray);
+      ray.Landing = cage.LeaveOut(PiecesLeftOut(run.Focal, ray.Chain.size()), ray);
+      ray.RunSkipped = run.Deferred;
+    }
+    // A box that did not move shows the view ray's own label (ShadeSegments):
+    // when that is not its label, none of its intervals can give the pixel
+    // (and the widened search only tries moved boxes), so it is not warped.
+    return cage.NextSegment(this->D,
+      ray,
+      [&](int b)
+      {
+        const RenderBox& box = boxes[b];
+        return !box.Moved && view.Look() != box.Label;
+      });
+  }
+};
+} // namespace detail
+
+/**
+ * RenderView for the rays through the pixels (xs[i], y), i < count <=
+ * MaximumPlainBatch, of a frame, into seen[i], when a box may claim the
+ * ray (walked[i]): the frame has labels and the ray's walk finds a box
+ * (FrameCage::StartWalk()). The boxes are tried and warped through `cage`,
+ * front to back and only as far as needed, ray i in scratch[i]. On return
+ * the first scratch[i].Handed of scratch[i].Segments are the ray's
+ * intervals up to the one that gave the pixel (all of them when none did),
+ * but those of boxes that did not move and whose label the view ray does
+ * not show.
+ *
+ * walked[i] false, seen[i] untouched: no box may claim the ray, which sees
+ * what RenderPlainViews() gives it. A frame's renderer batches those rays,
+ * and calls RenderWalks only in the tiles that list a box (FrameCage::
+ * CountCandidates(): 40 800 of the 3-box swim's 262 000 rays, 3 400 of
+ * which meet none).
+ *
+ * Every ray's walk is taken to its first lookup (RunCursor: its boxes
+ * warped, a slab run's pieces in front of its focal point left out) before
+ * any ray's walk goes on; with a lookup that gathers in two stages, the
+ * warped rays of those first lookups (of moved boxes) are aimed in one
+ * batch (AimBatch() from an origin per ray): each one's geometry is a long
+ * dependent chain, as a plain ray's (RenderPlainViews()), and the chains
+ * of the batch overlap. Only what the walk looks up is aimed.
+ */
+template<typename Lookup>
+void RenderWalks(const FrameCage& cage,
+  const int* xs,
   int y,
+  int count,
   const Lookup& lookup,
   const RenderViewSettings& settings,
-  FrameRayScratch& scratch,
-  ViewSample& seen)
+  FrameRayScratch* scratch,
+  ViewSample* seen,
+  bool* walked)
 {
   if (!settings.UseLabels)
   {
-    return false;
+    std::fill(walked, walked + count, false);
+    return;
   }
-  const glm::dvec3 d = cage.Direction(x, y);
-  if (cage.StartWalk(x, y, d, scratch) == 0)
+  const std::vector<RenderBox>& boxes = *cage.Boxes;
+  glm::dvec3 d[MaximumPlainBatch];
+  // The view rays' lookups, constructed for the walked rays only (as an
+  // array of std::optional, all ~11 KB would be zeroed for every batch).
+  static_assert(std::is_trivially_destructible<detail::ViewRayLook<Lookup>>::value,
+    "the views are never destroyed");
+  union Views
   {
-    return false;
-  }
-  // (The widened search reads scratch.Segments when no interval matched: the
-  // walk then handed every one out.)
-  seen = detail::ShadeView(
-    cage.Eye,
-    d,
-    *cage.Boxes,
-    lookup,
-    settings,
-    true,
-    [&](detail::ViewRayLook<Lookup>& view, const detail::RunState& run)
+    Views() {} // (none constructed)
+    detail::ViewRayLook<Lookup> Ray[MaximumPlainBatch];
+  } views;
+  detail::PrimedSegment<Lookup> primed[MaximumPlainBatch];
+  for (int i = 0; i < count; ++i)
+  {
+    d[i] = cage.Direction(xs[i], y);
+    walked[i] = cage.StartWalk(xs[i], y, d[i], scratch[i]) > 0;
+    if (walked[i])
     {
-      // (Once every box of the walk is warped, there is none left to leave
-      // out: most rays that meet a box of the swim have one.)
-      const bool warping = scratch.NextEntry < scratch.Entries.size();
-      if (warping && run.Looked && run.Looked != scratch.RunSkipped)
+      new (&views.Ray[i]) detail::ViewRayLook<Lookup>(lookup, cage.Eye, d[i]);
+      detail::FrameWalk<Lookup> next{ cage, scratch[i], d[i] };
+      primed[i].Segment =
+        primed[i].Run.Advance(boxes, lookup, settings, next, views.Ray[i], primed[i].Focal);
+    }
+  }
+  typename detail::FirstStage<Lookup>::type aims[MaximumPlainBatch]; // (PrimedSegment::Aim)
+  if constexpr (detail::Staged<Lookup>::value)
+  {
+    glm::dvec3 origins[MaximumPlainBatch], directions[MaximumPlainBatch];
+    bool aimed[MaximumPlainBatch];
+    int rays[MaximumPlainBatch];
+    int n = 0;
+    for (int i = 0; i < count; ++i)
+    {
+      // (SegmentWalk::Shade gathers the warped rays of moved boxes only, and
+      // only when they have a direction.)
+      const BoxSegment* first = walked[i] ? primed[i].Segment : nullptr;
+      if (first && boxes[first->Box].Moved)
       {
-        // The run was looked up: its pieces behind are not warped either.
-        cage.FollowRun(*run.Looked, cage.Boxes->size(), scratch);
-        cage.LeaveOut(scratch.Chain.size(), scratch);
-        scratch.RunSkipped = run.Looked;
-      }
-      else if (warping && run.Deferred && run.Deferred != scratch.RunSkipped &&
-        detail::PiecesAhead(run.Focal) > 0)
-      {
-        // (One piece more than the jump: the run's last is never left out.)
-        cage.FollowRun(*run.Deferred, detail::PiecesAhead(run.Focal) + 1, scratch);
-        scratch.Landing =
-          cage.LeaveOut(detail::PiecesLeftOut(run.Focal, scratch.Chain.size()), scratch);
-        scratch.RunSkipped = run.Deferred;
-      }
-      // A box that did not move shows the view ray's own label (ShadeSegments):
-      // when that is not its label, none of its intervals can give the pixel
-      // (and the widened search only tries moved boxes), so it is not warped.
-      return cage.NextSegment(d,
-        scratch,
-        [&](int b)
+        origins[n] = first->Segment.RestEnter;
+        directions[n] = first->Segment.RestExit - first->Segment.RestEnter;
+        if (glm::dot(directions[n], directions[n]) > 0.0)
         {
-          const RenderBox& box = (*cage.Boxes)[b];
-          return !box.Moved && view.Look() != box.Label;
-        });
-    },
-    scratch.Segments);
-  return true;
+          rays[n++] = i;
+        }
+      }
+    }
+    lookup.AimBatch(origins, directions, n, aims, aimed);
+    for (int k = 0; k < n; ++k)
+    {
+      primed[rays[k]].Aim = &aims[k];
+      primed[rays[k]].Found = aimed[k];
+    }
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    if (walked[i])
+    {
+      // (The widened search reads scratch[i].Segments when no interval
+      // matched: the walk then handed every one out.)
+      seen[i] = detail::ShadeView(views.Ray[i],
+        boxes,
+        lookup,
+        settings,
+        true,
+        detail::FrameWalk<Lookup>{ cage, scratch[i], d[i] },
+        scratch[i].Segments,
+        &primed[i]);
+    }
+  }
 }
 
 /**
  * RenderView for the ray through pixel (x, y) of a frame: the same result,
- * with the boxes tried and warped through `cage` (RenderWalk()); scratch as
- * RenderWalk leaves it.
+ * with the boxes tried and warped through `cage` (RenderWalks(), a batch
+ * of one); scratch as RenderWalks leaves it.
  */
 template<typename Lookup>
 ViewSample RenderView(const FrameCage& cage,
@@ -2103,7 +2319,9 @@ ViewSample RenderView(const FrameCage& cage,
   FrameRayScratch& scratch)
 {
   ViewSample seen;
-  if (!RenderWalk(cage, x, y, lookup, settings, scratch, seen))
+  bool walked;
+  RenderWalks(cage, &x, y, 1, lookup, settings, &scratch, &seen, &walked);
+  if (!walked)
   {
     scratch.Segments.clear();
     scratch.Handed = 0;

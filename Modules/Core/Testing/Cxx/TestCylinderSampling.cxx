@@ -414,6 +414,7 @@ struct BatchCounts
   int Early = 0;      ///< rays skipped before their entry, by the bound alone
   int Outside = 0;    ///< rays entering the rig in a sector outside their bound
   int Differing = 0;  ///< rays aimed differently than one by one, or than with SSE2
+  int Own = 0;        ///< rays aimed from their own origins (to show the check ran)
 };
 
 // Whether two rays were aimed alike (Aim()'s results `a` and `b`, found or
@@ -438,8 +439,10 @@ bool SameAim(const lfd::RayAim& a, bool foundA, const lfd::RayAim& b, bool found
 // batches of 16 along each row, as RenderPlainViews does (the last batch of
 // a row shorter), and compares them with Aim() ray by ray, without a bound,
 // and with the SSE2 version of the batch (AimStages; AimBatch may have taken
-// the AVX2 one). This file is compiled as vtkLightFieldRenderer.cxx is, so
-// that the batch's loops are vectorised here too (CMakeLists.txt).
+// the AVX2 one); and the same rays from an origin each, points along them
+// (as the warped rays of lfd::RenderWalks), against Aim() from those
+// origins. This file is compiled as vtkLightFieldRenderer.cxx is, so that
+// the batch's loops are vectorised here too (CMakeLists.txt).
 BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
   const lfd::LabelHull& hull,
   const lfd::PinholeCamera& eye,
@@ -468,13 +471,27 @@ BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
       // The SSE2 version too where AimBatch took the AVX2 one.
       lfd::RayAim baseline[16];
       bool baselineAimed[16];
-      sampler.AimStages(o, d, count, baseline, baselineAimed);
+      sampler.AimStages<0>(&o, d, count, baseline, baselineAimed);
+      glm::dvec3 origins[16];
+      for (int i = 0; i < count; ++i)
+      {
+        origins[i] = o + (0.1 * (i % 4)) * d[i];
+      }
+      lfd::RayAim own[16], ownBaseline[16];
+      bool ownAimed[16], ownBaselineAimed[16];
+      sampler.AimBatch(origins, d, count, own, ownAimed);
+      sampler.AimStages<1>(origins, d, count, ownBaseline, ownBaselineAimed);
       for (int i = 0; i < count; ++i)
       {
         counts.Differing += SameAim(baseline[i], baselineAimed[i], aims[i], aimed[i]) ? 0 : 1;
         lfd::RayAim alone;
         const bool found = sampler.Aim(o, d[i], alone);
         counts.Differing += SameAim(alone, found, aims[i], aimed[i]) ? 0 : 1;
+        counts.Differing +=
+          SameAim(ownBaseline[i], ownBaselineAimed[i], own[i], ownAimed[i]) ? 0 : 1;
+        const bool ownFound = sampler.Aim(origins[i], d[i], alone);
+        counts.Differing += SameAim(alone, ownFound, own[i], ownAimed[i]) ? 0 : 1;
+        counts.Own += ownAimed[i] ? 1 : 0;
         const long cell = hull.Cell(aims[i].Focal, *sampler.Layout);
         counts.Early += cell >= 0 && hull.Union[cell] && !(hull.Union[cell] & sectors) ? 1 : 0;
         double s, azimuth, h;
@@ -595,6 +612,7 @@ void ProxyLabelHullSkips(lfd::LightFieldSampler& sampler,
   Expect("proxy: rays unmarked in their batch's sectors", batch.Early, 1268.0);
   Expect("proxy: rays outside their bound", batch.Outside, 0.0);
   Expect("proxy: rays aimed differently in a batch", batch.Differing, 0.0);
+  Expect("proxy: rays aimed from their own origins", batch.Own, 2502.0);
   sampler.Depth = {};
   sampler.DepthRange = nullptr;
   sampler.DepthTiles = nullptr;
@@ -631,6 +649,7 @@ void EntrySectorsBound(const lfd::LightFieldSampler& sampler,
   Expect("outside: rays skipped before their entry by the bound", out.Early, 1364.0);
   Expect("outside: rays outside their bound", out.Outside, 0.0);
   Expect("outside: rays aimed differently", out.Differing, 0.0);
+  Expect("outside: rays aimed from their own origins", out.Own, 2061.0);
 
   const lfd::PinholeCamera inside =
     LookDownZ(120.0, glm::dvec2(49.5, 39.5), glm::dvec3(0.2, 0.3, 2.5));
@@ -640,6 +659,7 @@ void EntrySectorsBound(const lfd::LightFieldSampler& sampler,
   Expect("inside: rays skipped before their entry by the bound", in.Early, 1770.0);
   Expect("inside: rays outside their bound", in.Outside, 0.0);
   Expect("inside: rays aimed differently", in.Differing, 0.0);
+  Expect("inside: rays aimed from their own origins", in.Own, 5155.0);
 }
 
 // The label hull (LabelHull): two rings of 24 views of 32 x 32 whose label
