@@ -613,6 +613,13 @@ struct RaySamples
   /// along the looked-up line o + s d; NaN when they are focused on the
   /// focal plane (no proxy, or the ray meets no surface).
   double Surface = std::numeric_limits<double>::quiet_NaN();
+
+  /// No sample (a lookup that found none, or before one).
+  void Clear()
+  {
+    this->Count = 0;
+    this->Surface = std::numeric_limits<double>::quiet_NaN();
+  }
 };
 
 /**
@@ -1552,8 +1559,7 @@ struct LightFieldSampler
     RayAim aim;
     if (!this->Aim(o, d, aim))
     {
-      out.Count = 0;
-      out.Surface = std::numeric_limits<double>::quiet_NaN();
+      out.Clear();
       return false;
     }
     return this->Sample(o, d, aim, out);
@@ -1887,8 +1893,7 @@ struct LightFieldSampler
    */
   bool Sample(const glm::dvec3& o, const glm::dvec3& d, const RayAim& aim, RaySamples& out) const
   {
-    out.Count = 0;
-    out.Surface = std::numeric_limits<double>::quiet_NaN();
+    out.Clear();
     if (aim.Stretch &&
       this->GatherOnSurface(
         o, d, aim.Enter, aim.Leave, aim.Azimuth, aim.Height, aim.Views, aim.Count, out))

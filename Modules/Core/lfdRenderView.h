@@ -1530,9 +1530,9 @@ __attribute__((always_inline)) inline double SegmentFocal(const std::vector<Rend
 /// Where ShadeSegments is in a run, for the walk that hands its intervals out.
 struct RunState
 {
-  const BoxSegment* Looked = nullptr;   ///< the interval the run was looked up from
-  const BoxSegment* Deferred = nullptr; ///< the interval waiting for the next one
-  double Focal = 0.0;                   ///< the deferred one's SegmentFocal (> 1)
+  BoxSegment* Looked = nullptr;   ///< the last interval of a run that was looked up
+  BoxSegment* Deferred = nullptr; ///< an interval whose lookup waits for the next one
+  double Focal = 0.0;             ///< the deferred one's SegmentFocal (> 1)
 };
 
 /**
@@ -1543,9 +1543,7 @@ struct RunState
  */
 struct RunCursor
 {
-  BoxSegment* Looked = nullptr;   ///< the last interval of a run that was looked up
-  BoxSegment* Deferred = nullptr; ///< an interval whose lookup waits for the next one
-  double DeferredFocal = 0.0;
+  RunState Run; ///< where the run is, as `next` sees it
   /// Handed out behind a deferred interval that ended its run (Waits):
   /// looked up after it.
   BoxSegment* Waiting = nullptr;
@@ -1577,42 +1575,42 @@ struct RunCursor
       }
       else
       {
-        handed = next(view, RunState{ this->Looked, this->Deferred, this->DeferredFocal });
-        if (this->Deferred && !(handed && GoesOn(boxes, *this->Deferred, *handed)))
+        handed = next(view, RunState{ this->Run });
+        if (this->Run.Deferred && !(handed && GoesOn(boxes, *this->Run.Deferred, *handed)))
         {
           // The run ends with the deferred interval: it is looked up after all.
-          focal = this->DeferredFocal;
+          focal = this->Run.Focal;
           this->Waiting = handed;
           this->Waits = true;
-          return std::exchange(this->Deferred, nullptr);
+          return std::exchange(this->Run.Deferred, nullptr);
         }
-        this->Deferred = nullptr;
+        this->Run.Deferred = nullptr;
       }
       if (!handed)
       {
         return nullptr;
       }
-      if (this->Looked && GoesOn(boxes, *this->Looked, *handed))
+      if (this->Run.Looked && GoesOn(boxes, *this->Run.Looked, *handed))
       {
         // The run was looked up from its focal piece: the pieces behind it
         // sample the cameras at a focal point in front of their entry, about
         // where that lookup did.
-        this->Looked = handed;
+        this->Run.Looked = handed;
         continue;
       }
       focal = SegmentFocal(boxes, lookup, settings, *handed);
       if (focal > 1.0)
       {
-        this->Deferred = handed;
-        this->DeferredFocal = focal;
-        this->Looked = nullptr;
+        this->Run.Deferred = handed;
+        this->Run.Focal = focal;
+        this->Run.Looked = nullptr;
         continue;
       }
       // A run entered behind its focal point is looked up from its first piece:
       // the pieces behind sample the cameras near where it did too (against
       // the ground truth, looking each up was worse: a dragged slab corner,
       // 23.60 dB; this, 25.92 dB; only runs holding their focal point, 23.65).
-      this->Looked = std::isnan(focal) ? nullptr : handed;
+      this->Run.Looked = std::isnan(focal) ? nullptr : handed;
       return handed;
     }
   }
@@ -1687,8 +1685,7 @@ struct SegmentWalk
       {
         if (!this->Primed->Found)
         {
-          this->Samples.Count = 0; // (as Gather)
-          this->Samples.Surface = std::numeric_limits<double>::quiet_NaN();
+          this->Samples.Clear(); // (as Gather)
           return false;
         }
         return this->Light.Sample(
