@@ -2188,6 +2188,20 @@ struct FrameWalk
       });
   }
 };
+
+/// A walked ray of RenderWalks(): its view ray's lookup and its walk taken
+/// ahead to its first lookup.
+template<typename Lookup>
+struct WalkedRay
+{
+  WalkedRay(const Lookup& light, const glm::dvec3& o, const glm::dvec3& d)
+    : View(light, o, d)
+  {
+  }
+
+  ViewRayLook<Lookup> View;
+  PrimedSegment<Lookup> Primed;
+};
 } // namespace detail
 
 /**
@@ -2233,26 +2247,27 @@ void RenderWalks(const FrameCage& cage,
   }
   const std::vector<RenderBox>& boxes = *cage.Boxes;
   glm::dvec3 d[MaximumPlainBatch];
-  // The view rays' lookups, constructed for the walked rays only (as an
-  // array of std::optional, all ~11 KB would be zeroed for every batch).
-  static_assert(std::is_trivially_destructible<detail::ViewRayLook<Lookup>>::value,
-    "the views are never destroyed");
-  union Views
+  // The walked rays' view lookups and walks, constructed for the walked
+  // rays only (as arrays, all ~12 KB would be initialised for every batch,
+  // most of it for rays that are not walked: a tile row holds 8 rays).
+  static_assert(std::is_trivially_destructible<detail::WalkedRay<Lookup>>::value,
+    "the walked rays are never destroyed");
+  union Walks
   {
-    Views() {} // (none constructed)
-    detail::ViewRayLook<Lookup> Ray[MaximumPlainBatch];
-  } views;
-  detail::PrimedSegment<Lookup> primed[MaximumPlainBatch];
+    Walks() {} // (none constructed)
+    detail::WalkedRay<Lookup> Ray[MaximumPlainBatch];
+  } walks;
   for (int i = 0; i < count; ++i)
   {
     d[i] = cage.Direction(xs[i], y);
     walked[i] = cage.StartWalk(xs[i], y, d[i], scratch[i]) > 0;
     if (walked[i])
     {
-      new (&views.Ray[i]) detail::ViewRayLook<Lookup>(lookup, cage.Eye, d[i]);
+      detail::WalkedRay<Lookup>& ray =
+        *new (&walks.Ray[i]) detail::WalkedRay<Lookup>(lookup, cage.Eye, d[i]);
       detail::FrameWalk<Lookup> next{ cage, scratch[i], d[i] };
-      primed[i].Segment =
-        primed[i].Run.Advance(boxes, lookup, settings, next, views.Ray[i], primed[i].Focal);
+      ray.Primed.Segment =
+        ray.Primed.Run.Advance(boxes, lookup, settings, next, ray.View, ray.Primed.Focal);
     }
   }
   typename detail::FirstStage<Lookup>::type aims[MaximumPlainBatch]; // (PrimedSegment::Aim)
@@ -2266,7 +2281,7 @@ void RenderWalks(const FrameCage& cage,
     {
       // (SegmentWalk::Shade gathers the warped rays of moved boxes only, and
       // only when they have a direction.)
-      const BoxSegment* first = walked[i] ? primed[i].Segment : nullptr;
+      const BoxSegment* first = walked[i] ? walks.Ray[i].Primed.Segment : nullptr;
       if (first && boxes[first->Box].Moved)
       {
         origins[n] = first->Segment.RestEnter;
@@ -2280,8 +2295,8 @@ void RenderWalks(const FrameCage& cage,
     lookup.AimBatch(origins, directions, n, aims, aimed);
     for (int k = 0; k < n; ++k)
     {
-      primed[rays[k]].Aim = &aims[k];
-      primed[rays[k]].Found = aimed[k];
+      walks.Ray[rays[k]].Primed.Aim = &aims[k];
+      walks.Ray[rays[k]].Primed.Found = aimed[k];
     }
   }
   for (int i = 0; i < count; ++i)
@@ -2290,14 +2305,14 @@ void RenderWalks(const FrameCage& cage,
     {
       // (The widened search reads scratch[i].Segments when no interval
       // matched: the walk then handed every one out.)
-      seen[i] = detail::ShadeView(views.Ray[i],
+      seen[i] = detail::ShadeView(walks.Ray[i].View,
         boxes,
         lookup,
         settings,
         true,
         detail::FrameWalk<Lookup>{ cage, scratch[i], d[i] },
         scratch[i].Segments,
-        &primed[i]);
+        &walks.Ray[i].Primed);
     }
   }
 }
