@@ -473,8 +473,8 @@ struct RingLayout
 /// A camera chosen for a ray and its weight (azimuth x height).
 struct WeightedView
 {
-  int View = -1;
-  double Weight = 0.0;
+  int View;
+  double Weight;
 };
 
 /**
@@ -1454,16 +1454,21 @@ inline int VoteLabel(const RaySamples& samples);
 /**
  * Where LightFieldSampler::Gather samples a ray, from its first stage
  * (LightFieldSampler::Aim()): the focal point, the proxy's stretch and the
- * views around the ray's entry into the rig.
+ * views around the ray's entry into the rig. (No member initialisers, nor
+ * in WeightedView: the batches' arrays of 16 aims, RenderWalks() one per
+ * tile row, were initialised for each batch, about 0.7 M instructions of
+ * the 3-box swim's frame; Views is read up to Count, Enter and Leave with
+ * Stretch only.)
  */
 struct RayAim
 {
   glm::dvec3 Focal; ///< the focal point (FocalPoint()), where the views are sampled
   /// With a proxy, the stretch [Enter, Leave] of the ray its walk may focus
-  /// on (LightFieldSampler::SurfaceStretch()); Stretch: there is one.
+  /// on (LightFieldSampler::SurfaceStretch()); Stretch: there is one (else
+  /// Enter and Leave are not set).
   bool Stretch;
-  double Enter = 0.0;
-  double Leave = -1.0;
+  double Enter;
+  double Leave;
   double Azimuth; ///< of the ray's entry into the rig cylinder
   double Height;  ///< of the ray's entry along the rig axis
   WeightedView Views[4];
