@@ -1451,6 +1451,14 @@ struct NearestDepthTiles
 /// Weighted vote of the samples' labels; -1 when there is no sample.
 inline int VoteLabel(const RaySamples& samples);
 
+/// The focal point's pixels in a ray's views (LightFieldSampler::ProjectViews()).
+struct ViewPixels
+{
+  glm::dvec2 Pixel[4]; ///< per view, its pixel
+  /// Per view, whether it is looked up: positive weight, the point in front.
+  bool Looked[4];
+};
+
 /**
  * Where LightFieldSampler::Gather samples a ray, from its first stage
  * (LightFieldSampler::Aim()): the focal point, the proxy's stretch and the
@@ -1468,6 +1476,11 @@ struct RayAim
   double Height;  ///< of the ray's entry along the rig axis
   WeightedView Views[4];
   int Count; ///< views in Views (ChooseViews())
+  /// Whether Pixels holds the focal point's projections into the Views
+  /// (LightFieldSampler::ProjectViews(), which AimBatch() runs for the rays
+  /// it aims that have no proxy stretch); else Sample() projects.
+  bool Projected = false;
+  ViewPixels Pixels;
 };
 
 /**
@@ -1610,6 +1623,7 @@ struct LightFieldSampler
       return false;
     }
     aim.Count = ChooseViews(*this->Layout, aim.Azimuth, aim.Height, aim.Views);
+    aim.Projected = false;
     return true;
   }
 
@@ -1777,7 +1791,22 @@ struct LightFieldSampler
         aims[i].Azimuth = azimuths[k];
         aims[i].Height = heights[k];
         aims[i].Count = ChooseViews(*this->Layout, azimuths[k], heights[k], aims[i].Views);
+        aims[i].Projected = false;
         aimed[i] = true;
+      }
+    }
+    // Sample()'s projections of the focal points, for the rays it will look
+    // up in the Views (those with a stretch walk the proxy first).
+    if (this->Projections)
+    {
+      for (int k = 0; k < n; ++k)
+      {
+        const int i = kept[k];
+        if (aimed[i] && !aims[i].Stretch)
+        {
+          this->ProjectViews(aims[i], aims[i].Pixels);
+          aims[i].Projected = true;
+        }
       }
     }
   }
@@ -1900,6 +1929,24 @@ struct LightFieldSampler
     {
       return true;
     }
+    if (this->Projections)
+    {
+      // (Projected by AimBatch() ahead of the texels, or here.)
+      ViewPixels projected;
+      if (!aim.Projected)
+      {
+        this->ProjectViews(aim, projected);
+      }
+      const ViewPixels& pixels = aim.Projected ? aim.Pixels : projected;
+      for (int i = 0; i < aim.Count; ++i)
+      {
+        if (pixels.Looked[i])
+        {
+          this->AddBilinearAt(aim.Views[i].View, aim.Views[i].Weight, pixels.Pixel[i], out);
+        }
+      }
+      return out.Count > 0;
+    }
     for (int i = 0; i < aim.Count; ++i)
     {
       if (aim.Views[i].Weight > 0.0)
@@ -1908,6 +1955,52 @@ struct LightFieldSampler
       }
     }
     return out.Count > 0;
+  }
+
+  /**
+   * The first step of Sample()'s lookups at the focal point (AddBilinear()
+   * in each view of positive weight) through the views' projection matrices
+   * (Projections): the focal point's pixel in each of `aim`'s Views, into
+   * `pixels`. The camera z of two views is one
+   * vector and their reciprocals one division (SSE2, each lane the scalar
+   * operations of ProjectionMatrix::Project()). AimBatch() runs it for a
+   * batch of rays before any is sampled: a view's lookup is a chain of some
+   * 150 dependent instructions from the division to the sample, so taken
+   * ray by ray the lookups hardly overlap, while the projections of
+   * neighbouring rays do; the samples then start from their footprints.
+   */
+  void ProjectViews(const RayAim& aim, ViewPixels& pixels) const
+  {
+    const int count = aim.Count;
+    const glm::dvec3 x = aim.Focal;
+    alignas(16) double z[4];
+    alignas(16) double inverse[4];
+#if defined(__SSE2__)
+    // The pairs built in registers (stored one by one and loaded as a pair,
+    // the z would wait for a failed store forwarding). A pair without its
+    // second view repeats the first.
+    const __m128d one = _mm_set1_pd(1.0);
+    for (int i = 0; i < count; i += 2)
+    {
+      const __m128d pair = ProjectionMatrix::CameraZPair(this->Projections[aim.Views[i].View],
+        this->Projections[aim.Views[i + 1 < count ? i + 1 : i].View],
+        x);
+      _mm_store_pd(z + i, pair);
+      _mm_store_pd(inverse + i, _mm_div_pd(one, pair));
+    }
+#else
+    for (int i = 0; i < count; ++i)
+    {
+      z[i] = this->Projections[aim.Views[i].View].CameraZ(x);
+      inverse[i] = 1.0 / z[i];
+    }
+#endif
+    for (int i = 0; i < count; ++i)
+    {
+      // (Project()'s test: a point not in front of the view has no sample.)
+      pixels.Looked[i] = aim.Views[i].Weight > 0.0 && z[i] > 0.0;
+      pixels.Pixel[i] = this->Projections[aim.Views[i].View].PixelAt(x, inverse[i]);
+    }
   }
 
   /**
