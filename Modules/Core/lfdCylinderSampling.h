@@ -1451,11 +1451,15 @@ struct NearestDepthTiles
 /// Weighted vote of the samples' labels; -1 when there is no sample.
 inline int VoteLabel(const RaySamples& samples);
 
-/// The focal point's pixels in a ray's views (LightFieldSampler::ProjectViews()).
-struct ViewPixels
+/// The focal point's bilinear footprints in a ray's views
+/// (LightFieldSampler::ProjectViews()).
+struct ViewFootprints
 {
-  glm::dvec2 Pixel[4]; ///< per view, its pixel
-  /// Per view, whether it is looked up: positive weight, the point in front.
+  /// Per view, its footprint's top-left pixel and fraction (BilinearFootprint()).
+  int X0[4], Y0[4];
+  glm::dvec2 Fraction[4];
+  /// Per view, whether it is looked up: positive weight, the point in front
+  /// and its footprint inside the view by a pixel at least.
   bool Looked[4];
 };
 
@@ -1476,11 +1480,11 @@ struct RayAim
   double Height;  ///< of the ray's entry along the rig axis
   WeightedView Views[4];
   int Count; ///< views in Views (ChooseViews())
-  /// Whether Pixels holds the focal point's projections into the Views
+  /// Whether Footprints holds the focal point's footprints in the Views
   /// (LightFieldSampler::ProjectViews(), which AimBatch() runs for the rays
   /// it aims that have no proxy stretch); else Sample() projects.
   bool Projected = false;
-  ViewPixels Pixels;
+  ViewFootprints Footprints;
 };
 
 /**
@@ -1804,7 +1808,7 @@ struct LightFieldSampler
         const int i = kept[k];
         if (aimed[i] && !aims[i].Stretch)
         {
-          this->ProjectViews(aims[i], aims[i].Pixels);
+          this->ProjectViews(aims[i], aims[i].Footprints);
           aims[i].Projected = true;
         }
       }
@@ -1932,17 +1936,22 @@ struct LightFieldSampler
     if (this->Projections)
     {
       // (Projected by AimBatch() ahead of the texels, or here.)
-      ViewPixels projected;
+      ViewFootprints projected;
       if (!aim.Projected)
       {
         this->ProjectViews(aim, projected);
       }
-      const ViewPixels& pixels = aim.Projected ? aim.Pixels : projected;
+      const ViewFootprints& footprints = aim.Projected ? aim.Footprints : projected;
       for (int i = 0; i < aim.Count; ++i)
       {
-        if (pixels.Looked[i])
+        if (footprints.Looked[i])
         {
-          this->AddBilinearAt(aim.Views[i].View, aim.Views[i].Weight, pixels.Pixel[i], out);
+          this->AddFootprintAt(aim.Views[i].View,
+            aim.Views[i].Weight,
+            footprints.X0[i],
+            footprints.Y0[i],
+            footprints.Fraction[i],
+            out);
         }
       }
       return out.Count > 0;
@@ -1960,16 +1969,16 @@ struct LightFieldSampler
   /**
    * The first step of Sample()'s lookups at the focal point (AddBilinear()
    * in each view of positive weight) through the views' projection matrices
-   * (Projections): the focal point's pixel in each of `aim`'s Views, into
-   * `pixels`. The camera z of two views is one
+   * (Projections): the focal point's bilinear footprint in each of `aim`'s
+   * Views, into `footprints`. The camera z of two views is one
    * vector and their reciprocals one division (SSE2, each lane the scalar
    * operations of ProjectionMatrix::Project()). AimBatch() runs it for a
    * batch of rays before any is sampled: a view's lookup is a chain of some
    * 150 dependent instructions from the division to the sample, so taken
    * ray by ray the lookups hardly overlap, while the projections of
-   * neighbouring rays do; the samples then start from their footprints.
+   * neighbouring rays do; the samples then start from their texels.
    */
-  void ProjectViews(const RayAim& aim, ViewPixels& pixels) const
+  void ProjectViews(const RayAim& aim, ViewFootprints& footprints) const
   {
     const int count = aim.Count;
     const glm::dvec3 x = aim.Focal;
@@ -1998,8 +2007,13 @@ struct LightFieldSampler
     for (int i = 0; i < count; ++i)
     {
       // (Project()'s test: a point not in front of the view has no sample.)
-      pixels.Looked[i] = aim.Views[i].Weight > 0.0 && z[i] > 0.0;
-      pixels.Pixel[i] = this->Projections[aim.Views[i].View].PixelAt(x, inverse[i]);
+      footprints.Looked[i] = aim.Views[i].Weight > 0.0 && z[i] > 0.0 &&
+        BilinearFootprint(this->Projections[aim.Views[i].View].PixelAt(x, inverse[i]),
+          this->Radiance.Width,
+          this->Radiance.Height,
+          footprints.X0[i],
+          footprints.Y0[i],
+          footprints.Fraction[i]);
     }
   }
 
@@ -2050,13 +2064,24 @@ struct LightFieldSampler
     const glm::dvec2& uv,
     RaySamples& out) const
   {
-    const int width = this->Radiance.Width;
     int x0, y0;
     glm::dvec2 a;
-    if (!BilinearFootprint(uv, width, this->Radiance.Height, x0, y0, a))
+    if (BilinearFootprint(uv, this->Radiance.Width, this->Radiance.Height, x0, y0, a))
     {
-      return;
+      this->AddFootprintAt(view, weight, x0, y0, a, out);
     }
+  }
+
+  /// AddBilinearAt() from the footprint at (x0, y0) with the fraction `a`
+  /// (BilinearFootprint()), for a caller that has found it already.
+  __attribute__((always_inline)) void AddFootprintAt(int view,
+    double weight,
+    int x0,
+    int y0,
+    const glm::dvec2& a,
+    RaySamples& out) const
+  {
+    const int width = this->Radiance.Width;
     // Most footprints lie inside the view, in memory, with one label: their
     // sample is taken here, and the others in AddFootprint(), out of line,
     // so that this path saves no registers and stores no label.
