@@ -2105,7 +2105,7 @@ struct LightFieldSampler
   }
 
   /**
-   * AddBilinearAt()'s samples of the footprint at (x0, y0) with the
+   * AddFootprintAt()'s samples of the footprint at (x0, y0) with the
    * fraction `a` (BilinearFootprint()) that its inline path does not take:
    * footprints across the view's edge (a sample per texel inside it),
    * with several labels (a sample per texel) or read out of core.
