@@ -1451,13 +1451,19 @@ struct NearestDepthTiles
 /// Weighted vote of the samples' labels; -1 when there is no sample.
 inline int VoteLabel(const RaySamples& samples);
 
+/// A bilinear footprint (BilinearFootprint()): its top-left pixel and the
+/// fraction of the position from it.
+struct TexelFootprint
+{
+  int X0, Y0;
+  glm::dvec2 Fraction;
+};
+
 /// The focal point's bilinear footprints in a ray's views
 /// (LightFieldSampler::ProjectViews()).
 struct ViewFootprints
 {
-  /// Per view, its footprint's top-left pixel and fraction (BilinearFootprint()).
-  int X0[4], Y0[4];
-  glm::dvec2 Fraction[4];
+  TexelFootprint Views[4]; ///< per view, its footprint
   /// Per view, whether it is looked up: positive weight, the point in front
   /// and its footprint inside the view by a pixel at least.
   bool Looked[4];
@@ -1946,12 +1952,7 @@ struct LightFieldSampler
       {
         if (footprints.Looked[i])
         {
-          this->AddFootprintAt(aim.Views[i].View,
-            aim.Views[i].Weight,
-            footprints.X0[i],
-            footprints.Y0[i],
-            footprints.Fraction[i],
-            out);
+          this->AddFootprintAt(aim.Views[i].View, aim.Views[i].Weight, footprints.Views[i], out);
         }
       }
       return out.Count > 0;
@@ -2011,9 +2012,9 @@ struct LightFieldSampler
         BilinearFootprint(this->Projections[aim.Views[i].View].PixelAt(x, inverse[i]),
           this->Radiance.Width,
           this->Radiance.Height,
-          footprints.X0[i],
-          footprints.Y0[i],
-          footprints.Fraction[i]);
+          footprints.Views[i].X0,
+          footprints.Views[i].Y0,
+          footprints.Views[i].Fraction);
     }
   }
 
@@ -2064,24 +2065,29 @@ struct LightFieldSampler
     const glm::dvec2& uv,
     RaySamples& out) const
   {
-    int x0, y0;
-    glm::dvec2 a;
-    if (BilinearFootprint(uv, this->Radiance.Width, this->Radiance.Height, x0, y0, a))
+    TexelFootprint footprint;
+    if (BilinearFootprint(uv,
+          this->Radiance.Width,
+          this->Radiance.Height,
+          footprint.X0,
+          footprint.Y0,
+          footprint.Fraction))
     {
-      this->AddFootprintAt(view, weight, x0, y0, a, out);
+      this->AddFootprintAt(view, weight, footprint, out);
     }
   }
 
-  /// AddBilinearAt() from the footprint at (x0, y0) with the fraction `a`
-  /// (BilinearFootprint()), for a caller that has found it already.
+  /// AddBilinearAt() from the footprint of its point in `view`, for a
+  /// caller that has found it already (ProjectViews()).
   __attribute__((always_inline)) void AddFootprintAt(int view,
     double weight,
-    int x0,
-    int y0,
-    const glm::dvec2& a,
+    const TexelFootprint& footprint,
     RaySamples& out) const
   {
     const int width = this->Radiance.Width;
+    const int x0 = footprint.X0;
+    const int y0 = footprint.Y0;
+    const glm::dvec2& a = footprint.Fraction;
     // Most footprints lie inside the view, in memory, with one label: their
     // sample is taken here, and the others in AddFootprint(), out of line,
     // so that this path saves no registers and stores no label.
