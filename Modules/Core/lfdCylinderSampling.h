@@ -1451,6 +1451,24 @@ struct NearestDepthTiles
 /// Weighted vote of the samples' labels; -1 when there is no sample.
 inline int VoteLabel(const RaySamples& samples);
 
+/// A bilinear footprint (BilinearFootprint()): its top-left pixel and the
+/// fraction of the position from it.
+struct TexelFootprint
+{
+  int X0, Y0;
+  glm::dvec2 Fraction;
+};
+
+/// The focal point's bilinear footprints in a ray's views
+/// (LightFieldSampler::ProjectViews()).
+struct ViewFootprints
+{
+  TexelFootprint Views[4]; ///< per view, its footprint
+  /// Per view, whether it is looked up: positive weight, the point in front
+  /// and its footprint inside the view by a pixel at least.
+  bool Looked[4];
+};
+
 /**
  * Where LightFieldSampler::Gather samples a ray, from its first stage
  * (LightFieldSampler::Aim()): the focal point, the proxy's stretch and the
@@ -1473,6 +1491,11 @@ struct RayAim
   double Height;  ///< of the ray's entry along the rig axis
   WeightedView Views[4];
   int Count; ///< views in Views (ChooseViews())
+  /// Whether Footprints holds the focal point's footprints in the Views
+  /// (LightFieldSampler::ProjectViews(), which AimBatch() runs for the rays
+  /// it aims that have no proxy stretch); else Sample() projects.
+  bool Projected = false;
+  ViewFootprints Footprints;
 };
 
 /**
@@ -1615,6 +1638,7 @@ struct LightFieldSampler
       return false;
     }
     aim.Count = ChooseViews(*this->Layout, aim.Azimuth, aim.Height, aim.Views);
+    aim.Projected = false;
     return true;
   }
 
@@ -1782,7 +1806,22 @@ struct LightFieldSampler
         aims[i].Azimuth = azimuths[k];
         aims[i].Height = heights[k];
         aims[i].Count = ChooseViews(*this->Layout, azimuths[k], heights[k], aims[i].Views);
+        aims[i].Projected = false;
         aimed[i] = true;
+      }
+    }
+    // Sample()'s projections of the focal points, for the rays it will look
+    // up in the Views (those with a stretch walk the proxy first).
+    if (this->Projections)
+    {
+      for (int k = 0; k < n; ++k)
+      {
+        const int i = kept[k];
+        if (aimed[i] && !aims[i].Stretch)
+        {
+          this->ProjectViews(aims[i], aims[i].Footprints);
+          aims[i].Projected = true;
+        }
       }
     }
   }
@@ -1905,6 +1944,24 @@ struct LightFieldSampler
     {
       return true;
     }
+    if (this->Projections)
+    {
+      // (Projected by AimBatch() ahead of the texels, or here.)
+      ViewFootprints projected;
+      if (!aim.Projected)
+      {
+        this->ProjectViews(aim, projected);
+      }
+      const ViewFootprints& footprints = aim.Projected ? aim.Footprints : projected;
+      for (int i = 0; i < aim.Count; ++i)
+      {
+        if (footprints.Looked[i])
+        {
+          this->AddFootprintAt(aim.Views[i].View, aim.Views[i].Weight, footprints.Views[i], out);
+        }
+      }
+      return out.Count > 0;
+    }
     for (int i = 0; i < aim.Count; ++i)
     {
       if (aim.Views[i].Weight > 0.0)
@@ -1913,6 +1970,57 @@ struct LightFieldSampler
       }
     }
     return out.Count > 0;
+  }
+
+  /**
+   * The first step of Sample()'s lookups at the focal point (AddBilinear()
+   * in each view of positive weight) through the views' projection matrices
+   * (Projections): the focal point's bilinear footprint in each of `aim`'s
+   * Views, into `footprints`. The camera z of two views is one
+   * vector and their reciprocals one division (SSE2, each lane the scalar
+   * operations of ProjectionMatrix::Project()). AimBatch() runs it for a
+   * batch of rays before any is sampled: a view's lookup is a chain of some
+   * 150 dependent instructions from the division to the sample, so taken
+   * ray by ray the lookups hardly overlap, while the projections of
+   * neighbouring rays do; the samples then start from their texels.
+   */
+  void ProjectViews(const RayAim& aim, ViewFootprints& footprints) const
+  {
+    const int count = aim.Count;
+    const glm::dvec3 x = aim.Focal;
+    alignas(16) double z[4];
+    alignas(16) double inverse[4];
+#if defined(__SSE2__)
+    // The pairs built in registers (stored one by one and loaded as a pair,
+    // the z would wait for a failed store forwarding). A pair without its
+    // second view repeats the first.
+    const __m128d one = _mm_set1_pd(1.0);
+    for (int i = 0; i < count; i += 2)
+    {
+      const __m128d pair = ProjectionMatrix::CameraZPair(this->Projections[aim.Views[i].View],
+        this->Projections[aim.Views[i + 1 < count ? i + 1 : i].View],
+        x);
+      _mm_store_pd(z + i, pair);
+      _mm_store_pd(inverse + i, _mm_div_pd(one, pair));
+    }
+#else
+    for (int i = 0; i < count; ++i)
+    {
+      z[i] = this->Projections[aim.Views[i].View].CameraZ(x);
+      inverse[i] = 1.0 / z[i];
+    }
+#endif
+    for (int i = 0; i < count; ++i)
+    {
+      // (Project()'s test: a point not in front of the view has no sample.)
+      footprints.Looked[i] = aim.Views[i].Weight > 0.0 && z[i] > 0.0 &&
+        BilinearFootprint(this->Projections[aim.Views[i].View].PixelAt(x, inverse[i]),
+          this->Radiance.Width,
+          this->Radiance.Height,
+          footprints.Views[i].X0,
+          footprints.Views[i].Y0,
+          footprints.Views[i].Fraction);
+    }
   }
 
   /**
@@ -1962,13 +2070,29 @@ struct LightFieldSampler
     const glm::dvec2& uv,
     RaySamples& out) const
   {
-    const int width = this->Radiance.Width;
-    int x0, y0;
-    glm::dvec2 a;
-    if (!BilinearFootprint(uv, width, this->Radiance.Height, x0, y0, a))
+    TexelFootprint footprint;
+    if (BilinearFootprint(uv,
+          this->Radiance.Width,
+          this->Radiance.Height,
+          footprint.X0,
+          footprint.Y0,
+          footprint.Fraction))
     {
-      return;
+      this->AddFootprintAt(view, weight, footprint, out);
     }
+  }
+
+  /// AddBilinearAt() from the footprint of its point in `view`, for a
+  /// caller that has found it already (ProjectViews()).
+  __attribute__((always_inline)) void AddFootprintAt(int view,
+    double weight,
+    const TexelFootprint& footprint,
+    RaySamples& out) const
+  {
+    const int width = this->Radiance.Width;
+    const int x0 = footprint.X0;
+    const int y0 = footprint.Y0;
+    const glm::dvec2& a = footprint.Fraction;
     // Most footprints lie inside the view, in memory, with one label: their
     // sample is taken here, and the others in AddFootprint(), out of line,
     // so that this path saves no registers and stores no label.
@@ -1992,7 +2116,7 @@ struct LightFieldSampler
   }
 
   /**
-   * AddBilinearAt()'s samples of the footprint at (x0, y0) with the
+   * AddFootprintAt()'s samples of the footprint at (x0, y0) with the
    * fraction `a` (BilinearFootprint()) that its inline path does not take:
    * footprints across the view's edge (a sample per texel inside it),
    * with several labels (a sample per texel) or read out of core.

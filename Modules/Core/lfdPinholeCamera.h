@@ -235,12 +235,43 @@ struct ProjectionMatrix
   /// order), set even when the point is not in front of the camera.
   bool Project(const glm::dvec3& X, glm::dvec2& pixel, double& z) const
   {
-    z = this->Depth[0] * X.x + this->Depth[1] * X.y + this->Depth[2] * X.z + this->Depth[3];
+    z = this->CameraZ(X);
     if (!(z > 0.0))
     {
       return false;
     }
-    const double inverse = 1.0 / z;
+    pixel = this->PixelAt(X, 1.0 / z);
+    return true;
+  }
+
+  /// The camera z of X: Project()'s homogeneous w (it is in front for z > 0).
+  double CameraZ(const glm::dvec3& X) const
+  {
+    return this->Depth[0] * X.x + this->Depth[1] * X.y + this->Depth[2] * X.z + this->Depth[3];
+  }
+
+#if defined(__SSE2__)
+  /// CameraZ() of X for the cameras `a` and `b` as the two lanes of one
+  /// vector, each lane the scalar sum in its order.
+  static __m128d CameraZPair(const ProjectionMatrix& a,
+    const ProjectionMatrix& b,
+    const glm::dvec3& X)
+  {
+    const auto column = [&](int k) { return _mm_set_pd(b.Depth[k], a.Depth[k]); };
+    return _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(column(0), _mm_set1_pd(X.x)),
+                                   _mm_mul_pd(column(1), _mm_set1_pd(X.y))),
+                        _mm_mul_pd(column(2), _mm_set1_pd(X.z))),
+      column(3));
+  }
+#endif
+
+  /**
+   * Project()'s pixel of X from `inverse`, 1 / CameraZ(X): the second half
+   * of Project(), for a caller that takes the reciprocals of several
+   * points' z at once (LightFieldSampler::Sample(): two a division).
+   */
+  glm::dvec2 PixelAt(const glm::dvec3& X, double inverse) const
+  {
 #if defined(__SSE2__)
     const __m128d sum =
       _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_load_pd(this->Pixel[0]), _mm_set1_pd(X.x)),
@@ -248,16 +279,17 @@ struct ProjectionMatrix
                    _mm_mul_pd(_mm_load_pd(this->Pixel[2]), _mm_set1_pd(X.z))),
         _mm_load_pd(this->Pixel[3]));
     const __m128d scaled = _mm_mul_pd(sum, _mm_set1_pd(inverse));
-    pixel = glm::dvec2(_mm_cvtsd_f64(scaled), _mm_cvtsd_f64(_mm_unpackhi_pd(scaled, scaled)));
+    return glm::dvec2(_mm_cvtsd_f64(scaled), _mm_cvtsd_f64(_mm_unpackhi_pd(scaled, scaled)));
 #else
+    glm::dvec2 pixel;
     for (int row = 0; row < 2; ++row)
     {
       pixel[row] = (this->Pixel[0][row] * X.x + this->Pixel[1][row] * X.y +
                      this->Pixel[2][row] * X.z + this->Pixel[3][row]) *
         inverse;
     }
+    return pixel;
 #endif
-    return true;
   }
 };
 

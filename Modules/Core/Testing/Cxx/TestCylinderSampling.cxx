@@ -415,6 +415,7 @@ struct BatchCounts
   int Outside = 0;    ///< rays entering the rig in a sector outside their bound
   int Differing = 0;  ///< rays aimed differently than one by one, or than with SSE2
   int Own = 0;        ///< rays aimed from their own origins (to show the check ran)
+  int Projected = 0;  ///< rays sampled from the views AimBatch projected (ProjectViews)
 };
 
 // Whether two rays were aimed alike (Aim()'s results `a` and `b`, found or
@@ -441,8 +442,9 @@ bool SameAim(const lfd::RayAim& a, bool foundA, const lfd::RayAim& b, bool found
 // and with the SSE2 version of the batch (AimStages; AimBatch may have taken
 // the AVX2 one); and the same rays from an origin each, points along them
 // (as the warped rays of lfd::RenderWalks), against Aim() from those
-// origins. This file is compiled as vtkLightFieldRenderer.cxx is, so that
-// the batch's loops are vectorised here too (CMakeLists.txt).
+// origins; and with the views' projection matrices, the samples of the
+// views the batch projected against AddBilinear()'s. This file is compiled as
+// vtkLightFieldRenderer.cxx is, so that the batch's loops are vectorised here too (CMakeLists.txt).
 BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
   const lfd::LabelHull& hull,
   const lfd::PinholeCamera& eye,
@@ -451,6 +453,23 @@ BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
 {
   BatchCounts counts;
   const glm::dvec3 o = eye.Center();
+  // The sampler with its views' projection matrices, whose batches project
+  // the focal points into the views ahead of Sample() (ProjectViews()).
+  int views = 0;
+  for (const lfd::RingRow& row : sampler.Layout->Rows)
+  {
+    for (int view : row.View)
+    {
+      views = std::max(views, view + 1);
+    }
+  }
+  std::vector<lfd::ProjectionMatrix> matrices;
+  for (int view = 0; view < views; ++view)
+  {
+    matrices.emplace_back(sampler.Cameras[view]);
+  }
+  lfd::LightFieldSampler projecting = sampler;
+  projecting.Projections = matrices.data();
   for (int y = 0; y < height; ++y)
   {
     for (int x0 = 0; x0 < width; x0 += 16)
@@ -492,6 +511,35 @@ BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
         const bool ownFound = sampler.Aim(origins[i], d[i], alone);
         counts.Differing += SameAim(alone, ownFound, own[i], ownAimed[i]) ? 0 : 1;
         counts.Own += ownAimed[i] ? 1 : 0;
+      }
+      // With projection matrices: the same aims, and the samples from the
+      // views the batch projected (its rays without a proxy stretch) those
+      // of AddBilinear() view by view.
+      lfd::RayAim projected[16];
+      bool projectedAimed[16];
+      projecting.AimBatch(o, d, count, projected, projectedAimed);
+      for (int i = 0; i < count; ++i)
+      {
+        counts.Differing += SameAim(aims[i], aimed[i], projected[i], projectedAimed[i]) ? 0 : 1;
+        if (projectedAimed[i] && projected[i].Projected)
+        {
+          lfd::RaySamples staged, alone;
+          projecting.Sample(o, d[i], projected[i], staged);
+          alone.Clear();
+          for (int v = 0; v < projected[i].Count; ++v)
+          {
+            const lfd::WeightedView& view = projected[i].Views[v];
+            if (view.Weight > 0.0)
+            {
+              projecting.AddBilinear(view.View, view.Weight, projected[i].Focal, alone);
+            }
+          }
+          counts.Differing += SameSamples(staged, alone) ? 0 : 1;
+          counts.Projected += 1;
+        }
+      }
+      for (int i = 0; i < count; ++i)
+      {
         const long cell = hull.Cell(aims[i].Focal, *sampler.Layout);
         counts.Early += cell >= 0 && hull.Union[cell] && !(hull.Union[cell] & sectors) ? 1 : 0;
         double s, azimuth, h;
@@ -613,6 +661,7 @@ void ProxyLabelHullSkips(lfd::LightFieldSampler& sampler,
   Expect("proxy: rays outside their bound", batch.Outside, 0.0);
   Expect("proxy: rays aimed differently in a batch", batch.Differing, 0.0);
   Expect("proxy: rays aimed from their own origins", batch.Own, 2502.0);
+  Expect("proxy: rays sampled from the views their batch projected", batch.Projected, 1053.0);
   sampler.Depth = {};
   sampler.DepthRange = nullptr;
   sampler.DepthTiles = nullptr;
@@ -650,6 +699,7 @@ void EntrySectorsBound(const lfd::LightFieldSampler& sampler,
   Expect("outside: rays outside their bound", out.Outside, 0.0);
   Expect("outside: rays aimed differently", out.Differing, 0.0);
   Expect("outside: rays aimed from their own origins", out.Own, 2061.0);
+  Expect("outside: rays sampled from the views their batch projected", out.Projected, 2061.0);
 
   const lfd::PinholeCamera inside =
     LookDownZ(120.0, glm::dvec2(49.5, 39.5), glm::dvec3(0.2, 0.3, 2.5));
@@ -660,6 +710,7 @@ void EntrySectorsBound(const lfd::LightFieldSampler& sampler,
   Expect("inside: rays outside their bound", in.Outside, 0.0);
   Expect("inside: rays aimed differently", in.Differing, 0.0);
   Expect("inside: rays aimed from their own origins", in.Own, 5155.0);
+  Expect("inside: rays sampled from the views their batch projected", in.Projected, 5155.0);
 }
 
 // The label hull (LabelHull): two rings of 24 views of 32 x 32 whose label
