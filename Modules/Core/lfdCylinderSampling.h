@@ -1493,8 +1493,9 @@ struct RayAim
   int Count; ///< views in Views (ChooseViews())
   /// Whether Footprints holds the focal point's footprints in the Views
   /// (LightFieldSampler::ProjectViews(), which AimBatch() runs for the rays
-  /// it aims that have no proxy stretch); else Sample() projects.
-  bool Projected = false;
+  /// it aims that have no proxy stretch); else Sample() projects. (Set by
+  /// Aim() and AimBatch(), like every member Sample() reads.)
+  bool Projected;
   ViewFootprints Footprints;
 };
 

@@ -268,7 +268,7 @@ struct ProjectionMatrix
   /**
    * Project()'s pixel of X from `inverse`, 1 / CameraZ(X): the second half
    * of Project(), for a caller that takes the reciprocals of several
-   * points' z at once (LightFieldSampler::Sample(): two a division).
+   * points' z at once (LightFieldSampler::ProjectViews(): two a division).
    */
   glm::dvec2 PixelAt(const glm::dvec3& X, double inverse) const
   {
