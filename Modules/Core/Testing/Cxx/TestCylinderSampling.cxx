@@ -443,8 +443,9 @@ bool SameAim(const lfd::RayAim& a, bool foundA, const lfd::RayAim& b, bool found
 // the AVX2 one); and the same rays from an origin each, points along them
 // (as the warped rays of lfd::RenderWalks), against Aim() from those
 // origins; and with the views' projection matrices, the samples of the
-// views the batch projected against AddBilinear()'s. This file is compiled as
-// vtkLightFieldRenderer.cxx is, so that the batch's loops are vectorised here too (CMakeLists.txt).
+// views the batch projected against AddBilinear()'s. This file is compiled
+// as vtkLightFieldRenderer.cxx is, so that the batch's loops are vectorised
+// here too (CMakeLists.txt).
 BatchCounts AimRows(const lfd::LightFieldSampler& sampler,
   const lfd::LabelHull& hull,
   const lfd::PinholeCamera& eye,
