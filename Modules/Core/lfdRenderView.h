@@ -1575,7 +1575,7 @@ struct RunCursor
       }
       else
       {
-        handed = next(view, RunState{ this->Run });
+        handed = next(view, this->Run);
         if (this->Run.Deferred && !(handed && GoesOn(boxes, *this->Run.Deferred, *handed)))
         {
           // The run ends with the deferred interval: it is looked up after all.
