@@ -526,13 +526,18 @@ struct BoxFromOrigin
  * `rest` and `deformed`.
  * Only the faces whose bit (1 << face) is set in `faces` are intersected:
  * the caller's promise that the ray misses the others.
+ *
+ * `out[k]` is the k-th interval's WarpedSegment: a WarpedSegment array, or
+ * an accessor that writes the intervals where the caller keeps them (see
+ * FrameCage::NextSegment: a copy read back at once waits for the stores).
  */
+template<typename Out>
 inline int WarpRayThroughBox(const BoxFromOrigin& box,
   const Hexahedron& rest,
   const Hexahedron& deformed,
   const glm::dvec3& d,
   double tMin,
-  WarpedSegment* out,
+  Out&& out,
   int maxSegments,
   bool startsOutside = false,
   int faces = 0x3f)

@@ -179,6 +179,16 @@ inline bool RayHitsBounds(const glm::dvec3& o, const glm::dvec3& d, const AxisBo
 /// field showed along its warped ray (-1: not looked up, or nothing seen).
 struct BoxSegment
 {
+  /// The interval left unset, for the warp to write in place (FrameCage::NextSegment).
+  BoxSegment() {}
+  BoxSegment(const WarpedSegment& segment, int box, int seen = -1, bool joins = false)
+    : Segment(segment)
+    , Box(box)
+    , Seen(seen)
+    , Joins(joins)
+  {
+  }
+
   WarpedSegment Segment;
   int Box = 0;
   int Seen = -1;
@@ -767,7 +777,13 @@ struct FrameCage
         continue;
       }
       held[b] = ray;
-      scratch.Entries.push_back({ 0.0, b, i });
+      // (Field by field: a braced temporary was written to the stack in two
+      // 8-byte stores and read back in one 16-byte load, which waited for
+      // them to retire: a third of StartWalk's time in the swim.)
+      WalkEntry& entry = scratch.Entries.emplace_back();
+      entry.T = 0.0;
+      entry.Box = b;
+      entry.Listed = i;
     }
     if (scratch.Entries.size() > 1)
     {
@@ -854,21 +870,33 @@ struct FrameCage
           faces |= 1 << face;
         }
       }
-      WarpedSegment found[MaxWarpedSegments];
+      // The warp writes its intervals in place, after the list's end (a
+      // copy from its own array read each interval back while its stores
+      // were in flight, in 16-byte loads that no 8-byte store forwards: the
+      // loads waited for the stores to retire).
+      segments.resize(count + MaxWarpedSegments); // (StartWalk reserved room)
+      BoxSegment* written = segments.data() + count;
+      struct InPlace
+      {
+        BoxSegment* First;
+        WarpedSegment& operator[](int k) const { return this->First[k].Segment; }
+      };
       const int n = WarpRayThroughBox(this->Seen[b],
         box.Rest,
         box.Deformed,
         d,
         0.0,
-        found,
+        InPlace{ written },
         MaxWarpedSegments,
         box.EyeOutside,
         faces);
+      segments.resize(count + n);
       for (int k = 0; k < n; ++k)
       {
+        written[k].Box = b;
+        written[k].Joins = b == scratch.Landing;
         // Into its place among the pending intervals, after those of equal
         // order (the first pending one stays where it is written).
-        segments.push_back({ found[k], b, -1, b == scratch.Landing });
         if (++count > scratch.Handed + 1)
         {
           std::rotate(std::upper_bound(segments.begin() + scratch.Handed,
