@@ -552,13 +552,15 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   const double mergeT = 1e-9 * size / speed;
   const double shortestT = 1e-7 * size / speed;
 
-  // The face hits from tMin on, in the order found, with their box points
-  // (the face's own coordinate exactly 0 or 1, s and t clamped) and rest images.
+  // The face hits from tMin on, in the order found: the face and its
+  // coordinates s, t (clamped to the face). Their box points and rest images
+  // (FaceOfBox::BoxPoint, Map) are found only for the hits that bound an
+  // interval, straight into `out` (copied from here, they were read back
+  // while their stores were in flight).
   struct FaceHit
   {
     double T;
-    glm::dvec3 Uvw;
-    glm::dvec3 Rest;
+    double S, Tp; ///< s, t on the face
     int Face;
   };
   FaceHit found[12];
@@ -575,14 +577,16 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
         FaceHit& hit = found[nFound++];
         hit.T = std::max(hits[k].T, tMin);
         hit.Face = face;
-        // The box point, clamped to the face, and its rest image.
-        const double s = std::min(std::max(hits[k].ST.x, 0.0), 1.0);
-        const double t = std::min(std::max(hits[k].ST.y, 0.0), 1.0);
-        hit.Uvw = box.RestFaces[face].BoxPoint(s, t);
-        hit.Rest = box.RestFaces[face].Map(s, t);
+        hit.S = std::min(std::max(hits[k].ST.x, 0.0), 1.0);
+        hit.Tp = std::min(std::max(hits[k].ST.y, 0.0), 1.0);
       }
     }
   }
+  // A face hit's box point (the face's own coordinate exactly 0 or 1) and rest image.
+  const auto boxPoint = [&box](const auto& hit)
+  { return box.RestFaces[hit.Face].BoxPoint(hit.S, hit.Tp); };
+  const auto restPoint = [&box](const auto& hit)
+  { return box.RestFaces[hit.Face].Map(hit.S, hit.Tp); };
 
   if (startsOutside && nFound == 2 && maxSegments > 0)
   {
@@ -600,11 +604,11 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
       WarpedSegment& segment = out[0];
       segment.TEnter = enter.T;
       segment.TExit = exit.T;
-      segment.UvwEnter = enter.Uvw;
-      segment.UvwExit = exit.Uvw;
+      segment.UvwEnter = boxPoint(enter);
+      segment.UvwExit = boxPoint(exit);
       segment.FaceExit = exit.Face;
-      segment.RestEnter = enter.Rest;
-      segment.RestExit = exit.Rest;
+      segment.RestEnter = restPoint(enter);
+      segment.RestExit = restPoint(exit);
       return 1;
     }
   }
@@ -612,10 +616,9 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   struct Crossing
   {
     double T;
-    glm::dvec3 Uvw;
-    glm::dvec3 Rest; // the rest image of a face hit
-    bool OnFace;     // false for the point at tMin, whose uvw is not known yet
-    int Face;        // the face hit (-1 for the point at tMin)
+    double S, Tp; // s, t of a face hit
+    bool OnFace;  // false for the point at tMin, which is on no face
+    int Face;     // the face hit (-1 for the point at tMin)
   };
   // Sorted by T, hits of equal T in the order found (the insertion sort that
   // std::sort is below 16 elements, without its calls: the 3-box swim 228.4
@@ -624,7 +627,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   int n = 0;
   for (int i = 0; i < nFound; ++i)
   {
-    const Crossing crossing{ found[i].T, found[i].Uvw, found[i].Rest, true, found[i].Face };
+    const Crossing crossing{ found[i].T, found[i].S, found[i].Tp, true, found[i].Face };
     int at = n++;
     for (; at > 0 && crossing.T < crossings[at - 1].T; --at)
     {
@@ -639,7 +642,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   // (A point at tMin known to be outside starts no stretch that matters.)
   if (!startsOutside && std::isfinite(tMin) && (n == 0 || crossings[0].T > tMin + mergeT))
   {
-    merged[m++] = { tMin, glm::dvec3(0.5), glm::dvec3(0.0), false, -1 };
+    merged[m++] = { tMin, 0.0, 0.0, false, -1 };
   }
   for (int k = 0; k < n; ++k)
   {
@@ -664,7 +667,7 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
       // is close to the answer; from the box centre it may converge to a
       // preimage outside [0,1]^3 of a strongly deformed box (Contains is the
       // fallback when the close start fails).
-      glm::dvec3 uvw = a.OnFace ? 0.5 * (a.Uvw + b.Uvw) : b.Uvw;
+      glm::dvec3 uvw = a.OnFace ? 0.5 * (boxPoint(a) + boxPoint(b)) : boxPoint(b);
       const glm::dvec3 mid = o + (0.5 * (a.T + b.T)) * d;
       // From an outside eye every crossing is on a face (no tMin point).
       const bool inside = (startsOutside && m == 2) ||
@@ -687,17 +690,23 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
       ++k;
       continue;
     }
-    Crossing enter = merged[k];
+    const Crossing& enter = merged[k];
     const Crossing& exit = merged[last];
     k = last;
-    if (!enter.OnFace)
+    glm::dvec3 enterUvw;
+    if (enter.OnFace)
     {
-      enter.Uvw = firstMidUvw;
-      if (!InvertTrilinear(deformed, o + enter.T * d, enter.Uvw))
+      enterUvw = boxPoint(enter);
+    }
+    else
+    {
+      // (Only the point at tMin is off the faces.)
+      enterUvw = firstMidUvw;
+      if (!InvertTrilinear(deformed, o + enter.T * d, enterUvw))
       {
         continue;
       }
-      enter.Uvw = glm::clamp(enter.Uvw, 0.0, 1.0);
+      enterUvw = glm::clamp(enterUvw, 0.0, 1.0);
     }
     if (exit.T - enter.T < shortestT)
     {
@@ -706,12 +715,11 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
     WarpedSegment& segment = out[written++];
     segment.TEnter = enter.T;
     segment.TExit = exit.T;
-    segment.UvwEnter = enter.Uvw;
-    segment.UvwExit = exit.Uvw;
+    segment.UvwEnter = enterUvw;
+    segment.UvwExit = boxPoint(exit);
     segment.FaceExit = exit.Face;
-    // (Only the point at tMin is off the faces.)
-    segment.RestEnter = enter.OnFace ? enter.Rest : TrilinearMap(rest, enter.Uvw);
-    segment.RestExit = exit.Rest;
+    segment.RestEnter = enter.OnFace ? restPoint(enter) : TrilinearMap(rest, enterUvw);
+    segment.RestExit = restPoint(exit);
   }
   return written;
 }
