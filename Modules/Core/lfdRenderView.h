@@ -1986,9 +1986,9 @@ inline glm::dvec3 ShownColor(const ViewSample& seen, const RenderViewSettings& s
                                                                    : seen.Color;
 }
 
-/// `seen` (what lies behind) under the intervals composited in front of it.
-inline ViewSample Composite(const CoverageComposite& front,
-  ViewSample seen,
+/// `seen` (what lies behind), in place, under the intervals composited in front of it.
+inline void Composite(const CoverageComposite& front,
+  ViewSample& seen,
   const RenderViewSettings& settings)
 {
   if (front.Transmittance < 1.0)
@@ -1996,33 +1996,35 @@ inline ViewSample Composite(const CoverageComposite& front,
     seen.Color = front.Over(ShownColor(seen, settings));
     seen.Coverage = 1.0 - front.Transmittance;
   }
-  return seen;
 }
 
 /**
  * RENDER_VIEW (Sec. 6) of the ray `view` looks up, whose intervals
  * `next(view, run)` hands out front to back into `segments` (`any`: the ray
- * may have some); `primed` as ShadeSegments'.
+ * may have some), into `result`; `primed` as ShadeSegments'.
  */
 // (Always inlined: into RenderWalks(), with ShadeSegments, which the
 // compiler then inlines there too, a walked ray's shading is no longer
 // three nested calls, each saving registers and passing its arguments and
 // its ViewSample through memory: the swim 113.7 -> 111.0 M instructions a
-// frame.)
+// frame. Shaded in the caller's ViewSample, the frame's own: returned, it
+// was copied twice on its way there, each copy read back while the stores
+// of the one before were in flight.)
 template<typename Lookup, typename Next>
-__attribute__((always_inline)) inline ViewSample ShadeView(ViewRayLook<Lookup>& view,
+__attribute__((always_inline)) inline void ShadeView(ViewRayLook<Lookup>& view,
   const std::vector<RenderBox>& boxes,
   const Lookup& lookup,
   const RenderViewSettings& settings,
   bool any,
   Next&& next,
   const std::vector<BoxSegment>& segments,
-  const PrimedSegment<Lookup>* primed)
+  const PrimedSegment<Lookup>* primed,
+  ViewSample& result)
 {
+  result = ViewSample();
   CoverageComposite front;
   if (settings.UseLabels && !boxes.empty())
   {
-    ViewSample result;
     // (Most rays of a frame miss every box: they skip the segment walk. The
     // widened search runs after the walk handed every interval out.)
     if (any && ShadeSegments(boxes, next, lookup, settings, view, result, front, primed))
@@ -2030,7 +2032,7 @@ __attribute__((always_inline)) inline ViewSample ShadeView(ViewRayLook<Lookup>& 
       if (front.Transmittance <= CoverageComposite::Opaque)
       {
         result.Color = front.Color;
-        return result;
+        return;
       }
       // A soft edge: what no box owns shows behind it.
       ViewSample behind;
@@ -2040,19 +2042,22 @@ __attribute__((always_inline)) inline ViewSample ShadeView(ViewRayLook<Lookup>& 
         behind = LookUndeformed(view, settings);
       }
       result.Color = front.Over(ShownColor(behind, settings));
-      return result;
+      return;
     }
     if (any && settings.WidenedSearch && WidenSegments(boxes, segments, lookup, result))
     {
-      return Composite(front, result, settings);
+      Composite(front, result, settings);
+      return;
     }
     if (settings.AllOwned)
     {
       result.Label = 0;
-      return Composite(front, result, settings);
+      Composite(front, result, settings);
+      return;
     }
   }
-  return Composite(front, LookUndeformed(view, settings), settings);
+  result = LookUndeformed(view, settings);
+  Composite(front, result, settings);
 }
 } // namespace detail
 
@@ -2078,7 +2083,8 @@ ViewSample RenderView(const glm::dvec3& o,
   std::size_t k = 0;
   const BoxSegment* jumped = nullptr;
   detail::ViewRayLook<Lookup> view{ lookup, o, d };
-  return detail::ShadeView(
+  ViewSample seen;
+  detail::ShadeView(
     view,
     boxes,
     lookup,
@@ -2103,7 +2109,9 @@ ViewSample RenderView(const glm::dvec3& o,
       return k < segments.size() ? &segments[k++] : nullptr;
     },
     segments,
-    static_cast<const detail::PrimedSegment<Lookup>*>(nullptr));
+    static_cast<const detail::PrimedSegment<Lookup>*>(nullptr),
+    seen);
+  return seen;
 }
 
 /// The most rays RenderPlainViews takes at once.
@@ -2341,14 +2349,15 @@ void RenderWalks(const FrameCage& cage,
     {
       // (The widened search reads scratch[i].Segments when no interval
       // matched: the walk then handed every one out.)
-      seen[i] = detail::ShadeView(walks.Ray[i].View,
+      detail::ShadeView(walks.Ray[i].View,
         boxes,
         lookup,
         settings,
         true,
         detail::FrameWalk<Lookup>{ cage, scratch[i], d[i] },
         scratch[i].Segments,
-        &walks.Ray[i].Primed);
+        &walks.Ray[i].Primed,
+        seen[i]);
     }
   }
 }
