@@ -99,12 +99,9 @@ inline bool IntersectCylinderEntry(const Cylinder& cylinder,
 }
 
 /**
- * Point of the focal plane hit by the ray: the plane is orthogonal to the
- * ray and lies `focalDistance` in front of (towards the viewer from) the
- * point where the ray passes closest to the rig axis. focalDistance = 0 puts
- * the focal plane through the axis.
+ * Where the ray o + s d meets its focal plane (FocalPoint()): the parameter s.
  */
-inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
+inline double FocalParameter(const Cylinder& cylinder,
   const glm::dvec3& o,
   const glm::dvec3& d,
   double focalDistance)
@@ -121,7 +118,21 @@ inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
   const double t = (da * glm::dot(w, a) - glm::dot(w, d)) / (crossing ? denom : 1.0);
   const double s = crossing ? t : 0.0;
   // (The plane through the axis, the default, needs no square root.)
-  return o + (focalDistance != 0.0 ? s - focalDistance / std::sqrt(dd) : s) * d;
+  return focalDistance != 0.0 ? s - focalDistance / std::sqrt(dd) : s;
+}
+
+/**
+ * Point of the focal plane hit by the ray: the plane is orthogonal to the
+ * ray and lies `focalDistance` in front of (towards the viewer from) the
+ * point where the ray passes closest to the rig axis. focalDistance = 0 puts
+ * the focal plane through the axis.
+ */
+inline glm::dvec3 FocalPoint(const Cylinder& cylinder,
+  const glm::dvec3& o,
+  const glm::dvec3& d,
+  double focalDistance)
+{
+  return o + FocalParameter(cylinder, o, d, focalDistance) * d;
 }
 
 /**

@@ -1297,9 +1297,7 @@ struct SamplerLookup
   }
   double FocalParameter(const glm::dvec3& o, const glm::dvec3& d) const
   {
-    return glm::dot(
-             FocalPoint(this->Sampler.Layout->Cyl, o, d, this->Sampler.FocalDistance) - o, d) /
-      glm::dot(d, d);
+    return lfd::FocalParameter(this->Sampler.Layout->Cyl, o, d, this->Sampler.FocalDistance);
   }
 };
 
