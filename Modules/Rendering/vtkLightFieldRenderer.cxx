@@ -250,6 +250,39 @@ struct RenderRows
           renderBatch();
         }
       };
+      // The rays of consecutive tiles that list a box, walked in batches of
+      // up to lfd::MaximumPlainBatch (a tile row at a time, a batch held at
+      // most 8 rays: its first lookups were aimed in half-empty vectors);
+      // those whose walk finds no box join the plain batch, in order.
+      int walking = 0;
+      const auto renderWalks = [&]
+      {
+        if (walking == 0)
+        {
+          return;
+        }
+        lfd::RenderWalks(this->Cage,
+          walks,
+          y,
+          walking,
+          this->Light,
+          this->Settings,
+          scratch.data(),
+          walkSeen,
+          walked);
+        for (int i = 0; i < walking; ++i)
+        {
+          if (walked[i])
+          {
+            this->Write(row + walks[i], walkSeen[i]);
+          }
+          else
+          {
+            addToBatch(walks[i]);
+          }
+        }
+        walking = 0;
+      };
       // (A call per tile wrote 8 pixels through three library calls: about
       // 1 M instructions of the 3-box swim's frame.)
       int background = -1; // the first pixel of the run of background tiles before x0
@@ -273,6 +306,7 @@ struct RenderRows
         writeBackground(x0);
         if (!boxes)
         {
+          renderWalks(); // (the plain batch takes its rays in ascending order)
           for (int x = x0; x < x1; ++x)
           {
             addToBatch(x);
@@ -293,36 +327,17 @@ struct RenderRows
           }
           continue;
         }
-        for (int x = x0; x < x1; x += lfd::MaximumPlainBatch)
+        for (int x = x0; x < x1; ++x)
         {
-          const int count = std::min(x1 - x, lfd::MaximumPlainBatch);
-          for (int i = 0; i < count; ++i)
+          walks[walking++] = x;
+          if (walking == lfd::MaximumPlainBatch)
           {
-            walks[i] = x + i;
-          }
-          lfd::RenderWalks(this->Cage,
-            walks,
-            y,
-            count,
-            this->Light,
-            this->Settings,
-            scratch.data(),
-            walkSeen,
-            walked);
-          for (int i = 0; i < count; ++i)
-          {
-            if (walked[i])
-            {
-              this->Write(row + walks[i], walkSeen[i]);
-            }
-            else
-            {
-              addToBatch(walks[i]);
-            }
+            renderWalks();
           }
         }
       }
       writeBackground(this->Width);
+      renderWalks();
       renderBatch();
     }
   }
