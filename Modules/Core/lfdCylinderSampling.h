@@ -2759,33 +2759,69 @@ struct LabelTally
 
   explicit LabelTally(const RaySamples& samples, const bool* excluded = nullptr)
   {
-    for (int i = 0; i < samples.Count; ++i)
+    // The sums of a run of samples of one label (most rays' 16 samples are
+    // one run) are kept in registers: through memory, each sample's sums
+    // waited for the stores of the sample before (the fish at rest 0.97x).
+    int k = -1; // the run's label's entry
+    double weight = 0.0;
+    double color[3] = { 0.0, 0.0, 0.0 };
+    const auto keep = [&]
     {
-      const RaySample& sample = samples.Samples[i];
-      int k = 0;
-      while (k < this->Distinct && this->Labels[k] != sample.Label)
-      {
-        ++k;
-      }
-      if (k == this->Distinct)
-      {
-        this->Labels[k] = sample.Label;
-        this->Weights[k] = 0.0;
-        if constexpr (WithColor)
-        {
-          this->Colors[k][0] = this->Colors[k][1] = this->Colors[k][2] = 0.0;
-        }
-        ++this->Distinct;
-      }
-      const double weight = excluded && excluded[sample.Label] ? 0.0 : sample.Weight;
-      this->Weights[k] += weight;
+      this->Weights[k] = weight;
       if constexpr (WithColor)
       {
         for (int c = 0; c < 3; ++c)
         {
-          this->Colors[k][c] += weight * sample.Color[c];
+          this->Colors[k][c] = color[c];
         }
       }
+    };
+    for (int i = 0; i < samples.Count; ++i)
+    {
+      const RaySample& sample = samples.Samples[i];
+      if (k < 0 || this->Labels[k] != sample.Label)
+      {
+        if (k >= 0)
+        {
+          keep();
+        }
+        k = 0;
+        while (k < this->Distinct && this->Labels[k] != sample.Label)
+        {
+          ++k;
+        }
+        if (k == this->Distinct)
+        {
+          this->Labels[k] = sample.Label;
+          this->Weights[k] = 0.0;
+          if constexpr (WithColor)
+          {
+            this->Colors[k][0] = this->Colors[k][1] = this->Colors[k][2] = 0.0;
+          }
+          ++this->Distinct;
+        }
+        weight = this->Weights[k];
+        if constexpr (WithColor)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            color[c] = this->Colors[k][c];
+          }
+        }
+      }
+      const double w = excluded && excluded[sample.Label] ? 0.0 : sample.Weight;
+      weight += w;
+      if constexpr (WithColor)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          color[c] += w * sample.Color[c];
+        }
+      }
+    }
+    if (k >= 0)
+    {
+      keep();
     }
   }
 

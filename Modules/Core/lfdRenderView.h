@@ -874,7 +874,12 @@ struct FrameCage
       // copy from its own array read each interval back while its stores
       // were in flight, in 16-byte loads that no 8-byte store forwards: the
       // loads waited for the stores to retire).
-      segments.resize(count + MaxWarpedSegments); // (StartWalk reserved room)
+      // (Room for the most a warp writes, as StartWalk reserved it, by
+      // emplace_back's inline path: resize() was a library call.)
+      for (int k = 0; k < MaxWarpedSegments; ++k)
+      {
+        segments.emplace_back();
+      }
       BoxSegment* written = segments.data() + count;
       struct InPlace
       {
