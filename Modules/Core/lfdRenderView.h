@@ -777,13 +777,7 @@ struct FrameCage
         continue;
       }
       held[b] = ray;
-      // (Field by field: a braced temporary was written to the stack in two
-      // 8-byte stores and read back in one 16-byte load, which waited for
-      // them to retire: a third of StartWalk's time in the swim.)
-      WalkEntry& entry = scratch.Entries.emplace_back();
-      entry.T = 0.0;
-      entry.Box = b;
-      entry.Listed = i;
+      scratch.Entries.push_back({ 0.0, b, i });
     }
     if (scratch.Entries.size() > 1)
     {
