@@ -100,8 +100,9 @@ inline bool IntersectCylinderEntry(const Cylinder& cylinder,
 
 /**
  * Where the ray o + s d meets its focal plane (FocalPoint()): the parameter s.
+ * (Always inlined: FocalPoint and the walk's focal test call it.)
  */
-inline double FocalParameter(const Cylinder& cylinder,
+__attribute__((always_inline)) inline double FocalParameter(const Cylinder& cylinder,
   const glm::dvec3& o,
   const glm::dvec3& d,
   double focalDistance)
