@@ -703,11 +703,52 @@ inline bool DepthBounds(const ViewStack<float>& depth,
 }
 
 /**
+ * Per view, the Size x Size pixel blocks of its label image that hold a
+ * labelled (non-zero) pixel: LabelHull tests a voxel against them as well
+ * as against the view's label rectangle. The rectangle of a part seen
+ * obliquely (a fish seen from its side, a diagonal limb) is mostly
+ * background: of the swimming fish's lookups that passed the rectangles'
+ * hull, half had no labelled sample.
+ */
+struct LabelBlocks
+{
+  static constexpr int Size = 4;
+  int Columns = 0;
+  int Rows = 0;
+  /// Per view, Rows x Columns flags (1: a labelled pixel), top block row first.
+  std::vector<std::uint8_t> Labelled;
+
+  /// Whether view `view` has a labelled pixel in the pixel rectangle
+  /// [x0, x1] x [y0, y1] (OpenCV pixel indices, inclusive; clipped to the image).
+  bool Any(int view, int x0, int y0, int x1, int y1) const
+  {
+    const int bx0 = std::max(x0, 0) / Size;
+    const int by0 = std::max(y0, 0) / Size;
+    const int bx1 = std::min(x1 / Size, this->Columns - 1);
+    const int by1 = std::min(y1 / Size, this->Rows - 1);
+    const std::uint8_t* blocks =
+      this->Labelled.data() + static_cast<std::size_t>(view) * this->Rows * this->Columns;
+    for (int by = by0; by <= by1; ++by)
+    {
+      for (int bx = bx0; bx <= bx1; ++bx)
+      {
+        if (blocks[by * this->Columns + bx])
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+};
+
+/**
  * Where a focal-plane lookup can meet a part: per azimuth sector of the rig,
  * a voxel grid (in the rig's frame: RefX, RefY, Axis) marking every voxel
  * that the label cone of a view that may be chosen in the sector touches
  * (the cone from the view's centre through the bounding rectangle of its
- * labelled pixels, widened by the bilinear footprint). A ray whose entry
+ * labelled pixels, widened by the bilinear footprint; with LabelBlocks,
+ * through its blocks of 4 x 4 pixels that hold a labelled pixel). A ray whose entry
  * azimuth lies in a sector and whose focal point falls in an unmarked voxel
  * of that sector's grid has no labelled sample among its 16: with labels it
  * is background, exactly, and LightFieldSampler::Gather skips its texels.
@@ -787,7 +828,8 @@ struct LabelHull
   void MarkSector(int sector,
     const RingLayout& layout,
     const PinholeCamera* cameras,
-    const std::vector<glm::ivec4>& rects)
+    const std::vector<glm::ivec4>& rects,
+    const LabelBlocks* blocks = nullptr)
   {
     std::uint8_t* marks =
       this->Marks.data() + static_cast<std::size_t>(sector) * Cells * Cells * Cells;
@@ -817,7 +859,7 @@ struct LabelHull
         const glm::ivec4& rect = rects[view];
         if (rect.z >= rect.x)
         {
-          this->MarkCone(cameras[view], rect, radius, marks, layout);
+          this->MarkCone(cameras[view], rect, blocks, view, radius, marks, layout);
         }
       }
     }
@@ -1064,6 +1106,8 @@ private:
     glm::dmat3 ToCamera;
     glm::dvec3 Origin;
     glm::ivec4 Rect;
+    const LabelBlocks* Blocks; ///< null: the rectangle alone
+    int View;                  ///< the camera's view (Blocks)
   };
 
   /// The rig-frame coordinates (RefX, RefY, Axis) of the vector `v`.
@@ -1272,7 +1316,9 @@ private:
   /**
    * Whether the sphere of radius `radius` around the rig-frame point `q` may
    * project within one pixel of the view's label rectangle (a bilinear
-   * lookup reads the pixels within 1 of its position).
+   * lookup reads the pixels within 1 of its position) and, with label
+   * blocks, of a labelled pixel: one of the pixels whose index lies within
+   * 1 of the projection's bounds.
    */
   static bool SphereMayTouch(const ConeView& view, const glm::dvec3& q, double radius)
   {
@@ -1294,32 +1340,48 @@ private:
     const double du = std::abs(K[0][0]) * dx + std::abs(K[1][0]) * dy;
     const double dv = std::abs(K[0][1]) * dx + std::abs(K[1][1]) * dy;
     const glm::ivec4& rect = view.Rect;
-    return u + du > rect.x - 1.0 - 1e-6 && u - du < rect.z + 1.0 + 1e-6 &&
-      w + dv > rect.y - 1.0 - 1e-6 && w - dv < rect.w + 1.0 + 1e-6;
+    if (!(u + du > rect.x - 1.0 - 1e-6 && u - du < rect.z + 1.0 + 1e-6 &&
+          w + dv > rect.y - 1.0 - 1e-6 && w - dv < rect.w + 1.0 + 1e-6))
+    {
+      return false;
+    }
+    // The pixels p with u - du - 1 < p < u + du + 1 (and 1e-6 more for
+    // rounding), within the rectangle (the conditions above).
+    return !view.Blocks ||
+      view.Blocks->Any(view.View,
+        std::max(static_cast<int>(std::floor(u - du - 1.0 - 1e-6)), rect.x),
+        std::max(static_cast<int>(std::floor(w - dv - 1.0 - 1e-6)), rect.y),
+        std::min(static_cast<int>(std::ceil(u + du + 1.0 + 1e-6)), rect.z),
+        std::min(static_cast<int>(std::ceil(w + dv + 1.0 + 1e-6)), rect.w));
   }
 
   /**
    * Marks the voxels whose bounding sphere (radius `radius`) may project
-   * within one pixel of `rect` in `camera`: blocks of Block^3 voxels are
+   * within one pixel of `rect` in `camera` (and of a labelled pixel of
+   * `labelled`, view `view`, unless null): blocks of Block^3 voxels are
    * tested first (their own bounding sphere), so that the voxels of the
    * many blocks far from the cone are never tested one by one.
    */
   void MarkCone(const PinholeCamera& camera,
     const glm::ivec4& rect,
+    const LabelBlocks* labelled,
+    int view,
     double radius,
     std::uint8_t* marks,
     const RingLayout& layout) const
   {
     // World position of a rig-frame point: Center + RefX q.x + RefY q.y + Axis q.z.
     const glm::dmat3 frame(layout.RefX, layout.RefY, layout.Cyl.Axis);
-    const ConeView view{ camera, camera.R * frame, camera.R * layout.Cyl.Center + camera.t, rect };
+    const ConeView cone{
+      camera, camera.R * frame, camera.R * layout.Cyl.Center + camera.t, rect, labelled, view
+    };
     const int blocks = Cells / Block;
     for (int b = 0; b < blocks * blocks * blocks; ++b)
     {
       const glm::ivec3 corner =
         Block * glm::ivec3(b % blocks, b / blocks % blocks, b / blocks / blocks);
       const glm::dvec3 centre = this->Low + (glm::dvec3(corner) + 0.5 * Block) * this->CellSize;
-      if (!SphereMayTouch(view, centre, Block * radius))
+      if (!SphereMayTouch(cone, centre, Block * radius))
       {
         continue;
       }
@@ -1332,7 +1394,7 @@ private:
         if (!mark)
         {
           mark =
-            SphereMayTouch(view, this->Low + (glm::dvec3(cell) + 0.5) * this->CellSize, radius);
+            SphereMayTouch(cone, this->Low + (glm::dvec3(cell) + 0.5) * this->CellSize, radius);
         }
       }
     }
@@ -1341,16 +1403,28 @@ private:
 
 /**
  * The OpenCV pixel bounds (x0, y0, x1, y1) of the labelled (non-zero) pixels
- * of each view of a label stack; x1 < x0 for a view without any. Reads texel
+ * of each view of a label stack; x1 < x0 for a view without any; and, into
+ * `blocks` (unless null), the blocks that hold one. Reads texel
  * by texel through ViewStack::Pixel, so that labels served by an image cache
  * (tile by tile) are read once, in order.
  */
-inline std::vector<glm::ivec4> LabelRectangles(const ViewStack<std::uint8_t>& labels, int views)
+inline std::vector<glm::ivec4> LabelRectangles(const ViewStack<std::uint8_t>& labels,
+  int views,
+  LabelBlocks* blocks = nullptr)
 {
   std::vector<glm::ivec4> rects(views, glm::ivec4(labels.Width, labels.Height, -1, -1));
+  if (blocks)
+  {
+    blocks->Columns = (labels.Width + LabelBlocks::Size - 1) / LabelBlocks::Size;
+    blocks->Rows = (labels.Height + LabelBlocks::Size - 1) / LabelBlocks::Size;
+    blocks->Labelled.assign(static_cast<std::size_t>(views) * blocks->Rows * blocks->Columns, 0);
+  }
   for (int v = 0; v < views; ++v)
   {
     glm::ivec4& rect = rects[v];
+    std::uint8_t* labelled = blocks
+      ? blocks->Labelled.data() + static_cast<std::size_t>(v) * blocks->Rows * blocks->Columns
+      : nullptr;
     for (int y = 0; y < labels.Height; ++y)
     {
       int x0 = 0;
@@ -1368,6 +1442,15 @@ inline std::vector<glm::ivec4> LabelRectangles(const ViewStack<std::uint8_t>& la
         --x1;
       }
       rect = glm::ivec4(std::min(rect.x, x0), std::min(rect.y, y), std::max(rect.z, x1), y);
+      if (labelled)
+      {
+        // (The pixels between the row's first and last labelled ones.)
+        std::uint8_t* row = labelled + (y / LabelBlocks::Size) * blocks->Columns;
+        for (int x = x0; x <= x1; ++x)
+        {
+          row[x / LabelBlocks::Size] |= *labels.Pixel(v, x, y) != 0;
+        }
+      }
     }
   }
   return rects;

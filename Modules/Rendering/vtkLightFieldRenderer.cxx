@@ -939,8 +939,9 @@ const lfd::LabelHull& vtkLightFieldRenderer::GetLabelHull(vtkObject* holder,
     this->Hull = std::make_unique<lfd::LabelHull>();
     if (this->Hull->Initialize(layout, cameras.data(), labels.Width, labels.Height))
     {
+      lfd::LabelBlocks blocks;
       const std::vector<glm::ivec4> rects =
-        lfd::LabelRectangles(labels, static_cast<int>(cameras.size()));
+        lfd::LabelRectangles(labels, static_cast<int>(cameras.size()), &blocks);
       lfd::LabelHull& hull = *this->Hull;
       vtkSMPTools::For(0,
         lfd::LabelHull::Sectors,
@@ -948,7 +949,7 @@ const lfd::LabelHull& vtkLightFieldRenderer::GetLabelHull(vtkObject* holder,
         {
           for (vtkIdType sector = begin; sector < end; ++sector)
           {
-            hull.MarkSector(static_cast<int>(sector), layout, cameras.data(), rects);
+            hull.MarkSector(static_cast<int>(sector), layout, cameras.data(), rects, &blocks);
           }
         });
       hull.Unite();

@@ -818,6 +818,95 @@ void LabelHullSkips()
   sampler.Hull = nullptr;
 }
 
+// The label hull with label blocks (LabelBlocks): the rig of LabelHullSkips
+// whose label pass is a thin diagonal stripe, whose rectangle is mostly
+// background. With the blocks the hull marks fewer voxels and skips more
+// rays, never one with a labelled sample, and a ray it does not skip gets
+// the very same samples.
+void LabelBlockHullSkips()
+{
+  const int size = 32, perRow = 24, views = 2 * perRow;
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double axis[3] = { 0.0, 1.0, 0.0 };
+  const double heights[2] = { -0.5, 0.5 };
+  vtkNew<vtkLightField> lf;
+  lf->SetLayout(size, size, views);
+  lf->GetRig()->MakeCylinder(origin, axis, 4.0, perRow, 2, heights, size, size, 40.0);
+  auto* rgb = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::COAXIAL));
+  auto* label = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::LABEL));
+  for (vtkIdType p = 0; p < lf->GetNumberOfPoints(); ++p)
+  {
+    const int v = static_cast<int>(p / (size * size));
+    const int x = static_cast<int>(p % size);
+    const int y = static_cast<int>(p / size % size);
+    const bool stripe = x >= 6 && x < 26 && std::abs(x - y) <= 1;
+    rgb->SetComponent(p, 0, 5.0 * (v % 50));
+    label->SetComponent(p, 0, stripe ? 1 + v % 2 : 0);
+  }
+  std::vector<lfd::PinholeCamera> cameras(views);
+  for (int v = 0; v < views; ++v)
+  {
+    cameras[v] = lf->GetRig()->GetCamera(v);
+  }
+  const lfd::RingLayout layout = lf->GetRig()->GetRingLayout();
+  lfd::LightFieldSampler sampler;
+  sampler.Layout = &layout;
+  sampler.Cameras = cameras.data();
+  sampler.Radiance = { rgb->GetPointer(0), size, size, 3 };
+  sampler.Labels = { label->GetPointer(0), size, size, 1 };
+  sampler.FocalDistance = 0.3;
+  lfd::LabelBlocks blocks;
+  const std::vector<glm::ivec4> rects = lfd::LabelRectangles(sampler.Labels, views, &blocks);
+  Expect("label blocks per view", blocks.Columns * blocks.Rows, 64.0);
+  // (OpenCV rows: the stripe runs from (6, 24..26) to (25, 5..7).)
+  Expect("view 0: block (4..7, 24..27) on the stripe's end", blocks.Labelled[6 * 8 + 1], 1.0);
+  Expect("view 0: block (24..27, 0..3) off it", blocks.Labelled[0 * 8 + 6], 0.0);
+  Expect("view 0: any labelled pixel in (0, 0)-(7, 15)", blocks.Any(0, 0, 0, 7, 15), 0.0);
+  Expect("view 0: any labelled pixel in (20, 8)-(23, 11)", blocks.Any(0, 20, 8, 23, 11), 1.0);
+  lfd::LabelHull byRectangles, byBlocks;
+  Expect("hull grid sized", byRectangles.Initialize(layout, cameras.data(), size, size), 1.0);
+  byBlocks.Initialize(layout, cameras.data(), size, size);
+  for (int sector = 0; sector < lfd::LabelHull::Sectors; ++sector)
+  {
+    byRectangles.MarkSector(sector, layout, cameras.data(), rects);
+    byBlocks.MarkSector(sector, layout, cameras.data(), rects, &blocks);
+  }
+  byRectangles.Unite();
+  byBlocks.Unite();
+  int marked[2] = { 0, 0 }, widened = 0;
+  for (std::size_t i = 0; i < byBlocks.Marks.size(); ++i)
+  {
+    marked[0] += byRectangles.Marks[i] ? 1 : 0;
+    marked[1] += byBlocks.Marks[i] ? 1 : 0;
+    widened += byBlocks.Marks[i] && !byRectangles.Marks[i] ? 1 : 0;
+  }
+  Expect("voxels the rectangles mark (of 32 sectors x 32^3)", marked[0], 835028.0);
+  Expect("voxels the blocks mark", marked[1], 723479.0);
+  Expect("voxels the blocks mark and the rectangles do not", widened, 0.0);
+  std::uint32_t seed = 12345;
+  const auto uniform = [&seed](double low, double high)
+  {
+    seed = seed * 1664525u + 1013904223u;
+    return low + (high - low) * (seed >> 8) / double(1u << 24);
+  };
+  SkipCounts counts[2];
+  for (int i = 0; i < 4000; ++i)
+  {
+    glm::dvec3 o, d;
+    RandomRay(uniform, o, d);
+    lfd::RaySamples plain;
+    CountSkip(sampler, byRectangles, o, d, plain, counts[0]);
+    CountSkip(sampler, byBlocks, o, d, plain, counts[1]);
+  }
+  Expect("rays with a labelled sample", counts[1].Labelled, 737.0);
+  Expect("rays the rectangles' hull skips", counts[0].Skipped, 121.0);
+  Expect("rays the blocks' hull skips", counts[1].Skipped, 513.0);
+  Expect("skipped rays with a labelled sample (rectangles)", counts[0].Wrong, 0.0);
+  Expect("skipped rays with a labelled sample (blocks)", counts[1].Wrong, 0.0);
+  Expect("looked-up rays whose samples differ (blocks)", counts[1].Differing, 0.0);
+  sampler.Hull = nullptr;
+}
+
 int TestCylinderSampling(int, char*[])
 {
   AzimuthMatchesAtan2();
@@ -933,5 +1022,6 @@ int TestCylinderSampling(int, char*[])
 
   ProxySurface();
   LabelHullSkips();
+  LabelBlockHullSkips();
   return lfdtest::Result();
 }
