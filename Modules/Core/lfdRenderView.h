@@ -1296,7 +1296,8 @@ struct SamplerLookup
   }
   // (Always inlined: called out of line, through the library's PLT, by
   // every walked ray; the swim 0.99x.)
-  __attribute__((always_inline)) double FocalParameter(const glm::dvec3& o, const glm::dvec3& d) const
+  __attribute__((always_inline)) double FocalParameter(const glm::dvec3& o,
+    const glm::dvec3& d) const
   {
     return lfd::FocalParameter(this->Sampler.Layout->Cyl, o, d, this->Sampler.FocalDistance);
   }
