@@ -714,43 +714,66 @@ void EntrySectorsBound(const lfd::LightFieldSampler& sampler,
   Expect("inside: rays sampled from the views their batch projected", in.Projected, 5155.0);
 }
 
-// The label hull (LabelHull): two rings of 24 views of 32 x 32 whose label
-// pass is a square of 8 x 8 pixels (shifted by view), rays from all around
+// The rig of the label hull's tests: two rings of 24 views of 32 x 32
+// around the Y axis, whose Coaxial pass is 5 (v % 50) in view v and whose
+// Label pass is 1 + v % 2 where `labelled(v, x, y)` (VTK pixel rows), else
+// 0; and a sampler of it (focal distance 0.3). Not copied: the sampler
+// points into it.
+struct HullRig
+{
+  static constexpr int Size = 32, PerRow = 24, Views = 2 * PerRow;
+  vtkNew<vtkLightField> LightField;
+  std::vector<lfd::PinholeCamera> Cameras;
+  lfd::RingLayout Layout;
+  lfd::LightFieldSampler Sampler;
+
+  template<typename Labelled>
+  explicit HullRig(Labelled&& labelled)
+  {
+    const double origin[3] = { 0.0, 0.0, 0.0 };
+    const double axis[3] = { 0.0, 1.0, 0.0 };
+    const double heights[2] = { -0.5, 0.5 };
+    vtkLightField* lf = this->LightField;
+    lf->SetLayout(Size, Size, Views);
+    lf->GetRig()->MakeCylinder(origin, axis, 4.0, PerRow, 2, heights, Size, Size, 40.0);
+    auto* rgb = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::COAXIAL));
+    auto* label = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::LABEL));
+    for (vtkIdType p = 0; p < lf->GetNumberOfPoints(); ++p)
+    {
+      const int v = static_cast<int>(p / (Size * Size));
+      const int x = static_cast<int>(p % Size);
+      const int y = static_cast<int>(p / Size % Size);
+      rgb->SetComponent(p, 0, 5.0 * (v % 50));
+      label->SetComponent(p, 0, labelled(v, x, y) ? 1 + v % 2 : 0);
+    }
+    for (int v = 0; v < Views; ++v)
+    {
+      this->Cameras.push_back(lf->GetRig()->GetCamera(v));
+    }
+    this->Layout = lf->GetRig()->GetRingLayout();
+    this->Sampler.Layout = &this->Layout;
+    this->Sampler.Cameras = this->Cameras.data();
+    this->Sampler.Radiance = { rgb->GetPointer(0), Size, Size, 3 };
+    this->Sampler.Labels = { label->GetPointer(0), Size, Size, 1 };
+    this->Sampler.FocalDistance = 0.3;
+  }
+  HullRig(const HullRig&) = delete;
+  HullRig& operator=(const HullRig&) = delete;
+};
+
+// The label hull (LabelHull): the HullRig whose label pass is a square of
+// 8 x 8 pixels (shifted by view), rays from all around
 // aimed at a box around the object. A ray that the hull lets Gather skip must
 // have no labelled sample without the hull; a ray it does not skip must get
 // the very same samples.
 void LabelHullSkips()
 {
-  const int size = 32, perRow = 24, views = 2 * perRow;
-  const double origin[3] = { 0.0, 0.0, 0.0 };
-  const double axis[3] = { 0.0, 1.0, 0.0 };
-  const double heights[2] = { -0.5, 0.5 };
-  vtkNew<vtkLightField> lf;
-  lf->SetLayout(size, size, views);
-  lf->GetRig()->MakeCylinder(origin, axis, 4.0, perRow, 2, heights, size, size, 40.0);
-  auto* rgb = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::COAXIAL));
-  auto* label = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::LABEL));
-  for (vtkIdType p = 0; p < lf->GetNumberOfPoints(); ++p)
-  {
-    const int v = static_cast<int>(p / (size * size));
-    const int x = static_cast<int>(p % size);
-    const int y = static_cast<int>(p / size % size);
-    const bool inside = x >= 10 + v % 3 && x < 18 + v % 3 && y >= 12 && y < 20;
-    rgb->SetComponent(p, 0, 5.0 * (v % 50));
-    label->SetComponent(p, 0, inside ? 1 + v % 2 : 0);
-  }
-  std::vector<lfd::PinholeCamera> cameras(views);
-  for (int v = 0; v < views; ++v)
-  {
-    cameras[v] = lf->GetRig()->GetCamera(v);
-  }
-  const lfd::RingLayout layout = lf->GetRig()->GetRingLayout();
-  lfd::LightFieldSampler sampler;
-  sampler.Layout = &layout;
-  sampler.Cameras = cameras.data();
-  sampler.Radiance = { rgb->GetPointer(0), size, size, 3 };
-  sampler.Labels = { label->GetPointer(0), size, size, 1 };
-  sampler.FocalDistance = 0.3;
+  HullRig rig(
+    [](int v, int x, int y) { return x >= 10 + v % 3 && x < 18 + v % 3 && y >= 12 && y < 20; });
+  const int size = HullRig::Size, views = HullRig::Views;
+  const std::vector<lfd::PinholeCamera>& cameras = rig.Cameras;
+  const lfd::RingLayout& layout = rig.Layout;
+  lfd::LightFieldSampler& sampler = rig.Sampler;
   lfd::LabelHull hull;
   Expect("hull grid sized", hull.Initialize(layout, cameras.data(), size, size), 1.0);
   const std::vector<glm::ivec4> rects = lfd::LabelRectangles(sampler.Labels, views);
@@ -818,43 +841,18 @@ void LabelHullSkips()
   sampler.Hull = nullptr;
 }
 
-// The label hull with label blocks (LabelBlocks): the rig of LabelHullSkips
-// whose label pass is a thin diagonal stripe, whose rectangle is mostly
+// The label hull with label blocks (LabelBlocks): the HullRig whose label
+// pass is a thin diagonal stripe, whose rectangle is mostly
 // background. With the blocks the hull marks fewer voxels and skips more
 // rays, never one with a labelled sample, and a ray it does not skip gets
 // the very same samples.
 void LabelBlockHullSkips()
 {
-  const int size = 32, perRow = 24, views = 2 * perRow;
-  const double origin[3] = { 0.0, 0.0, 0.0 };
-  const double axis[3] = { 0.0, 1.0, 0.0 };
-  const double heights[2] = { -0.5, 0.5 };
-  vtkNew<vtkLightField> lf;
-  lf->SetLayout(size, size, views);
-  lf->GetRig()->MakeCylinder(origin, axis, 4.0, perRow, 2, heights, size, size, 40.0);
-  auto* rgb = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::COAXIAL));
-  auto* label = static_cast<vtkUnsignedCharArray*>(lf->AllocatePass(vtkLightField::LABEL));
-  for (vtkIdType p = 0; p < lf->GetNumberOfPoints(); ++p)
-  {
-    const int v = static_cast<int>(p / (size * size));
-    const int x = static_cast<int>(p % size);
-    const int y = static_cast<int>(p / size % size);
-    const bool stripe = x >= 6 && x < 26 && std::abs(x - y) <= 1;
-    rgb->SetComponent(p, 0, 5.0 * (v % 50));
-    label->SetComponent(p, 0, stripe ? 1 + v % 2 : 0);
-  }
-  std::vector<lfd::PinholeCamera> cameras(views);
-  for (int v = 0; v < views; ++v)
-  {
-    cameras[v] = lf->GetRig()->GetCamera(v);
-  }
-  const lfd::RingLayout layout = lf->GetRig()->GetRingLayout();
-  lfd::LightFieldSampler sampler;
-  sampler.Layout = &layout;
-  sampler.Cameras = cameras.data();
-  sampler.Radiance = { rgb->GetPointer(0), size, size, 3 };
-  sampler.Labels = { label->GetPointer(0), size, size, 1 };
-  sampler.FocalDistance = 0.3;
+  HullRig rig([](int, int x, int y) { return x >= 6 && x < 26 && std::abs(x - y) <= 1; });
+  const int size = HullRig::Size, views = HullRig::Views;
+  const std::vector<lfd::PinholeCamera>& cameras = rig.Cameras;
+  const lfd::RingLayout& layout = rig.Layout;
+  lfd::LightFieldSampler& sampler = rig.Sampler;
   lfd::LabelBlocks blocks;
   const std::vector<glm::ivec4> rects = lfd::LabelRectangles(sampler.Labels, views, &blocks);
   Expect("label blocks per view", blocks.Columns * blocks.Rows, 64.0);
