@@ -1346,13 +1346,18 @@ private:
       return false;
     }
     // The pixels p with u - du - 1 < p < u + du + 1 (and 1e-6 more for
-    // rounding), within the rectangle (the conditions above).
+    // rounding), within the rectangle (the conditions above; clamped to it
+    // before the conversion to int, which the far side may overflow).
+    const auto first = [](double from, int low)
+    { return static_cast<int>(std::floor(std::max(from, double(low)))); };
+    const auto last = [](double to, int high)
+    { return static_cast<int>(std::ceil(std::min(to, double(high)))); };
     return !view.Blocks ||
       view.Blocks->Any(view.View,
-        std::max(static_cast<int>(std::floor(u - du - 1.0 - 1e-6)), rect.x),
-        std::max(static_cast<int>(std::floor(w - dv - 1.0 - 1e-6)), rect.y),
-        std::min(static_cast<int>(std::ceil(u + du + 1.0 + 1e-6)), rect.z),
-        std::min(static_cast<int>(std::ceil(w + dv + 1.0 + 1e-6)), rect.w));
+        first(u - du - 1.0 - 1e-6, rect.x),
+        first(w - dv - 1.0 - 1e-6, rect.y),
+        last(u + du + 1.0 + 1e-6, rect.z),
+        last(w + dv + 1.0 + 1e-6, rect.w));
   }
 
   /**
@@ -1404,9 +1409,9 @@ private:
 /**
  * The OpenCV pixel bounds (x0, y0, x1, y1) of the labelled (non-zero) pixels
  * of each view of a label stack; x1 < x0 for a view without any; and, into
- * `blocks` (unless null), the blocks that hold one. Reads texel
- * by texel through ViewStack::Pixel, so that labels served by an image cache
- * (tile by tile) are read once, in order.
+ * `blocks` (unless null), the blocks that hold one. Reads texel by texel
+ * through ViewStack::Pixel, row by row, so that labels served by an image
+ * cache (tile by tile) are read in order.
  */
 inline std::vector<glm::ivec4> LabelRectangles(const ViewStack<std::uint8_t>& labels,
   int views,

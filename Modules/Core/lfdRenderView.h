@@ -864,12 +864,11 @@ struct FrameCage
           faces |= 1 << face;
         }
       }
-      // The warp writes its intervals in place, after the list's end (a
-      // copy from its own array read each interval back while its stores
-      // were in flight, in 16-byte loads that no 8-byte store forwards: the
-      // loads waited for the stores to retire).
-      // (Room for the most a warp writes, as StartWalk reserved it, by
-      // emplace_back's inline path: resize() was a library call.)
+      // The warp writes its intervals in place after the list's end, in room
+      // for the most it writes (StartWalk reserved it; made by emplace_back's
+      // inline path, resize() was a library call). Copied from an array of
+      // the warp's own, each interval was read back while its stores were in
+      // flight, in 16-byte loads that no 8-byte store forwards.
       for (int k = 0; k < MaxWarpedSegments; ++k)
       {
         segments.emplace_back();
