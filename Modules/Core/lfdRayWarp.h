@@ -32,6 +32,10 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 namespace lfd
 {
 
@@ -722,6 +726,297 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
     segment.RestExit = restPoint(exit);
   }
   return written;
+}
+
+/// The most rays WarpRaysThroughBox takes at once.
+constexpr int MaximumWarpBatch = 4;
+
+#if defined(__GNUC__) && defined(__x86_64__)
+namespace detail
+{
+/// Four lanes of FusedMultiplyAddFma3: c = a * b + c, rounded once (the
+/// processor must have FMA3; as inline assembly, in a function built for
+/// AVX2 alone, no other product is contracted).
+__attribute__((target("avx2"))) inline __m256d FusedMultiplyAddFma3x4(__m256d a,
+  __m256d b,
+  __m256d c)
+{
+  __asm__("vfmadd231pd %[b], %[a], %[c]" : [c] "+x"(c) : [a] "x"(a), [b] "x"(b));
+  return c;
+}
+
+/// glm::dot(u, v) of a constant u with four lanes of v: (x + y) + z, as glm sums it.
+__attribute__((target("avx2"))) inline __m256d Dot4(const glm::dvec3& u,
+  __m256d x,
+  __m256d y,
+  __m256d z)
+{
+  return _mm256_add_pd(
+    _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(u.x), x), _mm256_mul_pd(_mm256_set1_pd(u.y), y)),
+    _mm256_mul_pd(_mm256_set1_pd(u.z), z));
+}
+
+/// Whether each lane of v lies in [-PatchParameterSlack, 1 + PatchParameterSlack] (all bits set).
+__attribute__((target("avx2"))) inline __m256d OnPatch4(__m256d v)
+{
+  return _mm256_and_pd(_mm256_cmp_pd(v, _mm256_set1_pd(-PatchParameterSlack), _CMP_GE_OQ),
+    _mm256_cmp_pd(v, _mm256_set1_pd(1.0 + PatchParameterSlack), _CMP_LE_OQ));
+}
+
+/// Four lanes of |v|.
+__attribute__((target("avx2"))) inline __m256d Abs4(__m256d v)
+{
+  return _mm256_andnot_pd(_mm256_set1_pd(-0.0), v);
+}
+
+/**
+ * PatchFromOrigin::IntersectPlanar of a planar patch for four rays (the
+ * same operations, lane by lane): per lane, up to two hits (T, s, t) and
+ * their masks (Hit[k]: all bits set), and Undecided, the lanes where
+ * IntersectPlanar returns -1 (a grazing ray, or an f(s) that vanishes).
+ */
+struct PlanarHits4
+{
+  __m256d T, S[2], Tp[2], Hit[2], Undecided;
+
+  __attribute__((target("avx2")))
+  PlanarHits4(const PatchFromOrigin& patch, __m256d dx, __m256d dy, __m256d dz, __m256d speed)
+  {
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d dn = Dot4(patch.Normal, dx, dy, dz);
+    this->Undecided = _mm256_cmp_pd(
+      Abs4(dn), _mm256_mul_pd(_mm256_set1_pd(patch.GrazingLimit), speed), _CMP_NGT_UQ);
+    this->T = _mm256_div_pd(_mm256_set1_pd(patch.QNormal), dn);
+    if (patch.Form == PatchFromOrigin::Shape::Parallelogram)
+    {
+      const __m256d s = _mm256_div_pd(Dot4(patch.C, dx, dy, dz), _mm256_sub_pd(zero, dn));
+      const __m256d t = _mm256_div_pd(Dot4(patch.TForm, dx, dy, dz), dn);
+      this->S[0] = s;
+      this->Tp[0] = t;
+      this->Hit[0] = _mm256_and_pd(OnPatch4(s), OnPatch4(t));
+      this->S[1] = this->Tp[1] = this->Hit[1] = zero;
+      return;
+    }
+    // RootsAlongS.
+    const __m256d a = Dot4(patch.A, dx, dy, dz);
+    const __m256d b = Dot4(patch.B, dx, dy, dz);
+    const __m256d c = Dot4(patch.C, dx, dy, dz);
+    const __m256d vanishing =
+      _mm256_mul_pd(_mm256_set1_pd(1e-12), _mm256_mul_pd(_mm256_set1_pd(patch.Scale), speed));
+    const __m256d vanishes =
+      _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(Abs4(a), vanishing, _CMP_LE_OQ),
+                      _mm256_cmp_pd(Abs4(b), vanishing, _CMP_LE_OQ)),
+        _mm256_cmp_pd(Abs4(c), vanishing, _CMP_LE_OQ));
+    this->Undecided = _mm256_or_pd(this->Undecided, vanishes);
+    // DifferenceOfProducts(b, b, 4 a, c).
+    const __m256d a4 = _mm256_mul_pd(_mm256_set1_pd(4.0), a);
+    const __m256d cd = _mm256_mul_pd(a4, c);
+    const __m256d error = FusedMultiplyAddFma3x4(_mm256_sub_pd(zero, a4), c, cd);
+    const __m256d discriminant =
+      _mm256_add_pd(FusedMultiplyAddFma3x4(b, b, _mm256_sub_pd(zero, cd)), error);
+    const __m256d real = _mm256_cmp_pd(discriminant, zero, _CMP_NLT_UQ);
+    const __m256d sign = _mm256_set1_pd(-0.0);
+    const __m256d root = _mm256_sqrt_pd(discriminant);
+    const __m256d signedRoot =
+      _mm256_or_pd(_mm256_andnot_pd(sign, root), _mm256_and_pd(sign, b)); // copysign
+    const __m256d qq = _mm256_mul_pd(_mm256_set1_pd(-0.5), _mm256_add_pd(b, signedRoot));
+    const __m256d two = _mm256_set1_pd(2.0);
+    const __m256d first = _mm256_and_pd(real,
+      _mm256_and_pd(_mm256_cmp_pd(Abs4(qq), _mm256_mul_pd(two, Abs4(a)), _CMP_LE_OQ),
+        _mm256_cmp_pd(a, zero, _CMP_NEQ_UQ)));
+    const __m256d s0 = _mm256_div_pd(qq, a);
+    const __m256d s1 = _mm256_div_pd(c, qq);
+    __m256d second = _mm256_and_pd(real,
+      _mm256_and_pd(_mm256_cmp_pd(Abs4(c), _mm256_mul_pd(two, Abs4(qq)), _CMP_LE_OQ),
+        _mm256_cmp_pd(qq, zero, _CMP_NEQ_UQ)));
+    second = _mm256_andnot_pd(_mm256_and_pd(first, _mm256_cmp_pd(s1, s0, _CMP_EQ_OQ)), second);
+    // Each root's t from the crossing's component across the s-edges.
+    const __m256d dAcross = Dot4(patch.Across, dx, dy, dz);
+    const __m256d numerator =
+      _mm256_sub_pd(_mm256_mul_pd(this->T, dAcross), _mm256_set1_pd(patch.QAcross));
+    const __m256d roots[2] = { s0, s1 };
+    const __m256d found[2] = { first, second };
+    for (int k = 0; k < 2; ++k)
+    {
+      const __m256d across = _mm256_add_pd(_mm256_set1_pd(patch.E00Across),
+        _mm256_mul_pd(roots[k], _mm256_set1_pd(patch.TwistAcross)));
+      const __m256d t = _mm256_div_pd(numerator, across);
+      this->S[k] = roots[k];
+      this->Tp[k] = t;
+      this->Hit[k] = _mm256_and_pd(_mm256_and_pd(found[k], OnPatch4(roots[k])),
+        _mm256_and_pd(_mm256_cmp_pd(Abs4(across), _mm256_set1_pd(patch.CollapsedLine), _CMP_GT_OQ),
+          OnPatch4(t)));
+    }
+  }
+};
+
+/// FaceOfBox::Map of four lanes of (s, t): the same products and sums.
+__attribute__((target("avx2"))) inline void Map4(const FaceOfBox& face,
+  __m256d s,
+  __m256d t,
+  __m256d point[3])
+{
+  const __m256d one = _mm256_set1_pd(1.0);
+  const __m256d s1 = _mm256_sub_pd(one, s);
+  const __m256d t1 = _mm256_sub_pd(one, t);
+  const __m256d weights[4] = { _mm256_mul_pd(face.Flip[0] ? s : s1, t1),
+    _mm256_mul_pd(face.Flip[0] ? s1 : s, t1),
+    _mm256_mul_pd(face.Flip[1] ? s : s1, t),
+    _mm256_mul_pd(face.Flip[1] ? s1 : s, t) };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    __m256d sum = _mm256_setzero_pd();
+    for (int k = 0; k < 4; ++k)
+    {
+      sum = _mm256_add_pd(sum, _mm256_mul_pd(weights[k], _mm256_set1_pd(face.Corners[k][axis])));
+    }
+    point[axis] = sum;
+  }
+}
+
+/// WarpRaysThroughBox's lanes (the processor must have AVX2 and FMA3).
+__attribute__((target("avx2"))) inline void WarpRaysThroughBoxAvx2(const BoxFromOrigin& box,
+  int face0,
+  int face1,
+  const glm::dvec3* d,
+  int count,
+  WarpedSegment* out,
+  int* status)
+{
+  alignas(32) double lanes[3][4];
+  for (int i = 0; i < 4; ++i)
+  {
+    const glm::dvec3& di = d[std::min(i, count - 1)]; // (lanes past count repeat the last ray)
+    lanes[0][i] = di.x;
+    lanes[1][i] = di.y;
+    lanes[2][i] = di.z;
+  }
+  const __m256d dx = _mm256_load_pd(lanes[0]);
+  const __m256d dy = _mm256_load_pd(lanes[1]);
+  const __m256d dz = _mm256_load_pd(lanes[2]);
+  const __m256d zero = _mm256_setzero_pd();
+  const __m256d one = _mm256_set1_pd(1.0);
+  // glm::length: the root of glm::dot(d, d).
+  const __m256d speed = _mm256_sqrt_pd(_mm256_add_pd(
+    _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)));
+  const __m256d mergeT = _mm256_div_pd(_mm256_set1_pd(1e-9 * box.Size), speed);
+  const __m256d shortestT = _mm256_div_pd(_mm256_set1_pd(1e-7 * box.Size), speed);
+  const PlanarHits4 hits[2] = { PlanarHits4(box.Faces[face0], dx, dy, dz, speed),
+    PlanarHits4(box.Faces[face1], dx, dy, dz, speed) };
+  // Per face, its hit from the ray's start on (WarpRayThroughBox keeps
+  // those at T >= tMin - mergeT), and whether it has one, or two.
+  const __m256d from = _mm256_sub_pd(zero, mergeT);
+  __m256d T[2], S[2], Tp[2], once[2], twice[2];
+  __m256d undecided = _mm256_or_pd(hits[0].Undecided, hits[1].Undecided);
+  undecided = _mm256_or_pd(undecided, _mm256_cmp_pd(speed, zero, _CMP_NGT_UQ));
+  for (int f = 0; f < 2; ++f)
+  {
+    const __m256d after = _mm256_cmp_pd(hits[f].T, from, _CMP_GE_OQ);
+    const __m256d h0 = _mm256_and_pd(hits[f].Hit[0], after);
+    const __m256d h1 = _mm256_and_pd(hits[f].Hit[1], after);
+    once[f] = _mm256_xor_pd(h0, h1);
+    twice[f] = _mm256_and_pd(h0, h1);
+    T[f] = _mm256_max_pd(zero, hits[f].T); // std::max(T, tMin)
+    // The clamped s, t of the face's one hit (std::min(std::max(v, 0), 1)).
+    const __m256d s = _mm256_blendv_pd(hits[f].S[1], hits[f].S[0], h0);
+    const __m256d t = _mm256_blendv_pd(hits[f].Tp[1], hits[f].Tp[0], h0);
+    S[f] = _mm256_min_pd(one, _mm256_max_pd(zero, s));
+    Tp[f] = _mm256_min_pd(one, _mm256_max_pd(zero, t));
+  }
+  // The two-hit path: the ray's hits ordered (the first face's first).
+  const __m256d swap = _mm256_cmp_pd(T[1], T[0], _CMP_LT_OQ);
+  const __m256d enterT = _mm256_blendv_pd(T[0], T[1], swap);
+  const __m256d exitT = _mm256_blendv_pd(T[1], T[0], swap);
+  const __m256d apart = _mm256_cmp_pd(exitT, _mm256_add_pd(enterT, mergeT), _CMP_GT_OQ);
+  const __m256d longEnough = _mm256_cmp_pd(_mm256_sub_pd(exitT, enterT), shortestT, _CMP_NLT_UQ);
+  __m256d points[2][3];
+  Map4(box.RestFaces[face0], S[0], Tp[0], points[0]);
+  Map4(box.RestFaces[face1], S[1], Tp[1], points[1]);
+  alignas(32) double values[14][4];
+  _mm256_store_pd(values[0], enterT);
+  _mm256_store_pd(values[1], exitT);
+  for (int f = 0; f < 2; ++f)
+  {
+    _mm256_store_pd(values[2 + f], S[f]);
+    _mm256_store_pd(values[4 + f], Tp[f]);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      _mm256_store_pd(values[6 + 3 * f + axis], points[f][axis]);
+    }
+  }
+  const int undecidedLanes = _mm256_movemask_pd(undecided);
+  const int oneEach = _mm256_movemask_pd(_mm256_and_pd(once[0], once[1]));
+  const int twoAny = _mm256_movemask_pd(_mm256_or_pd(twice[0], twice[1]));
+  const int oneAny = _mm256_movemask_pd(_mm256_or_pd(once[0], once[1]));
+  const int swapped = _mm256_movemask_pd(swap);
+  const int kept = _mm256_movemask_pd(_mm256_and_pd(apart, longEnough));
+  for (int i = 0; i < count; ++i)
+  {
+    const int bit = 1 << i;
+    if ((undecidedLanes & bit) || (twoAny & bit) || ((oneAny & bit) && !(oneEach & bit)))
+    {
+      // (Three hits or more, or two of one face: WarpRayThroughBox merges
+      // them, or two from one ray that no plane decides.)
+      status[i] = (undecidedLanes & bit) || (twoAny & bit) ? -1 : 0;
+      continue;
+    }
+    if (!(oneEach & bit) || !(kept & bit))
+    {
+      status[i] = 0; // fewer than two crossings, or two too close together
+      continue;
+    }
+    const int enter = (swapped & bit) ? 1 : 0;
+    const int exit = 1 - enter;
+    const FaceOfBox& enterFace = box.RestFaces[enter ? face1 : face0];
+    const FaceOfBox& exitFace = box.RestFaces[exit ? face1 : face0];
+    WarpedSegment& segment = out[i];
+    segment.TEnter = values[0][i];
+    segment.TExit = values[1][i];
+    segment.UvwEnter = enterFace.BoxPoint(values[2 + enter][i], values[4 + enter][i]);
+    segment.UvwExit = exitFace.BoxPoint(values[2 + exit][i], values[4 + exit][i]);
+    segment.FaceExit = exit ? face1 : face0;
+    segment.RestEnter =
+      glm::dvec3(values[6 + 3 * enter][i], values[7 + 3 * enter][i], values[8 + 3 * enter][i]);
+    segment.RestExit =
+      glm::dvec3(values[6 + 3 * exit][i], values[7 + 3 * exit][i], values[8 + 3 * exit][i]);
+    status[i] = 1;
+  }
+}
+} // namespace detail
+#endif
+
+/**
+ * WarpRayThroughBox for the rays o + T d[i], i < count <= MaximumWarpBatch,
+ * o = box.Origin outside the box (startsOutside), tMin = 0, through the
+ * faces face0 < face1 only (`faces` = their two bits), both planar: per
+ * ray, status[i] = 1 and out[i] the one interval, 0 for none, or -1 where
+ * the batch does not decide (the caller warps that ray with
+ * WarpRayThroughBox). On a processor with AVX2 and FMA3, the four rays are
+ * the lanes of vectors, each lane the operations of WarpRayThroughBox,
+ * so that the results are the same to the bit; elsewhere every status is
+ * -1. A ray through a box crosses two faces: warped one by one, each
+ * crossing is a dependent chain of two divisions and a square root
+ * (IntersectPlanar) waiting on the next, and the warp was a quarter of the
+ * 3-box swim's frame.
+ */
+inline void WarpRaysThroughBox(const BoxFromOrigin& box,
+  int face0,
+  int face1,
+  const glm::dvec3* d,
+  int count,
+  WarpedSegment* out,
+  int* status)
+{
+  std::fill(status, status + count, -1);
+#if defined(__GNUC__) && defined(__x86_64__)
+  static const bool avx2 = __builtin_cpu_supports("avx2") && detail::HasFma3();
+  const PatchFromOrigin::Shape curved = PatchFromOrigin::Shape::Curved;
+  if (avx2 && count > 0 && box.Size > 0.0 && box.Faces[face0].Form != curved &&
+    box.Faces[face1].Form != curved)
+  {
+    detail::WarpRaysThroughBoxAvx2(box, face0, face1, d, count, out, status);
+  }
+#endif
 }
 
 /// WarpRayThroughBox for a single ray: the box seen from o built on the spot.

@@ -571,6 +571,11 @@ struct FrameRayScratch
   const BoxSegment* RunSkipped = nullptr; ///< the interval whose run LeaveOut last left out
   int Landing = -1;       ///< the box where the run left out ahead of an interval goes on
   std::vector<int> Chain; ///< FrameCage::FollowRun's chain of boxes
+  /// The box of the ray's first entry when FrameCage::WarpAhead() warped it
+  /// (-1: none), its number of intervals (0 or 1) and its interval.
+  int AheadBox = -1;
+  int AheadCount = 0;
+  WarpedSegment Ahead;
 };
 
 /**
@@ -820,6 +825,7 @@ struct FrameCage
     }
     scratch.RunSkipped = nullptr;
     scratch.Landing = -1;
+    scratch.AheadBox = -1;
     // NextSegment's intervals never move: ShadeSegments holds one back.
     scratch.Segments.reserve(scratch.Entries.size() * MaxWarpedSegments);
     return scratch.Entries.size();
@@ -852,18 +858,6 @@ struct FrameCage
         continue;
       }
       ++scratch.Warps;
-      const RenderBox& box = (*this->Boxes)[b];
-      const HullsInTile& hulls = this->TileHulls[entry.Listed];
-      int faces = hulls.FacesIn;
-      for (int across = hulls.FacesAcross; across != 0;
-           across &= across - 1) // (as MayHold's edges)
-      {
-        const int face = detail::LowestSetBit(across);
-        if (this->FaceHulls[b][face].MayHold(scratch.Pixel.x, scratch.Pixel.y, hulls.Faces[face]))
-        {
-          faces |= 1 << face;
-        }
-      }
       // The warp writes its intervals in place after the list's end, in room
       // for the most it writes (StartWalk reserved it; made by emplace_back's
       // inline path, resize() was a library call). Copied from an array of
@@ -879,15 +873,30 @@ struct FrameCage
         BoxSegment* First;
         WarpedSegment& operator[](int k) const { return this->First[k].Segment; }
       };
-      const int n = WarpRayThroughBox(this->Seen[b],
-        box.Rest,
-        box.Deformed,
-        d,
-        0.0,
-        InPlace{ written },
-        MaxWarpedSegments,
-        box.EyeOutside,
-        faces);
+      int n = 0;
+      if (b == scratch.AheadBox)
+      {
+        // (Warped with other rays' first boxes: WarpAhead.)
+        n = scratch.AheadCount;
+        scratch.AheadBox = -1;
+        if (n > 0)
+        {
+          written[0].Segment = scratch.Ahead;
+        }
+      }
+      else
+      {
+        const RenderBox& box = (*this->Boxes)[b];
+        n = WarpRayThroughBox(this->Seen[b],
+          box.Rest,
+          box.Deformed,
+          d,
+          0.0,
+          InPlace{ written },
+          MaxWarpedSegments,
+          box.EyeOutside,
+          this->FacesMet(entry, scratch));
+      }
       segments.resize(count + n);
       for (int k = 0; k < n; ++k)
       {
@@ -911,6 +920,99 @@ struct FrameCage
       return nullptr;
     }
     return &segments[scratch.Handed++];
+  }
+
+  /**
+   * The faces of the box of `entry` that the ray StartWalk started for
+   * `scratch` may cross (bit k: face k): those whose projected hull holds
+   * the pixel (the others the warp does not intersect).
+   */
+  int FacesMet(const WalkEntry& entry, const FrameRayScratch& scratch) const
+  {
+    const HullsInTile& hulls = this->TileHulls[entry.Listed];
+    int faces = hulls.FacesIn;
+    for (int across = hulls.FacesAcross; across != 0; across &= across - 1) // (as MayHold's edges)
+    {
+      const int face = detail::LowestSetBit(across);
+      if (this->FaceHulls[entry.Box][face].MayHold(
+            scratch.Pixel.x, scratch.Pixel.y, hulls.Faces[face]))
+      {
+        faces |= 1 << face;
+      }
+    }
+    return faces;
+  }
+
+  /**
+   * Warps the first box of the walks of the rays i < count <= MaximumPlainBatch
+   * that StartWalk started in scratch[i] (walked[i]; direction d[i]), where
+   * WarpRaysThroughBox decides it, into scratch[i].Ahead, which NextSegment
+   * then hands out as WarpRayThroughBox's intervals, the same to the bit: a
+   * box that moved (the walk never leaves its first box out, see
+   * FrameWalk), seen from outside, whose ray crosses two of its faces, both
+   * planar (every face of a cage posed by turning its layers: the swim, the
+   * bend), by runs of rays of one box and two faces, up to MaximumWarpBatch.
+   */
+  void WarpAhead(const glm::dvec3* d, const bool* walked, int count, FrameRayScratch* scratch) const
+  {
+    const std::vector<RenderBox>& boxes = *this->Boxes;
+    int rays[MaximumWarpBatch];
+    glm::dvec3 directions[MaximumWarpBatch];
+    WarpedSegment warped[MaximumWarpBatch];
+    int status[MaximumWarpBatch];
+    int n = 0, box = -1, faces = 0;
+    const auto flush = [&]
+    {
+      WarpRaysThroughBox(this->Seen[box],
+        detail::LowestSetBit(faces),
+        detail::LowestSetBit(faces & (faces - 1)),
+        directions,
+        n,
+        warped,
+        status);
+      for (int k = 0; k < n; ++k)
+      {
+        if (status[k] >= 0)
+        {
+          FrameRayScratch& ray = scratch[rays[k]];
+          ray.AheadBox = box;
+          ray.AheadCount = status[k];
+          ray.Ahead = warped[k];
+        }
+      }
+      n = 0;
+    };
+    for (int i = 0; i < count; ++i)
+    {
+      if (!walked[i])
+      {
+        continue;
+      }
+      const WalkEntry& entry = scratch[i].Entries.front();
+      const RenderBox& first = boxes[entry.Box];
+      if (!first.Moved || !first.EyeOutside)
+      {
+        continue;
+      }
+      const int met = this->FacesMet(entry, scratch[i]);
+      const int second = met & (met - 1); // (met less its lowest face)
+      if (second == 0 || (second & (second - 1)) != 0)
+      {
+        continue; // (not two faces)
+      }
+      if (n > 0 && (entry.Box != box || met != faces || n == MaximumWarpBatch))
+      {
+        flush();
+      }
+      box = entry.Box;
+      faces = met;
+      rays[n] = i;
+      directions[n++] = d[i];
+    }
+    if (n > 0)
+    {
+      flush();
+    }
   }
 
   /**
@@ -2304,6 +2406,10 @@ void RenderWalks(const FrameCage& cage,
   {
     d[i] = cage.Direction(xs[i], y);
     walked[i] = cage.StartWalk(xs[i], y, d[i], scratch[i]) > 0;
+  }
+  cage.WarpAhead(d, walked, count, scratch);
+  for (int i = 0; i < count; ++i)
+  {
     if (walked[i])
     {
       detail::WalkedRay<Lookup>& ray =

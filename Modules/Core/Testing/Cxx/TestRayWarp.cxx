@@ -4,7 +4,9 @@
 // rays through edges and corners and rays grazing a face give the right
 // number of segments and no NaN; a twisted box is entered twice; a ray
 // leaving one box enters its face neighbour at the same point; a point of a
-// face maps into the rest box as well through the face's 4 corners alone.
+// face maps into the rest box as well through the face's 4 corners alone;
+// rays warped four at a time through two planar faces (WarpRaysThroughBox)
+// get the intervals of WarpRayThroughBox to the bit.
 #include "lfdRayWarp.h"
 #include "lfdTestChecks.h"
 
@@ -429,6 +431,131 @@ void MapOnFaces()
   Expect("points of faces (12000) mapped unlike TrilinearMap, bitwise", different, 0);
 }
 
+/**
+ * WarpRaysThroughBox against WarpRayThroughBox through the same two faces
+ * (every pair of planar faces; a ray crossing neither or one gets no
+ * interval), bitwise: frusta hinged at one end (two sides trapezoids, two
+ * curved, the ends parallelograms), turned and moved, seen from outside,
+ * rays at random points near the box, at its corners and at its edges'
+ * midpoints, and parallel to 4 of its faces, in batches of 1 to 4.
+ */
+void WarpsInBatches()
+{
+  using namespace TestRayWarpHelpers;
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);
+  int compared = 0, decided = 0, intervals = 0, different = 0;
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    lfd::Hexahedron rest = UnitCube(), deformed = UnitCube();
+    const double taper = 0.4 + 0.8 * unit(rng), hinge = 0.6 * sym(rng);
+    for (int i = 4; i < 8;
+         ++i) // (w = 1: narrowed, then turned about the x axis through (0.5, 0.5, 0))
+    {
+      glm::dvec3& c = deformed.Corners[i];
+      c = glm::dvec3(0.5 + taper * (c.x - 0.5), 0.5 + taper * (c.y - 0.5), c.z);
+      const double y = c.y - 0.5, z = c.z;
+      c.y = 0.5 + std::cos(hinge) * y - std::sin(hinge) * z;
+      c.z = std::sin(hinge) * y + std::cos(hinge) * z;
+    }
+    const glm::dvec3 axis = glm::normalize(glm::dvec3(sym(rng), sym(rng), sym(rng)));
+    const double angle = 3.0 * sym(rng);
+    const glm::dvec3 shift(sym(rng), sym(rng), sym(rng));
+    for (auto& c : deformed.Corners)
+    {
+      // Rodrigues' rotation, then a shift.
+      c = c * std::cos(angle) + glm::cross(axis, c) * std::sin(angle) +
+        axis * glm::dot(axis, c) * (1.0 - std::cos(angle)) + shift;
+    }
+    for (auto& c : rest.Corners)
+    {
+      c = 2.0 * c + shift;
+    }
+    const glm::dvec3 centre = lfd::TrilinearMap(deformed, glm::dvec3(0.5));
+    glm::dvec3 eye;
+    do
+    {
+      eye = centre + 4.0 * glm::dvec3(sym(rng), sym(rng), sym(rng));
+    } while (Inside(deformed, eye) || glm::distance(eye, centre) < 2.0);
+    const lfd::BoxFromOrigin seen(rest, deformed, eye);
+    glm::dvec3 d[lfd::MaximumWarpBatch];
+    for (int batch = 0; batch < 20; ++batch)
+    {
+      const int count = 1 + batch % lfd::MaximumWarpBatch;
+      for (int i = 0; i < count; ++i)
+      {
+        const int kind = (batch + i) % 5;
+        const glm::dvec3 target = kind == 0 ? deformed.Corners[(batch + i) % 8]
+          : kind == 1
+          ? 0.5 * (deformed.Corners[(batch + i) % 8] + deformed.Corners[(batch + 3 * i) % 8])
+          : lfd::TrilinearMap(
+              deformed, glm::dvec3(1.4 * unit(rng) - 0.2, 1.4 * unit(rng) - 0.2, unit(rng)));
+        // (Every fifth ray along an edge of faces 2 and 4: parallel to
+        // their planes, which it does not cross, or lies in.)
+        d[i] = kind == 4 ? deformed.Corners[1] - deformed.Corners[0]
+                         : (0.5 + unit(rng)) * (target - eye);
+      }
+      for (int face0 = 0; face0 < 6; ++face0)
+      {
+        for (int face1 = face0 + 1; face1 < 6; ++face1)
+        {
+          if (seen.Faces[face0].Form == lfd::PatchFromOrigin::Shape::Curved ||
+            seen.Faces[face1].Form == lfd::PatchFromOrigin::Shape::Curved)
+          {
+            continue;
+          }
+          lfd::WarpedSegment batched[lfd::MaximumWarpBatch];
+          int status[lfd::MaximumWarpBatch];
+          lfd::WarpRaysThroughBox(seen, face0, face1, d, count, batched, status);
+          for (int i = 0; i < count; ++i)
+          {
+            lfd::WarpedSegment one[lfd::MaxWarpedSegments];
+            const int n = lfd::WarpRayThroughBox(seen,
+              rest,
+              deformed,
+              d[i],
+              0.0,
+              one,
+              lfd::MaxWarpedSegments,
+              true,
+              (1 << face0) | (1 << face1));
+            ++compared;
+            if (status[i] < 0)
+            {
+              continue;
+            }
+            ++decided;
+            intervals += status[i];
+            const lfd::WarpedSegment& a = batched[i];
+            const lfd::WarpedSegment& b = one[0];
+            different += n != status[i] ||
+              (n == 1 &&
+                (std::memcmp(&a.TEnter, &b.TEnter, sizeof(double)) != 0 ||
+                  std::memcmp(&a.TExit, &b.TExit, sizeof(double)) != 0 ||
+                  std::memcmp(&a.RestEnter, &b.RestEnter, sizeof(glm::dvec3)) != 0 ||
+                  std::memcmp(&a.RestExit, &b.RestExit, sizeof(glm::dvec3)) != 0 ||
+                  std::memcmp(&a.UvwEnter, &b.UvwEnter, sizeof(glm::dvec3)) != 0 ||
+                  std::memcmp(&a.UvwExit, &b.UvwExit, sizeof(glm::dvec3)) != 0 ||
+                  a.FaceExit != b.FaceExit));
+          }
+        }
+      }
+    }
+  }
+  std::cout << "batched warps: " << compared << " rays and face pairs, " << decided << " decided, "
+            << intervals << " intervals\n";
+  Expect("batched warps unlike WarpRayThroughBox, bitwise", different, 0);
+#if defined(__GNUC__) && defined(__x86_64__)
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+  {
+    // (Undecided: the rays parallel to faces 2 and 4, with either face.)
+    lfdtest::Check(decided >= 0.8 * compared && decided < compared,
+      "batched warps decide 80% or more of the rays, not the rays parallel to a face");
+    lfdtest::Check(intervals >= 2000, "batched warps give at least 2000 intervals");
+  }
+#endif
+}
+
 int TestRayWarp(int, char*[])
 {
   using namespace TestRayWarpHelpers;
@@ -437,5 +564,6 @@ int TestRayWarp(int, char*[])
   EdgesCornersAndGrazing();
   TwistedBox();
   SharedFace();
+  WarpsInBatches();
   return lfdtest::Result();
 }
