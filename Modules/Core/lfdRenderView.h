@@ -536,6 +536,14 @@ struct OrientedBounds
 /// A box a ray of a frame may meet (FrameCage::StartWalk).
 struct WalkEntry
 {
+  WalkEntry() = default;
+  WalkEntry(double t, int box, int listed)
+    : T(t)
+    , Box(box)
+    , Listed(listed)
+  {
+  }
+
   /// Where the ray enters the box's widened oriented bounds (0 for a ray's
   /// only box: there is nothing to order, see FrameCage::StartWalk).
   double T;
@@ -782,7 +790,11 @@ struct FrameCage
         continue;
       }
       held[b] = ray;
-      scratch.Entries.push_back({ 0.0, b, i });
+      // (Built in place: pushed as a braced temporary, the entry was stored
+      // in two halves on the stack and copied at once in one load, which
+      // waited for the stores; that was a third of the bent 100-slab
+      // fish's walks' starts.)
+      scratch.Entries.emplace_back(0.0, b, i);
     }
     if (scratch.Entries.size() > 1)
     {
@@ -795,13 +807,18 @@ struct FrameCage
       WalkEntry* entries = scratch.Entries.data();
       const OrientedBounds* oriented = this->Oriented.data();
       std::size_t kept = 0;
+      // (Field by field, here and in the sort: the entries were just
+      // stored so, and a whole entry loaded at once would wait for them.)
       for (std::size_t k = 0; k < scratch.Entries.size(); ++k)
       {
-        const WalkEntry entry = entries[k];
+        const int box = entries[k].Box, listed = entries[k].Listed;
         double t = 0.0;
-        if (oriented[entry.Box].Entry(direction, t))
+        if (oriented[box].Entry(direction, t))
         {
-          entries[kept++] = { t, entry.Box, entry.Listed };
+          entries[kept].T = t;
+          entries[kept].Box = box;
+          entries[kept].Listed = listed;
+          ++kept;
         }
       }
       scratch.Entries.resize(kept);
@@ -810,13 +827,17 @@ struct FrameCage
       // about twice the instructions of this loop over the same moves).
       for (std::size_t k = 1; k < kept; ++k)
       {
-        const WalkEntry entry = entries[k];
+        const WalkEntry entry(entries[k].T, entries[k].Box, entries[k].Listed);
         std::size_t j = k;
         for (; j > 0 && entry < entries[j - 1]; --j)
         {
-          entries[j] = entries[j - 1];
+          entries[j].T = entries[j - 1].T;
+          entries[j].Box = entries[j - 1].Box;
+          entries[j].Listed = entries[j - 1].Listed;
         }
-        entries[j] = entry;
+        entries[j].T = entry.T;
+        entries[j].Box = entry.Box;
+        entries[j].Listed = entry.Listed;
       }
     }
     if (scratch.Entries.empty())
