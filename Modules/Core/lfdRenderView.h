@@ -972,7 +972,9 @@ struct FrameCage
    * box that moved (the walk never leaves its first box out, see
    * FrameWalk), seen from outside, whose ray crosses two of its faces, both
    * planar (every face of a cage posed by turning its layers: the swim, the
-   * bend), by runs of rays of one box and two faces, up to MaximumWarpBatch.
+   * bend), by runs of rays of one box and two faces, up to MaximumWarpBatch
+   * (the 3-box swim's frame 8.8 -> 7.9 ms, the bent 100-slab fish's 2%
+   * less: its rays' next pieces are warped one by one).
    */
   void WarpAhead(const glm::dvec3* d, const bool* walked, int count, FrameRayScratch* scratch) const
   {
@@ -2389,7 +2391,9 @@ struct WalkedRay
  *
  * Every ray's walk is taken to its first lookup (RunCursor: its boxes
  * warped, a slab run's pieces in front of its focal point left out) before
- * any ray's walk goes on; with a lookup that gathers in two stages, the
+ * any ray's walk goes on, the box each walk warps first warped for the
+ * batch at once, four rays at a time (FrameCage::WarpAhead(): a warp is a
+ * dependent chain too); with a lookup that gathers in two stages, the
  * warped rays of those first lookups (of moved boxes) are aimed in one
  * batch (AimBatch() from an origin per ray): each one's geometry is a long
  * dependent chain, as a plain ray's (RenderPlainViews()), and the chains
