@@ -592,7 +592,9 @@ inline int WarpRayThroughBox(const BoxFromOrigin& box,
   const auto boxPoint = [&box](const auto& hit)
   { return box.RestFaces[hit.Face].BoxPoint(hit.S, hit.Tp); };
   const auto restPoint = [&box](const auto& hit) __attribute__((always_inline))
-  { return box.RestFaces[hit.Face].Map(hit.S, hit.Tp); };
+  {
+    return box.RestFaces[hit.Face].Map(hit.S, hit.Tp);
+  };
 
   if (startsOutside && nFound == 2 && maxSegments > 0)
   {
