@@ -413,7 +413,8 @@ void HundredBoxFrame()
  * boxes are warped ahead of the interval the walk needs, for the same
  * pixels (those of CollectSegments over every box). A ray across a slab is
  * outside the projected hulls of its 4 thin sides: the warp intersects only
- * the faces whose hull holds the pixel.
+ * the faces whose hull holds the pixel. Rendered 16 rays a batch
+ * (RenderWalks, their first boxes warped four at a time), the same pixels.
  */
 void TiltedSlabs()
 {
@@ -503,6 +504,76 @@ void TiltedSlabs()
   Expect(
     "  boxes warped, entered at their axis-aligned bounds", static_cast<double>(warped[1]), 4292);
   Expect("  faces intersected (of 6 per box warped)", static_cast<double>(faces), 3054);
+
+  // The frame rendered 16 rays a batch, as the renderer does (RenderWalks:
+  // the first box of each walk warped four rays at a time, FrameCage::
+  // WarpAhead), for the same pixels; and those warps, taken alone, the
+  // intervals WarpRayThroughBox gives, to the bit.
+  std::vector<lfd::FrameRayScratch> batch(lfd::MaximumPlainBatch);
+  int batchedUnlike = 0, ahead = 0, aheadUnlike = 0;
+  for (int y = 0; y < 32; ++y)
+  {
+    for (int x0 = 0; x0 < 32; x0 += lfd::MaximumPlainBatch)
+    {
+      int xs[lfd::MaximumPlainBatch];
+      glm::dvec3 d[lfd::MaximumPlainBatch];
+      lfd::ViewSample seen[lfd::MaximumPlainBatch];
+      bool walked[lfd::MaximumPlainBatch];
+      for (int i = 0; i < lfd::MaximumPlainBatch; ++i)
+      {
+        xs[i] = x0 + i;
+        d[i] = oriented.Direction(xs[i], y);
+      }
+      lfd::RenderWalks(
+        oriented, xs, y, lfd::MaximumPlainBatch, lookup, settings, batch.data(), seen, walked);
+      for (int i = 0; i < lfd::MaximumPlainBatch; ++i)
+      {
+        if (!walked[i])
+        {
+          lfd::RenderPlainViews(oriented, &xs[i], y, 1, lookup, settings, &seen[i]);
+        }
+        const lfd::ViewSample expected =
+          lfd::RenderView(eye, d[i], boxes, lookup, settings, reference);
+        batchedUnlike += seen[i].Label != expected.Label || seen[i].Color != expected.Color ||
+          seen[i].Depth != expected.Depth;
+        walked[i] = oriented.StartWalk(xs[i], y, d[i], batch[i]) > 0;
+      }
+      oriented.WarpAhead(d, walked, lfd::MaximumPlainBatch, batch.data());
+      for (int i = 0; i < lfd::MaximumPlainBatch; ++i)
+      {
+        const lfd::FrameRayScratch& ray = batch[i];
+        if (!walked[i] || ray.AheadBox < 0)
+        {
+          continue;
+        }
+        ++ahead;
+        const lfd::RenderBox& box = boxes[ray.AheadBox];
+        lfd::WarpedSegment one[lfd::MaxWarpedSegments];
+        const int n = lfd::WarpRayThroughBox(oriented.Seen[ray.AheadBox],
+          box.Rest,
+          box.Deformed,
+          d[i],
+          0.0,
+          one,
+          lfd::MaxWarpedSegments,
+          true,
+          oriented.FacesMet(ray.Entries.front(), ray));
+        aheadUnlike += n != ray.AheadCount ||
+          (n == 1 &&
+            (one[0].TEnter != ray.Ahead.TEnter || one[0].TExit != ray.Ahead.TExit ||
+              one[0].RestEnter != ray.Ahead.RestEnter || one[0].RestExit != ray.Ahead.RestExit ||
+              one[0].FaceExit != ray.Ahead.FaceExit));
+      }
+    }
+  }
+  Expect("  pixels rendered 16 a batch unlike testing every box", batchedUnlike, 0);
+#if defined(__GNUC__) && defined(__x86_64__)
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+  {
+    Expect("  first boxes warped ahead, four rays at a time", ahead, 694);
+  }
+#endif
+  Expect("  of those, unlike WarpRayThroughBox", aheadUnlike, 0);
 }
 
 /**
