@@ -639,6 +639,9 @@ struct FrameCage
   std::vector<OrientedBounds> Oriented; ///< per box, along its axes, widened (see above)
   /// Per box, the projected hull of each face (HexFacePatch order).
   std::vector<std::array<ScreenHull, 6>> FaceHulls;
+  /// Per box, its curved faces (bit k: face k; PatchFromOrigin::Shape), which
+  /// WarpAhead leaves to the warp ray by ray.
+  std::vector<std::uint8_t> CurvedFaces;
   /// Per box and face, the box sharing the face (the same 4 deformed corners)
   /// times 6 plus the face's index in it; -1 for none.
   std::vector<std::array<int, 6>> Neighbors;
@@ -695,6 +698,7 @@ struct FrameCage
     this->Hulls.resize(boxes.size());
     this->Oriented.resize(boxes.size());
     this->FaceHulls.resize(boxes.size());
+    this->CurvedFaces.assign(boxes.size(), 0);
     for (std::size_t b = 0; b < boxes.size(); ++b)
     {
       this->Seen[b] = BoxFromOrigin(boxes[b].Rest, boxes[b].Deformed, eye);
@@ -703,6 +707,8 @@ struct FrameCage
       {
         this->FaceHulls[b][face] =
           this->ProjectedHull(boxes[b].Deformed.Corners, HexFacePatch[face]);
+        const bool curved = this->Seen[b].Faces[face].Form == PatchFromOrigin::Shape::Curved;
+        this->CurvedFaces[b] |= static_cast<std::uint8_t>(curved << face);
       }
       const AxisBounds& bounds = boxes[b].Bounds;
       this->Oriented[b] =
@@ -1017,11 +1023,18 @@ struct FrameCage
       {
         continue;
       }
+      // (A curved face that the ray surely crosses rules the box out before
+      // the faces are found: the twisted figure's.)
+      const int curved = this->CurvedFaces[entry.Box];
+      if (this->TileHulls[entry.Listed].FacesIn & curved)
+      {
+        continue;
+      }
       const int met = this->FacesMet(entry, scratch[i]);
       const int second = met & (met - 1); // (met less its lowest face)
-      if (second == 0 || (second & (second - 1)) != 0)
+      if (second == 0 || (second & (second - 1)) != 0 || (met & curved) != 0)
       {
-        continue; // (not two faces)
+        continue; // (not two planar faces)
       }
       if (n > 0 && (entry.Box != box || met != faces || n == MaximumWarpBatch))
       {
