@@ -992,7 +992,7 @@ __attribute__((target("avx2"))) inline void WarpRaysThroughBoxAvx2(const BoxFrom
 /**
  * WarpRayThroughBox for the rays o + T d[i], i < count <= MaximumWarpBatch,
  * o = box.Origin outside the box (startsOutside), tMin = 0, through the
- * faces face0 < face1 only (`faces` = their two bits), both planar: per
+ * two faces whose bits `faces` sets only, both planar: per
  * ray, status[i] = 1 and out[i] the one interval, 0 for none, or -1 where
  * the batch does not decide (the caller warps that ray with
  * WarpRayThroughBox). On a processor with AVX2 and FMA3, the four rays are
@@ -1004,8 +1004,7 @@ __attribute__((target("avx2"))) inline void WarpRaysThroughBoxAvx2(const BoxFrom
  * 3-box swim's frame.
  */
 inline void WarpRaysThroughBox(const BoxFromOrigin& box,
-  int face0,
-  int face1,
+  int faces,
   const glm::dvec3* d,
   int count,
   WarpedSegment* out,
@@ -1014,6 +1013,8 @@ inline void WarpRaysThroughBox(const BoxFromOrigin& box,
   std::fill(status, status + count, -1);
 #if defined(__GNUC__) && defined(__x86_64__)
   static const bool avx2 = __builtin_cpu_supports("avx2") && detail::HasFma3();
+  const int face0 = detail::LowestSetBit(faces);
+  const int face1 = detail::LowestSetBit(faces & (faces - 1));
   const PatchFromOrigin::Shape curved = PatchFromOrigin::Shape::Curved;
   if (avx2 && count > 0 && box.Size > 0.0 && box.Faces[face0].Form != curved &&
     box.Faces[face1].Form != curved)

@@ -992,13 +992,7 @@ struct FrameCage
     int n = 0, box = -1, faces = 0;
     const auto flush = [&]
     {
-      WarpRaysThroughBox(this->Seen[box],
-        detail::LowestSetBit(faces),
-        detail::LowestSetBit(faces & (faces - 1)),
-        directions,
-        n,
-        warped,
-        status);
+      WarpRaysThroughBox(this->Seen[box], faces, directions, n, warped, status);
       for (int k = 0; k < n; ++k)
       {
         if (status[k] >= 0)

@@ -506,7 +506,7 @@ void WarpsInBatches()
           }
           lfd::WarpedSegment batched[lfd::MaximumWarpBatch];
           int status[lfd::MaximumWarpBatch];
-          lfd::WarpRaysThroughBox(seen, face0, face1, d, count, batched, status);
+          lfd::WarpRaysThroughBox(seen, (1 << face0) | (1 << face1), d, count, batched, status);
           for (int i = 0; i < count; ++i)
           {
             lfd::WarpedSegment one[lfd::MaxWarpedSegments];
