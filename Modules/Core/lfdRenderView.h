@@ -889,8 +889,11 @@ struct FrameCage
       // for the most it writes (StartWalk reserved it; made by emplace_back's
       // inline path, resize() was a library call). Copied from an array of
       // the warp's own, each interval was read back while its stores were in
-      // flight, in 16-byte loads that no 8-byte store forwards.
-      for (int k = 0; k < MaxWarpedSegments; ++k)
+      // flight, in 16-byte loads that no 8-byte store forwards. (A box
+      // warped ahead has its intervals, none or one, already.)
+      const bool ahead = b == scratch.AheadBox;
+      const int room = ahead ? scratch.AheadCount : MaxWarpedSegments;
+      for (int k = 0; k < room; ++k)
       {
         segments.emplace_back();
       }
@@ -901,7 +904,7 @@ struct FrameCage
         WarpedSegment& operator[](int k) const { return this->First[k].Segment; }
       };
       int n = 0;
-      if (b == scratch.AheadBox)
+      if (ahead)
       {
         // (Warped with other rays' first boxes: WarpAhead.)
         n = scratch.AheadCount;
