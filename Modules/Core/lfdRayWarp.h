@@ -486,6 +486,9 @@ struct BoxFromOrigin
   FaceOfBox RestFaces[6];
   glm::dvec3 Origin{ 0.0 };
   double Size = 0.0; ///< BoxSize of the deformed box
+  /// The curved faces (bit k: Faces[k] is PatchFromOrigin::Shape::Curved),
+  /// which WarpRaysThroughBox leaves to WarpRayThroughBox.
+  int CurvedFaces = 0;
 
   BoxFromOrigin() = default;
   BoxFromOrigin(const Hexahedron& rest, const Hexahedron& deformed, const glm::dvec3& o)
@@ -501,6 +504,8 @@ struct BoxFromOrigin
         deformed.Corners[c[3]],
         o);
       this->RestFaces[face] = FaceOfBox(rest, face);
+      this->CurvedFaces |= (this->Faces[face].Form == PatchFromOrigin::Shape::Curved ? 1 : 0)
+        << face;
     }
   }
 };
@@ -879,12 +884,13 @@ __attribute__((target("avx2"))) inline void Map4(const FaceOfBox& face,
 }
 
 /// WarpRaysThroughBox's lanes (the processor must have AVX2 and FMA3).
+template<typename Out>
 __attribute__((target("avx2"))) inline void WarpRaysThroughBoxAvx2(const BoxFromOrigin& box,
   int face0,
   int face1,
   const glm::dvec3* d,
   int count,
-  WarpedSegment* out,
+  Out&& out,
   int* status)
 {
   alignas(32) double lanes[3][4];
@@ -993,7 +999,9 @@ __attribute__((target("avx2"))) inline void WarpRaysThroughBoxAvx2(const BoxFrom
  * WarpRayThroughBox for the rays o + T d[i], i < count <= MaximumWarpBatch,
  * o = box.Origin outside the box (startsOutside), tMin = 0, through the
  * two faces whose bits `faces` sets only, both planar: per
- * ray, status[i] = 1 and out[i] the one interval, 0 for none, or -1 where
+ * ray, status[i] = 1 and out[i] the one interval (`out` as
+ * WarpRayThroughBox's: an array, or an accessor that writes where the
+ * caller keeps the interval), 0 for none, or -1 where
  * the batch does not decide (the caller warps that ray with
  * WarpRayThroughBox). On a processor with AVX2 and FMA3, the four rays are
  * the lanes of vectors, each lane the operations of WarpRayThroughBox,
@@ -1003,23 +1011,26 @@ __attribute__((target("avx2"))) inline void WarpRaysThroughBoxAvx2(const BoxFrom
  * (IntersectPlanar) waiting on the next, and the warp was a quarter of the
  * 3-box swim's frame.
  */
+template<typename Out>
 inline void WarpRaysThroughBox(const BoxFromOrigin& box,
   int faces,
   const glm::dvec3* d,
   int count,
-  WarpedSegment* out,
+  Out&& out,
   int* status)
 {
   std::fill(status, status + count, -1);
 #if defined(__GNUC__) && defined(__x86_64__)
   static const bool avx2 = __builtin_cpu_supports("avx2") && detail::HasFma3();
-  const int face0 = detail::LowestSetBit(faces);
-  const int face1 = detail::LowestSetBit(faces & (faces - 1));
-  const PatchFromOrigin::Shape curved = PatchFromOrigin::Shape::Curved;
-  if (avx2 && count > 0 && box.Size > 0.0 && box.Faces[face0].Form != curved &&
-    box.Faces[face1].Form != curved)
+  if (avx2 && count > 0 && box.Size > 0.0 && (faces & box.CurvedFaces) == 0)
   {
-    detail::WarpRaysThroughBoxAvx2(box, face0, face1, d, count, out, status);
+    detail::WarpRaysThroughBoxAvx2(box,
+      detail::LowestSetBit(faces),
+      detail::LowestSetBit(faces & (faces - 1)),
+      d,
+      count,
+      out,
+      status);
   }
 #endif
 }

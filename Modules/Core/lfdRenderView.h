@@ -639,9 +639,6 @@ struct FrameCage
   std::vector<OrientedBounds> Oriented; ///< per box, along its axes, widened (see above)
   /// Per box, the projected hull of each face (HexFacePatch order).
   std::vector<std::array<ScreenHull, 6>> FaceHulls;
-  /// Per box, its curved faces (bit k: face k; PatchFromOrigin::Shape), which
-  /// WarpAhead leaves to the warp ray by ray.
-  std::vector<std::uint8_t> CurvedFaces;
   /// Per box and face, the box sharing the face (the same 4 deformed corners)
   /// times 6 plus the face's index in it; -1 for none.
   std::vector<std::array<int, 6>> Neighbors;
@@ -698,7 +695,6 @@ struct FrameCage
     this->Hulls.resize(boxes.size());
     this->Oriented.resize(boxes.size());
     this->FaceHulls.resize(boxes.size());
-    this->CurvedFaces.assign(boxes.size(), 0);
     for (std::size_t b = 0; b < boxes.size(); ++b)
     {
       this->Seen[b] = BoxFromOrigin(boxes[b].Rest, boxes[b].Deformed, eye);
@@ -707,8 +703,6 @@ struct FrameCage
       {
         this->FaceHulls[b][face] =
           this->ProjectedHull(boxes[b].Deformed.Corners, HexFacePatch[face]);
-        const bool curved = this->Seen[b].Faces[face].Form == PatchFromOrigin::Shape::Curved;
-        this->CurvedFaces[b] |= static_cast<std::uint8_t>(curved << face);
       }
       const AxisBounds& bounds = boxes[b].Bounds;
       this->Oriented[b] =
@@ -892,8 +886,14 @@ struct FrameCage
       // flight, in 16-byte loads that no 8-byte store forwards. (A box
       // warped ahead has its intervals, none or one, already.)
       const bool ahead = b == scratch.AheadBox;
-      const int room = ahead ? scratch.AheadCount : MaxWarpedSegments;
-      for (int k = 0; k < room; ++k)
+      if (!ahead)
+      {
+        for (int k = 0; k < MaxWarpedSegments; ++k)
+        {
+          segments.emplace_back();
+        }
+      }
+      else if (scratch.AheadCount > 0)
       {
         segments.emplace_back();
       }
@@ -990,20 +990,25 @@ struct FrameCage
     const std::vector<RenderBox>& boxes = *this->Boxes;
     int rays[MaximumWarpBatch];
     glm::dvec3 directions[MaximumWarpBatch];
-    WarpedSegment warped[MaximumWarpBatch];
     int status[MaximumWarpBatch];
     int n = 0, box = -1, faces = 0;
+    // (The batch writes each ray's interval into its scratch: no copy.)
+    struct IntoScratch
+    {
+      FrameRayScratch* Scratch;
+      const int* Rays;
+      WarpedSegment& operator[](int k) const { return this->Scratch[this->Rays[k]].Ahead; }
+    };
     const auto flush = [&]
     {
-      WarpRaysThroughBox(this->Seen[box], faces, directions, n, warped, status);
+      WarpRaysThroughBox(
+        this->Seen[box], faces, directions, n, IntoScratch{ scratch, rays }, status);
       for (int k = 0; k < n; ++k)
       {
         if (status[k] >= 0)
         {
-          FrameRayScratch& ray = scratch[rays[k]];
-          ray.AheadBox = box;
-          ray.AheadCount = status[k];
-          ray.Ahead = warped[k];
+          scratch[rays[k]].AheadBox = box;
+          scratch[rays[k]].AheadCount = status[k];
         }
       }
       n = 0;
@@ -1022,7 +1027,7 @@ struct FrameCage
       }
       // (A curved face that the ray surely crosses rules the box out before
       // the faces are found: the twisted figure's.)
-      const int curved = this->CurvedFaces[entry.Box];
+      const int curved = this->Seen[entry.Box].CurvedFaces;
       if (this->TileHulls[entry.Listed].FacesIn & curved)
       {
         continue;
