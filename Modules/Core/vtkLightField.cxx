@@ -16,6 +16,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <string>
@@ -54,6 +55,21 @@ vtkCxxSetObjectMacro(vtkLightField, TexelSource, vtkLightFieldTexelSource);
 vtkCxxSetObjectMacro(vtkLightField, Rig, vtkCameraRig);
 vtkCxxSetObjectMacro(vtkLightField, Projectors, vtkCameraRig);
 vtkCxxSetObjectMacro(vtkLightField, ProjectorMasks, vtkImageData);
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkLightField::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  for (vtkObject* part :
+    { static_cast<vtkObject*>(this->Rig), static_cast<vtkObject*>(this->Projectors) })
+  {
+    if (part)
+    {
+      time = std::max(time, part->GetMTime());
+    }
+  }
+  return time;
+}
 
 //------------------------------------------------------------------------------
 vtkUnsignedCharArray* vtkLightField::GetPalette()

@@ -148,6 +148,13 @@ public:
   vtkGetObjectMacro(Rig, vtkCameraRig);
   ///@}
 
+  /**
+   * The light field's modification time, its rig's and its projectors'
+   * included: a camera of the rig changed (its pose, a calibration) makes
+   * the filters downstream of the light field update, as a changed array does.
+   */
+  vtkMTimeType GetMTime() override;
+
   ///@{
   /**
    * The projectors that lit the Coded and Flood passes (K, R, t and their

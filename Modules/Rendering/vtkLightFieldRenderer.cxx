@@ -542,6 +542,15 @@ void RenderFrame(const Lookup& lookup,
 }
 
 //------------------------------------------------------------------------------
+struct vtkLightFieldRenderer::RigViews
+{
+  lfd::TwoPlaneLayout Plane;
+  lfd::RingLayout Ring; // (empty with a two-plane grid)
+  std::vector<lfd::PinholeCamera> Cameras;
+  std::vector<lfd::ProjectionMatrix> Projections;
+};
+
+//------------------------------------------------------------------------------
 vtkLightFieldRenderer::vtkLightFieldRenderer()
 {
   this->SetNumberOfInputPorts(2);
@@ -672,11 +681,9 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     return 0;
   }
   vtkCameraRig* rig = input->GetRig();
-  // The rig says how the light field is parameterised: a grid on a plane
-  // (two-plane) or else a ring (cylinder).
-  const lfd::TwoPlaneLayout plane = rig->GetTwoPlaneLayout(this->ExcludedViews);
-  const lfd::RingLayout layout =
-    plane.Empty() ? rig->GetRingLayout(this->ExcludedViews) : lfd::RingLayout();
+  const RigViews& views = this->GetRigViews(rig);
+  const lfd::TwoPlaneLayout& plane = views.Plane;
+  const lfd::RingLayout& layout = views.Ring;
   if (plane.Empty() && layout.Rows.empty())
   {
     vtkErrorMacro("No cylinder could be fitted to the rig, or every view is excluded.");
@@ -714,24 +721,8 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
       return 0;
     }
   }
-  std::vector<lfd::PinholeCamera> cameras(input->GetNumberOfViews());
-  for (int v = 0; v < input->GetNumberOfViews(); ++v)
-  {
-    cameras[v] = rig->GetCamera(v);
-  }
-  // The lookup projects with the cameras' 3x4 matrices, unless a lens
-  // distortion needs the camera's own projection.
-  std::vector<lfd::ProjectionMatrix> projections;
-  if (std::none_of(cameras.begin(),
-        cameras.end(),
-        [](const lfd::PinholeCamera& camera) { return camera.Lens.Active; }))
-  {
-    projections.reserve(cameras.size());
-    for (const lfd::PinholeCamera& camera : cameras)
-    {
-      projections.emplace_back(camera);
-    }
-  }
+  const std::vector<lfd::PinholeCamera>& cameras = views.Cameras;
+  const std::vector<lfd::ProjectionMatrix>& projections = views.Projections;
   lfd::LightFieldSampler sampler;
   sampler.Layout = &layout;
   sampler.Cameras = cameras.data();
@@ -827,19 +818,10 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
     std::vector<std::uint8_t> tiles;
     if (sampler.Hull)
     {
-      // No surface box without a proxy (the sampler's default bounds are unbounded).
-      const bool proxy = sampler.Depth.Present();
       // The hull's tiles are MaskTileScale x MaskTileScale of the cage's.
       const int side = MaskTileScale * cage.TileSize;
-      const std::vector<std::uint8_t> mask = sampler.Hull->ScreenTiles(layout,
-        eye.Center(),
-        eye.PixelToDirection(),
-        this->Width,
-        this->Height,
-        sampler.FocalDistance,
-        side,
-        proxy ? sampler.SurfaceLow : glm::dvec3(std::numeric_limits<double>::infinity()),
-        proxy ? sampler.SurfaceHigh : glm::dvec3(-std::numeric_limits<double>::infinity()));
+      const std::vector<std::uint8_t>& mask =
+        this->GetHullTiles(*sampler.Hull, layout, eye, sampler, side);
       const int maskColumns = (this->Width + side - 1) / side;
       tiles.resize(static_cast<std::size_t>(cage.TilesX) * cage.TilesY);
       for (std::size_t t = 0; t < tiles.size(); ++t)
@@ -959,6 +941,86 @@ const lfd::LabelHull& vtkLightFieldRenderer::GetLabelHull(vtkObject* holder,
     this->HullTime.Modified();
   }
   return *this->Hull;
+}
+
+//------------------------------------------------------------------------------
+const vtkLightFieldRenderer::RigViews& vtkLightFieldRenderer::GetRigViews(vtkCameraRig* rig)
+{
+  if (!this->Views || rig != this->ViewsRig || rig->GetMTime() > this->ViewsTime ||
+    this->ExcludedViews != this->ViewsExcluded)
+  {
+    this->Views = std::make_unique<RigViews>();
+    RigViews& views = *this->Views;
+    // The rig says how the light field is parameterised: a grid on a plane
+    // (two-plane) or else a ring (cylinder).
+    views.Plane = rig->GetTwoPlaneLayout(this->ExcludedViews);
+    if (views.Plane.Empty())
+    {
+      views.Ring = rig->GetRingLayout(this->ExcludedViews);
+    }
+    views.Cameras.resize(rig->GetNumberOfViews());
+    for (int v = 0; v < rig->GetNumberOfViews(); ++v)
+    {
+      views.Cameras[v] = rig->GetCamera(v);
+    }
+    // The lookup projects with the cameras' 3x4 matrices, unless a lens
+    // distortion needs the camera's own projection.
+    if (std::none_of(views.Cameras.begin(),
+          views.Cameras.end(),
+          [](const lfd::PinholeCamera& camera) { return camera.Lens.Active; }))
+    {
+      views.Projections.reserve(views.Cameras.size());
+      for (const lfd::PinholeCamera& camera : views.Cameras)
+      {
+        views.Projections.emplace_back(camera);
+      }
+    }
+    this->ViewsRig = rig;
+    this->ViewsExcluded = this->ExcludedViews;
+    this->ViewsTime.Modified();
+  }
+  return *this->Views;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<std::uint8_t>& vtkLightFieldRenderer::GetHullTiles(const lfd::LabelHull& hull,
+  const lfd::RingLayout& layout,
+  const lfd::PinholeCamera& eye,
+  const lfd::LightFieldSampler& sampler,
+  int side)
+{
+  // No surface box without a proxy (the sampler's default bounds are unbounded).
+  const bool proxy = sampler.Depth.Present();
+  const glm::dvec3 low =
+    proxy ? sampler.SurfaceLow : glm::dvec3(std::numeric_limits<double>::infinity());
+  const glm::dvec3 high =
+    proxy ? sampler.SurfaceHigh : glm::dvec3(-std::numeric_limits<double>::infinity());
+  const glm::dvec3 center = eye.Center();
+  const glm::dmat3 toDirection = eye.PixelToDirection();
+  // (Every input but the hull and its layout, which GetLabelHull stamps.)
+  std::vector<double> key = { static_cast<double>(this->HullTime.GetMTime()),
+    static_cast<double>(this->Width),
+    static_cast<double>(this->Height),
+    static_cast<double>(side),
+    sampler.FocalDistance };
+  key.insert(key.end(), &center.x, &center.x + 3);
+  key.insert(key.end(), &toDirection[0][0], &toDirection[0][0] + 9);
+  key.insert(key.end(), &low.x, &low.x + 3);
+  key.insert(key.end(), &high.x, &high.x + 3);
+  if (key != this->HullTilesKey)
+  {
+    this->HullTiles = hull.ScreenTiles(layout,
+      center,
+      toDirection,
+      this->Width,
+      this->Height,
+      sampler.FocalDistance,
+      side,
+      low,
+      high);
+    this->HullTilesKey = std::move(key);
+  }
+  return this->HullTiles;
 }
 
 //------------------------------------------------------------------------------

@@ -67,6 +67,7 @@ namespace lfd
 struct NearestDepthTiles;
 struct PinholeCamera;
 struct LabelHull;
+struct LightFieldSampler;
 struct RingLayout;
 template<typename T>
 struct ViewStack;
@@ -432,10 +433,41 @@ private:
     const std::vector<lfd::PinholeCamera>& cameras);
 #endif
 
+#ifndef __VTK_WRAP__
+  /**
+   * The label hull's screen tiles (lfd::LabelHull::ScreenTiles) of tiles of
+   * `side` pixels seen from `eye` through the focal `sampler`'s plane and
+   * its proxy's bounds: cached while the hull (GetLabelHull), the eye and
+   * the frame are unchanged, as when a cage is edited under a still camera.
+   */
+  const std::vector<std::uint8_t>& GetHullTiles(const lfd::LabelHull& hull,
+    const lfd::RingLayout& layout,
+    const lfd::PinholeCamera& eye,
+    const lfd::LightFieldSampler& sampler,
+    int side);
+#endif
+
+#ifndef __VTK_WRAP__
+  struct RigViews;
+  /**
+   * The rig's views as the lookup reads them: its two-plane grid, or else
+   * its ring, less ExcludedViews; its cameras, and their 3x4 projections
+   * (none when a camera has a lens distortion). Cached while the rig and
+   * the excluded views are unchanged.
+   */
+  const RigViews& GetRigViews(vtkCameraRig* rig);
+#endif
+  std::unique_ptr<RigViews> Views;
+  vtkObject* ViewsRig = nullptr; // compared, never dereferenced
+  std::vector<int> ViewsExcluded;
+  vtkTimeStamp ViewsTime;
+
   std::unique_ptr<lfd::LabelHull> Hull;
   vtkObject* HullArray = nullptr; // compared, never dereferenced
   std::vector<int> HullExcludedViews;
   vtkTimeStamp HullTime;
+  std::vector<double> HullTilesKey; // what HullTiles was computed from (GetHullTiles)
+  std::vector<std::uint8_t> HullTiles;
 
   std::vector<double> ProxyExtent;
   std::unique_ptr<lfd::NearestDepthTiles> ProxyTiles;
