@@ -84,6 +84,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <new>
 #include <optional>
@@ -677,16 +678,32 @@ struct FrameCage
   static constexpr int DefaultTileSize = 8;
 
   /**
+   * Runs `body(begin, end)` over the ranges of [0, n) it chooses: Build's
+   * loops over boxes and over binned (tile, box) pairs, whose iterations
+   * are independent. SerialLoop runs the one range; vtkLightFieldRenderer
+   * hands vtkSMPTools::For, so that a frame's cage is built on every thread.
+   */
+  using RangeLoop = std::function<void(std::size_t n,
+    const std::function<void(std::size_t begin, std::size_t end)>& body)>;
+  static void SerialLoop(std::size_t n,
+    const std::function<void(std::size_t begin, std::size_t end)>& body)
+  {
+    body(0, n);
+  }
+
+  /**
    * The frame of a width x height image seen from `eye` through
-   * `pixelToDirection` (PlaceEye() called for this eye). `boxes` must
-   * outlive the frame cage.
+   * `pixelToDirection` (PlaceEye() called for this eye), its loops run by
+   * `loop` (the same frame cage whatever runs them). `boxes` must outlive
+   * the frame cage.
    */
   void Build(const std::vector<RenderBox>& boxes,
     const glm::dvec3& eye,
     const glm::dmat3& pixelToDirection,
     int width,
     int height,
-    int tileSize)
+    int tileSize,
+    const RangeLoop& loop = SerialLoop)
   {
     this->Boxes = &boxes;
     this->Eye = eye;
@@ -695,19 +712,23 @@ struct FrameCage
     this->Hulls.resize(boxes.size());
     this->Oriented.resize(boxes.size());
     this->FaceHulls.resize(boxes.size());
-    for (std::size_t b = 0; b < boxes.size(); ++b)
-    {
-      this->Seen[b] = BoxFromOrigin(boxes[b].Rest, boxes[b].Deformed, eye);
-      this->Hulls[b] = this->ProjectedHull(boxes[b].Deformed.Corners, HexCorners);
-      for (int face = 0; face < 6; ++face)
+    loop(boxes.size(),
+      [&](std::size_t begin, std::size_t end)
       {
-        this->FaceHulls[b][face] =
-          this->ProjectedHull(boxes[b].Deformed.Corners, HexFacePatch[face]);
-      }
-      const AxisBounds& bounds = boxes[b].Bounds;
-      this->Oriented[b] =
-        OrientedBounds::Of(boxes[b].Deformed, eye, 1e-6 * glm::distance(bounds.Min, bounds.Max));
-    }
+        for (std::size_t b = begin; b < end; ++b)
+        {
+          this->Seen[b] = BoxFromOrigin(boxes[b].Rest, boxes[b].Deformed, eye);
+          this->Hulls[b] = this->ProjectedHull(boxes[b].Deformed.Corners, HexCorners);
+          for (int face = 0; face < 6; ++face)
+          {
+            this->FaceHulls[b][face] =
+              this->ProjectedHull(boxes[b].Deformed.Corners, HexFacePatch[face]);
+          }
+          const AxisBounds& bounds = boxes[b].Bounds;
+          this->Oriented[b] = OrientedBounds::Of(
+            boxes[b].Deformed, eye, 1e-6 * glm::distance(bounds.Min, bounds.Max));
+        }
+      });
     this->LinkFaces(boxes);
     this->TileSize = tileSize > 0 ? tileSize : std::max(width, height);
     this->TilesX = (width + this->TileSize - 1) / this->TileSize;
@@ -726,7 +747,7 @@ struct FrameCage
       this->TileRows[y] = (y / this->TileSize) * this->TilesX;
       this->PixelRows[y] = 8 * (y % this->TileSize);
     }
-    this->BinBoxes(boxes, width, height, tileSize > 0);
+    this->BinBoxes(boxes, width, height, tileSize > 0, loop);
   }
 
   /// The direction of the ray through pixel (x, y) (OpenCV pixel coordinates).
@@ -1239,8 +1260,40 @@ private:
    * enters each box's bounds, come nearly sorted. Without culling, every box
    * goes into the one tile.
    */
-  void BinBoxes(const std::vector<RenderBox>& boxes, int width, int height, bool culling)
+  void BinBoxes(const std::vector<RenderBox>& boxes,
+    int width,
+    int height,
+    bool culling,
+    const RangeLoop& loop)
   {
+    // Each box's tiles (in `loop`), then the (tile, box) pairs, nearest box
+    // first, counted into place by tile.
+    std::vector<std::vector<int>> tilesOf(boxes.size());
+    loop(boxes.size(),
+      [&](std::size_t begin, std::size_t end)
+      {
+        for (std::size_t b = begin; b < end; ++b)
+        {
+          // Tile ranges x0, y0, x1, y1 (inclusive); without culling, the one tile.
+          const glm::ivec4 r =
+            culling ? this->TileRange(boxes[b].Bounds, width, height) : glm::ivec4(0);
+          for (int ty = r.y; ty <= r.w; ++ty)
+          {
+            for (int tx = r.x; tx <= r.z; ++tx)
+            {
+              const int x0 = tx * this->TileSize, y0 = ty * this->TileSize;
+              if (!culling ||
+                this->Hulls[b].MayHoldAny(x0,
+                  y0,
+                  std::min(x0 + this->TileSize, width) - 1,
+                  std::min(y0 + this->TileSize, height) - 1))
+              {
+                tilesOf[b].push_back(ty * this->TilesX + tx);
+              }
+            }
+          }
+        }
+      });
     const glm::dmat3 toPixel = glm::inverse(this->PixelToDirection);
     std::vector<std::pair<double, int>> nearest(boxes.size());
     for (std::size_t b = 0; b < boxes.size(); ++b)
@@ -1249,68 +1302,63 @@ private:
       nearest[b] = { (toPixel * (centre - this->Eye)).z, static_cast<int>(b) };
     }
     std::sort(nearest.begin(), nearest.end());
-    // (tile, box) pairs, nearest box first, then counted into place by tile.
-    std::vector<std::pair<int, int>> binned;
-    for (const auto& [depth, b] : nearest)
-    {
-      // Tile ranges x0, y0, x1, y1 (inclusive); without culling, the one tile.
-      const glm::ivec4 r =
-        culling ? this->TileRange(boxes[b].Bounds, width, height) : glm::ivec4(0);
-      for (int ty = r.y; ty <= r.w; ++ty)
-      {
-        for (int tx = r.x; tx <= r.z; ++tx)
-        {
-          const int x0 = tx * this->TileSize, y0 = ty * this->TileSize;
-          if (!culling ||
-            this->Hulls[b].MayHoldAny(x0,
-              y0,
-              std::min(x0 + this->TileSize, width) - 1,
-              std::min(y0 + this->TileSize, height) - 1))
-          {
-            binned.emplace_back(ty * this->TilesX + tx, b);
-          }
-        }
-      }
-    }
     this->TileStart.assign(static_cast<std::size_t>(this->TilesX) * this->TilesY + 1, 0);
-    for (const auto& [tile, b] : binned)
+    std::size_t pairs = 0;
+    for (const std::vector<int>& tiles : tilesOf)
     {
-      ++this->TileStart[tile + 1];
+      for (int tile : tiles)
+      {
+        ++this->TileStart[tile + 1];
+      }
+      pairs += tiles.size();
     }
     for (std::size_t i = 1; i < this->TileStart.size(); ++i)
     {
       this->TileStart[i] += this->TileStart[i - 1];
     }
-    this->TileBoxes.resize(binned.size());
-    this->TileHulls.resize(binned.size());
-    this->TilePixels.resize(this->TileSize <= 8 ? binned.size() : 0);
+    // Each pair's place in TileBoxes, then (in `loop`) how the box meets its tile.
+    std::vector<std::pair<int, int>> placed(pairs); // (tile, box) of TileBoxes[i]
     std::vector<int> next(this->TileStart.begin(), this->TileStart.end() - 1);
-    for (const auto& [tile, b] : binned)
+    for (const auto& [depth, b] : nearest)
     {
-      const int i = next[tile]++;
-      this->TileBoxes[i] = b;
-      // The tile's pixels (x0, y0) to (x1, y1).
-      const int x0 = tile % this->TilesX * this->TileSize;
-      const int y0 = tile / this->TilesX * this->TileSize;
-      const int x1 = std::min(x0 + this->TileSize, width) - 1;
-      const int y1 = std::min(y0 + this->TileSize, height) - 1;
-      HullsInTile& hulls = this->TileHulls[i];
-      // (Without culling, a box whose hull misses the tile tests every edge.)
-      const int boxAcross = this->Hulls[b].EdgesAcross(x0, y0, x1, y1);
-      hulls.Box =
-        static_cast<std::uint8_t>(boxAcross >= 0 ? boxAcross : (1 << this->Hulls[b].Count) - 1);
-      if (!this->TilePixels.empty())
+      for (int tile : tilesOf[b])
       {
-        this->TilePixels[i] = this->Hulls[b].HeldPixels(x0, y0, y1 - y0 + 1, hulls.Box);
-      }
-      for (int face = 0; face < 6; ++face)
-      {
-        const int across = this->FaceHulls[b][face].EdgesAcross(x0, y0, x1, y1);
-        hulls.FacesIn |= (across == 0) << face;
-        hulls.FacesAcross |= (across > 0) << face;
-        hulls.Faces[face] = static_cast<std::uint8_t>(std::max(across, 0));
+        placed[next[tile]++] = { tile, b };
       }
     }
+    this->TileBoxes.resize(pairs);
+    this->TileHulls.assign(pairs, HullsInTile());
+    this->TilePixels.resize(this->TileSize <= 8 ? pairs : 0);
+    loop(pairs,
+      [&](std::size_t begin, std::size_t end)
+      {
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          const auto [tile, b] = placed[i];
+          this->TileBoxes[i] = b;
+          // The tile's pixels (x0, y0) to (x1, y1).
+          const int x0 = tile % this->TilesX * this->TileSize;
+          const int y0 = tile / this->TilesX * this->TileSize;
+          const int x1 = std::min(x0 + this->TileSize, width) - 1;
+          const int y1 = std::min(y0 + this->TileSize, height) - 1;
+          HullsInTile& hulls = this->TileHulls[i];
+          // (Without culling, a box whose hull misses the tile tests every edge.)
+          const int boxAcross = this->Hulls[b].EdgesAcross(x0, y0, x1, y1);
+          hulls.Box =
+            static_cast<std::uint8_t>(boxAcross >= 0 ? boxAcross : (1 << this->Hulls[b].Count) - 1);
+          if (!this->TilePixels.empty())
+          {
+            this->TilePixels[i] = this->Hulls[b].HeldPixels(x0, y0, y1 - y0 + 1, hulls.Box);
+          }
+          for (int face = 0; face < 6; ++face)
+          {
+            const int across = this->FaceHulls[b][face].EdgesAcross(x0, y0, x1, y1);
+            hulls.FacesIn |= (across == 0) << face;
+            hulls.FacesAcross |= (across > 0) << face;
+            hulls.Faces[face] = static_cast<std::uint8_t>(std::max(across, 0));
+          }
+        }
+      });
   }
 };
 

@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <utility>
@@ -780,12 +781,27 @@ int vtkLightFieldRenderer::RequestData(vtkInformation*,
 
   lfd::PlaceEye(boxes, eye.Center());
   lfd::FrameCage cage;
+  // (The cage's loops on every thread, as the frame's rows: a 100-slab
+  // cage's 6 500 tile-box pairs take 0.5 ms on one; a few boxes' loops
+  // would not pay for waking the others.)
   cage.Build(boxes,
     eye.Center(),
     eye.PixelToDirection(),
     this->Width,
     this->Height,
-    lfd::FrameCage::DefaultTileSize);
+    lfd::FrameCage::DefaultTileSize,
+    [](std::size_t n, const std::function<void(std::size_t, std::size_t)>& body)
+    {
+      if (n < 64)
+      {
+        body(0, n);
+        return;
+      }
+      vtkSMPTools::For(0,
+        static_cast<vtkIdType>(n),
+        [&](vtkIdType begin, vtkIdType end)
+        { body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end)); });
+    });
   this->AllocateOutput(vtkImageData::GetData(outputVector));
   FrameSettings frame{ this->CageAcceleration,
     this->Width,

@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -333,6 +335,39 @@ void HundredBoxFrame()
     }
   }
   Expect("100-box frame: tile pixels whose mask is not their hull test", maskedUnlike, 0, 0.0);
+  // Its loops run in ranges out of order (as threads take them: 7 at a
+  // time, the last range first), the same frame cage.
+  lfd::FrameCage ranged;
+  ranged.Build(boxes,
+    eye,
+    pixelToDirection,
+    64,
+    64,
+    8,
+    [](std::size_t n, const std::function<void(std::size_t, std::size_t)>& body)
+    {
+      for (std::size_t end = n; end > 0; end -= std::min<std::size_t>(end, 7))
+      {
+        body(end - std::min<std::size_t>(end, 7), end);
+      }
+    });
+  int rangedUnlike = ranged.TileStart != culled.TileStart;
+  rangedUnlike += ranged.TileBoxes != culled.TileBoxes;
+  rangedUnlike += ranged.TilePixels != culled.TilePixels;
+  rangedUnlike += ranged.TileHulls.size() != culled.TileHulls.size() ||
+    std::memcmp(ranged.TileHulls.data(),
+      culled.TileHulls.data(),
+      culled.TileHulls.size() * sizeof(lfd::HullsInTile)) != 0;
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+  {
+    rangedUnlike += ranged.Hulls[b].Count != culled.Hulls[b].Count ||
+      std::memcmp(&ranged.Oriented[b], &culled.Oriented[b], sizeof(lfd::OrientedBounds)) != 0;
+  }
+  Expect("  built in ranges out of order: tables or boxes unlike the serial build",
+    rangedUnlike,
+    0,
+    0.0);
+  Expect(culled.TileBoxes.size() > 200, "  tile-box pairs (> 200)", culled.TileBoxes.size());
   Expect("  unculled frame's pixel masks", static_cast<double>(unculled.TilePixels.size()), 0, 0.0);
   const lfd::RenderViewSettings settings = SettingsFor(boxes);
   std::vector<lfd::BoxSegment> reference;
