@@ -962,8 +962,9 @@ const lfd::LabelHull& vtkLightFieldRenderer::GetLabelHull(vtkObject* holder,
 //------------------------------------------------------------------------------
 const vtkLightFieldRenderer::RigViews& vtkLightFieldRenderer::GetRigViews(vtkCameraRig* rig)
 {
+  // (FitCylinder() fits a rig without modifying it: HasCylinder() says so.)
   if (!this->Views || rig != this->ViewsRig || rig->GetMTime() > this->ViewsTime ||
-    this->ExcludedViews != this->ViewsExcluded)
+    rig->HasCylinder() != this->ViewsFitted || this->ExcludedViews != this->ViewsExcluded)
   {
     this->Views = std::make_unique<RigViews>();
     RigViews& views = *this->Views;
@@ -992,6 +993,7 @@ const vtkLightFieldRenderer::RigViews& vtkLightFieldRenderer::GetRigViews(vtkCam
       }
     }
     this->ViewsRig = rig;
+    this->ViewsFitted = rig->HasCylinder();
     this->ViewsExcluded = this->ExcludedViews;
     this->ViewsTime.Modified();
   }

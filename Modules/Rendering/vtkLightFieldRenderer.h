@@ -452,13 +452,14 @@ private:
   /**
    * The rig's views as the lookup reads them: its two-plane grid, or else
    * its ring, less ExcludedViews; its cameras, and their 3x4 projections
-   * (none when a camera has a lens distortion). Cached while the rig and
-   * the excluded views are unchanged.
+   * (none when a camera has a lens distortion). Cached while the rig (and
+   * its fit: vtkCameraRig::HasCylinder) and the excluded views are unchanged.
    */
   const RigViews& GetRigViews(vtkCameraRig* rig);
 #endif
   std::unique_ptr<RigViews> Views;
   vtkObject* ViewsRig = nullptr; // compared, never dereferenced
+  bool ViewsFitted = false;
   std::vector<int> ViewsExcluded;
   vtkTimeStamp ViewsTime;
 
