@@ -1316,17 +1316,20 @@ private:
     {
       this->TileStart[i] += this->TileStart[i - 1];
     }
-    // Each pair's place in TileBoxes, then (in `loop`) how the box meets its tile.
-    std::vector<std::pair<int, int>> placed(pairs); // (tile, box) of TileBoxes[i]
+    // Each pair's place in TileBoxes (its tile's in `pairTile`), then (in
+    // `loop`) how the box meets its tile.
+    this->TileBoxes.resize(pairs);
+    std::vector<int> pairTile(pairs);
     std::vector<int> next(this->TileStart.begin(), this->TileStart.end() - 1);
     for (const auto& [depth, b] : nearest)
     {
       for (int tile : tilesOf[b])
       {
-        placed[next[tile]++] = { tile, b };
+        const int i = next[tile]++;
+        this->TileBoxes[i] = b;
+        pairTile[i] = tile;
       }
     }
-    this->TileBoxes.resize(pairs);
     this->TileHulls.assign(pairs, HullsInTile());
     this->TilePixels.resize(this->TileSize <= 8 ? pairs : 0);
     loop(pairs,
@@ -1334,8 +1337,7 @@ private:
       {
         for (std::size_t i = begin; i < end; ++i)
         {
-          const auto [tile, b] = placed[i];
-          this->TileBoxes[i] = b;
+          const int tile = pairTile[i], b = this->TileBoxes[i];
           // The tile's pixels (x0, y0) to (x1, y1).
           const int x0 = tile % this->TilesX * this->TileSize;
           const int y0 = tile / this->TilesX * this->TileSize;

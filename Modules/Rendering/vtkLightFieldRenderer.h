@@ -447,8 +447,8 @@ private:
     int side);
 #endif
 
-#ifndef __VTK_WRAP__
   struct RigViews;
+#ifndef __VTK_WRAP__
   /**
    * The rig's views as the lookup reads them: its two-plane grid, or else
    * its ring, less ExcludedViews; its cameras, and their 3x4 projections
