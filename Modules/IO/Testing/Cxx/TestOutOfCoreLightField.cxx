@@ -277,11 +277,23 @@ void TestTilingAndProxy(const std::string& folder)
     static_cast<double>(16 * viewBytes),
     1e300,
     "peak memory of 32 views read whole, then written tiled (bytes)");
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define LFD_TEST_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(LFD_TEST_ASAN)
+  // (AddressSanitizer keeps freed blocks in its quarantine: the growth of
+  // the resident memory then follows how much was freed, not how much was
+  // held at once; under it 8 views read +8 to +19 MB, 32 views +9 to +11.)
+  std::cout << "     (the two tilings' peaks are not compared under AddressSanitizer)\n";
+#else
   lfdtest::CheckRange(static_cast<double>(peak[1] - peak[0]),
     -1e300,
     static_cast<double>(4 * viewBytes),
     "peak memory of tiling 32 views over that of 8 views (bytes; reading the dataset whole: +" +
       std::to_string(24 * viewBytes) + ")");
+#endif
 
   // The dataset vtkLightFieldWriter writes from the light field read whole:
   // the same manifest and files, the same pixels. (Not the same bytes: a
