@@ -141,31 +141,24 @@ int TestLightFieldRendererFrames(int, char*[])
   {
     if (step.TurnView)
     {
-      double K[9], R[9], t[3];
+      // Turned by 2 degrees about its own y axis, its centre kept (t = -R C).
       vtkCameraRig* captured = lightField->GetRig();
-      captured->GetIntrinsics(nearest, K);
-      captured->GetRotation(nearest, R);
-      captured->GetTranslation(nearest, t);
-      // Turned by 2 degrees about its own y axis: R' = Ry R (row-major).
-      const double c = std::cos(2.0 * vtkMath::Pi() / 180.0),
-                   s = std::sin(2.0 * vtkMath::Pi() / 180.0);
-      const double Ry[9] = { c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c };
-      double turned[9], at[3];
-      for (int i = 0; i < 3; ++i)
-      {
-        for (int j = 0; j < 3; ++j)
-        {
-          turned[3 * i + j] =
-            Ry[3 * i] * R[j] + Ry[3 * i + 1] * R[3 + j] + Ry[3 * i + 2] * R[6 + j];
-        }
-      }
-      // (t = -R C: the centre C stays where it is.)
-      const glm::dvec3 C = captured->GetCamera(nearest).Center();
-      for (int i = 0; i < 3; ++i)
-      {
-        at[i] = -(turned[3 * i] * C.x + turned[3 * i + 1] * C.y + turned[3 * i + 2] * C.z);
-      }
-      captured->SetView(nearest, K, turned, at);
+      lfd::PinholeCamera camera = captured->GetCamera(nearest);
+      const glm::dvec3 centreOfView = camera.Center();
+      const double angle = 2.0 * vtkMath::Pi() / 180.0;
+      // (glm is column-major: the rotation about y, column by column.)
+      const glm::dmat3 turn(std::cos(angle),
+        0.0,
+        -std::sin(angle),
+        0.0,
+        1.0,
+        0.0,
+        std::sin(angle),
+        0.0,
+        std::cos(angle));
+      camera.R = turn * camera.R;
+      camera.t = -(camera.R * centreOfView);
+      captured->SetView(nearest, camera);
       captured->FitCylinder(); // (any change of a view drops the fit)
     }
     vtkNew<vtkLightFieldRenderer> fresh;
