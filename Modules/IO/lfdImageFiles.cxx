@@ -81,17 +81,22 @@ std::string LastOIIOError(const std::string& fallback)
 
 // libpng prints its errors and warnings on stderr ("libpng error: ...")
 // before OpenImageIO reports them: while an image is decoded, stderr goes to
-// /dev/null, so that a corrupt image costs one error line, ours. The mutex
-// keeps concurrent decodes from restoring each other's descriptor.
+// /dev/null, so that a corrupt image costs one error line, ours. Decodes on
+// several threads (vtkLightFieldReader) share the silence: the first to
+// start sends stderr away, the last to end brings it back.
 class SilencedStderr
 {
 public:
   SilencedStderr()
-    : Lock(Mutex())
   {
+    std::lock_guard<std::mutex> lock(Shared().Mutex);
+    if (Shared().Decoding++ > 0)
+    {
+      return;
+    }
     const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
-    this->Saved = null >= 0 ? ::dup(STDERR_FILENO) : -1;
-    if (this->Saved >= 0)
+    Shared().Saved = null >= 0 ? ::dup(STDERR_FILENO) : -1;
+    if (Shared().Saved >= 0)
     {
       ::dup2(null, STDERR_FILENO);
     }
@@ -102,23 +107,29 @@ public:
   }
   ~SilencedStderr()
   {
-    if (this->Saved >= 0)
+    std::lock_guard<std::mutex> lock(Shared().Mutex);
+    if (--Shared().Decoding == 0 && Shared().Saved >= 0)
     {
-      ::dup2(this->Saved, STDERR_FILENO);
-      ::close(this->Saved);
+      ::dup2(Shared().Saved, STDERR_FILENO);
+      ::close(Shared().Saved);
+      Shared().Saved = -1;
     }
   }
   SilencedStderr(const SilencedStderr&) = delete;
   SilencedStderr& operator=(const SilencedStderr&) = delete;
 
 private:
-  static std::mutex& Mutex()
+  struct State
   {
-    static std::mutex mutex;
-    return mutex;
+    std::mutex Mutex;
+    int Decoding = 0; // the decodes under way
+    int Saved = -1;   // stderr while they are
+  };
+  static State& Shared()
+  {
+    static State state;
+    return state;
   }
-  std::lock_guard<std::mutex> Lock;
-  int Saved = -1;
 };
 
 // Opens `path` for reading; alpha stays as stored (no premultiplication on

@@ -163,14 +163,11 @@ protected:
     lfd::io::ImageHeader& header,
     vtkLightField* output);
 
-  // Reads a checked image into slice `slice` of `array`; on failure reports
-  // the error like CheckImage().
-  bool ReadImageInto(const std::string& image,
+  // What a failure to read `image`, of the manifest's field `field`, says:
+  // the manifest, the field and the image named, then `problem`.
+  std::string ImageProblem(const std::string& image,
     const std::string& field,
-    const lfd::io::ImageHeader& header,
-    vtkDataArray* array,
-    int slice,
-    vtkLightField* output);
+    const std::string& problem) const;
 
   std::string DescribeFailure(const std::string& problem) override;
 

@@ -18,6 +18,7 @@
 #include "vtkNew.h"
 #include "vtkPNGReader.h"
 #include "vtkPointData.h"
+#include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <nlohmann/json.hpp>
@@ -303,7 +304,9 @@ void CheckRead(vtkLightFieldReader* reader, vtkLightField* original, const std::
       0,
       std::string("mismatching values in pass ") + vtkLightField::GetPassName(pass));
   }
-  Check(readProgress->Events >= Views * vtkLightField::NUMBER_OF_PASSES,
+  // (The images are decoded a block at a time, an image a thread.)
+  Check(readProgress->Events >=
+      Views * vtkLightField::NUMBER_OF_PASSES / vtkSMPTools::GetEstimatedNumberOfThreads(),
     "reader progress events: " + std::to_string(readProgress->Events));
   reader->RemoveObservers(vtkCommand::ProgressEvent);
   const float depth =

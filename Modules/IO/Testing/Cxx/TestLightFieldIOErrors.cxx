@@ -244,6 +244,25 @@ void CheckPassErrors(Cases& cases)
     lfdtest::WriteText(directory + "/label/view_0001.png", "not a png");
     cases.ExpectFailure("corrupt image", directory, { "\"passes.label[1]\"", "view_0001.png" });
   }
+  {
+    // Images cut short after a sound header fail only as they are decoded,
+    // on every thread (vtkLightFieldReader): the message names the first of
+    // them in the manifest's order (passes, then views), as a read of one
+    // image after the other would, whichever thread failed first.
+    const std::string directory = cases.Variant(nullptr);
+    for (const char* image :
+      { "/coaxial/view_0000.png", "/coaxial/view_0001.png", "/label/view_0000.png" })
+    {
+      const std::string path = directory + image;
+      fs::resize_file(path, fs::file_size(path) - 20); // (IEND's 12 bytes, and into IDAT)
+    }
+    cases.ExpectFailure(
+      "images cut short", directory, { "\"passes.coaxial[0]\"", "coaxial/view_0000.png" });
+    lfdtest::CheckEqual(cases.Message.find("view_0001") == std::string::npos &&
+        cases.Message.find("label") == std::string::npos,
+      true,
+      "the message names the first image cut short only");
+  }
 }
 
 // Writer failures leave nothing that looks valid.
