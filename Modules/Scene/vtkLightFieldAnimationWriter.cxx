@@ -716,8 +716,8 @@ bool vtkLightFieldAnimationWriter::Write()
   // Each round's frame is written, and its thumbnail made, on a thread of
   // its own while the next round renders; the round is finished (progress,
   // errors, cancel) once written. (The demo's swim, 96 frames on 2 cores:
-  // 51-53 -> 41-44 ms a frame; the PNG compression and the thumbnail had
-  // held both cores' rendering up, on one.)
+  // 51-53 -> 41-44 ms a frame: the PNG compression and the thumbnail, on
+  // one core, had kept the next frame from rendering on both.)
   Internals::Round written;
   for (int first = 0; goOn && first < frames; first += processes)
   {
