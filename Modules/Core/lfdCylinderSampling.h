@@ -41,6 +41,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -635,36 +636,58 @@ struct RaySamples
 };
 
 /**
+ * Runs `body(begin, end)` over the ranges of [0, n) it chooses, for a loop
+ * whose iterations are independent (the views of a depth stack, the boxes
+ * of a FrameCage): SerialLoop runs the one range; vtkLightFieldRenderer
+ * hands vtkSMPTools::For, so that the loop runs on every thread, with the
+ * same results.
+ */
+using RangeLoop = std::function<void(std::size_t n,
+  const std::function<void(std::size_t begin, std::size_t end)>& body)>;
+inline void SerialLoop(std::size_t n,
+  const std::function<void(std::size_t begin, std::size_t end)>& body)
+{
+  body(0, n);
+}
+
+/**
  * Per view v of a depth stack, the smallest and largest positive depth at
  * 2 v and 2 v + 1 (0 and 0 for a view that sees no surface): the stretch of
- * a ray that LightFieldSampler::IntersectDepthMap walks.
+ * a ray that LightFieldSampler::IntersectDepthMap walks. The views are run
+ * by `loop`.
  */
-inline std::vector<double> DepthRanges(const ViewStack<float>& depth, int views)
+inline std::vector<double> DepthRanges(const ViewStack<float>& depth,
+  int views,
+  const RangeLoop& loop = SerialLoop)
 {
   std::vector<double> ranges(2 * static_cast<std::size_t>(views), 0.0);
-  for (int v = 0; v < views; ++v)
-  {
-    double low = std::numeric_limits<double>::infinity();
-    double high = 0.0;
-    // Texel by texel (ViewStack::Pixel): the stack may be out of core.
-    for (int y = 0; y < depth.Height; ++y)
+  loop(static_cast<std::size_t>(views),
+    [&](std::size_t begin, std::size_t end)
     {
-      for (int x = 0; x < depth.Width; ++x)
+      for (int v = static_cast<int>(begin); v < static_cast<int>(end); ++v)
       {
-        const double z = *depth.Pixel(v, x, y);
-        if (z > 0.0)
+        double low = std::numeric_limits<double>::infinity();
+        double high = 0.0;
+        // Texel by texel (ViewStack::Pixel): the stack may be out of core.
+        for (int y = 0; y < depth.Height; ++y)
         {
-          low = std::min(low, z);
-          high = std::max(high, z);
+          for (int x = 0; x < depth.Width; ++x)
+          {
+            const double z = *depth.Pixel(v, x, y);
+            if (z > 0.0)
+            {
+              low = std::min(low, z);
+              high = std::max(high, z);
+            }
+          }
+        }
+        if (high > 0.0)
+        {
+          ranges[2 * v] = low;
+          ranges[2 * v + 1] = high;
         }
       }
-    }
-    if (high > 0.0)
-    {
-      ranges[2 * v] = low;
-      ranges[2 * v + 1] = high;
-    }
-  }
+    });
   return ranges;
 }
 
@@ -672,32 +695,47 @@ inline std::vector<double> DepthRanges(const ViewStack<float>& depth, int views)
  * The axis-aligned bounds, `low` and `high`, of the surface points of a
  * depth stack (every pixel with a depth, back-projected through its view's
  * camera): no ray that misses them meets the proxy. False when no view sees
- * a surface.
+ * a surface. The views are run by `loop`.
  */
 inline bool DepthBounds(const ViewStack<float>& depth,
   const PinholeCamera* cameras,
   int views,
   glm::dvec3& low,
-  glm::dvec3& high)
+  glm::dvec3& high,
+  const RangeLoop& loop = SerialLoop)
 {
-  low = glm::dvec3(std::numeric_limits<double>::infinity());
-  high = -low;
-  for (int v = 0; v < views; ++v)
-  {
-    const PinholeCamera::Unprojection rays = cameras[v].GetUnprojection();
-    for (int y = 0; y < depth.Height; ++y)
+  // Each view's bounds (in `loop`), then theirs: minima and maxima are exact,
+  // so the same bounds however the views are split.
+  const glm::dvec3 none(std::numeric_limits<double>::infinity());
+  std::vector<glm::dvec3> lows(static_cast<std::size_t>(views), none);
+  std::vector<glm::dvec3> highs(static_cast<std::size_t>(views), -none);
+  loop(static_cast<std::size_t>(views),
+    [&](std::size_t begin, std::size_t end)
     {
-      for (int x = 0; x < depth.Width; ++x)
+      for (std::size_t v = begin; v < end; ++v)
       {
-        const double z = *depth.Pixel(v, x, y);
-        if (z > 0.0)
+        const PinholeCamera::Unprojection rays = cameras[v].GetUnprojection();
+        for (int y = 0; y < depth.Height; ++y)
         {
-          const glm::dvec3 point = rays(glm::dvec2(x, y), z);
-          low = glm::min(low, point);
-          high = glm::max(high, point);
+          for (int x = 0; x < depth.Width; ++x)
+          {
+            const double z = *depth.Pixel(static_cast<int>(v), x, y);
+            if (z > 0.0)
+            {
+              const glm::dvec3 point = rays(glm::dvec2(x, y), z);
+              lows[v] = glm::min(lows[v], point);
+              highs[v] = glm::max(highs[v], point);
+            }
+          }
         }
       }
-    }
+    });
+  low = none;
+  high = -none;
+  for (int v = 0; v < views; ++v)
+  {
+    low = glm::min(low, lows[v]);
+    high = glm::max(high, highs[v]);
   }
   return low.x <= high.x;
 }
@@ -1480,7 +1518,8 @@ struct NearestDepthTiles
   int Rows = 0;
   std::vector<float> Depth; // per view, Rows x Columns, top tile row first
 
-  void Build(const ViewStack<float>& depth, int views)
+  /// The tiles of the `views` views of `depth`, the views run by `loop`.
+  void Build(const ViewStack<float>& depth, int views, const RangeLoop& loop = SerialLoop)
   {
     this->Width = depth.Width;
     this->Height = depth.Height;
@@ -1488,20 +1527,24 @@ struct NearestDepthTiles
     this->Rows = (depth.Height + Size - 1) / Size;
     const std::size_t tiles = static_cast<std::size_t>(this->Columns) * this->Rows;
     this->Depth.assign(tiles * views, std::numeric_limits<float>::infinity());
-    for (int v = 0; v < views; ++v)
-    {
-      float* nearest = this->Depth.data() + v * tiles;
-      for (int y = 0; y < depth.Height; ++y)
+    loop(static_cast<std::size_t>(views),
+      [&](std::size_t begin, std::size_t end)
       {
-        for (int x = 0; x < depth.Width; ++x)
+        for (std::size_t v = begin; v < end; ++v)
         {
-          // Texel by texel: an out-of-core stack's pointer is one texel's.
-          const float z = *depth.Pixel(v, x, y);
-          float& tile = nearest[(y / Size) * this->Columns + x / Size];
-          tile = z > 0.0f ? std::min(tile, z) : tile;
+          float* nearest = this->Depth.data() + v * tiles;
+          for (int y = 0; y < depth.Height; ++y)
+          {
+            for (int x = 0; x < depth.Width; ++x)
+            {
+              // Texel by texel: an out-of-core stack's pointer is one texel's.
+              const float z = *depth.Pixel(static_cast<int>(v), x, y);
+              float& tile = nearest[(y / Size) * this->Columns + x / Size];
+              tile = z > 0.0f ? std::min(tile, z) : tile;
+            }
+          }
         }
-      }
-    }
+      });
   }
 
   /**

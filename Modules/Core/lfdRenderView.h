@@ -678,24 +678,10 @@ struct FrameCage
   static constexpr int DefaultTileSize = 8;
 
   /**
-   * Runs `body(begin, end)` over the ranges of [0, n) it chooses: Build's
-   * loops over boxes and over binned (tile, box) pairs, whose iterations
-   * are independent. SerialLoop runs the one range; vtkLightFieldRenderer
-   * hands vtkSMPTools::For, so that a frame's cage is built on every thread.
-   */
-  using RangeLoop = std::function<void(std::size_t n,
-    const std::function<void(std::size_t begin, std::size_t end)>& body)>;
-  static void SerialLoop(std::size_t n,
-    const std::function<void(std::size_t begin, std::size_t end)>& body)
-  {
-    body(0, n);
-  }
-
-  /**
    * The frame of a width x height image seen from `eye` through
-   * `pixelToDirection` (PlaceEye() called for this eye), its loops run by
-   * `loop` (the same frame cage whatever runs them). `boxes` must outlive
-   * the frame cage.
+   * `pixelToDirection` (PlaceEye() called for this eye), its loops (over
+   * boxes and over binned tile-box pairs) run by `loop` (the same frame
+   * cage whatever runs them). `boxes` must outlive the frame cage.
    */
   void Build(const std::vector<RenderBox>& boxes,
     const glm::dvec3& eye,

@@ -408,9 +408,9 @@ private:
    * The proxy's extent: the bounds of its surface points (6 values, low
    * then high, lfd::DepthBounds), then per view the smallest and largest
    * depth (lfd::DepthRanges); with ProxyTiles, the coarse level of the
-   * depth walk (lfd::NearestDepthTiles); cached while `holder` (the Depth
-   * pass's array, or the image cache that serves `depth`) and the rig are
-   * unchanged.
+   * depth walk (lfd::NearestDepthTiles), each computed over the views on
+   * every thread; cached while `holder` (the Depth pass's array, or the
+   * image cache that serves `depth`) and the rig are unchanged.
    */
   const std::vector<double>& GetProxyExtent(vtkObject* holder,
     const lfd::ViewStack<float>& depth,

@@ -578,6 +578,24 @@ void ProxyLabelHullSkips(lfd::LightFieldSampler& sampler,
   tiles.Build(sampler.Depth, views);
   sampler.DepthTiles = &tiles;
   lfd::DepthBounds(sampler.Depth, cameras.data(), views, sampler.SurfaceLow, sampler.SurfaceHigh);
+  // Their views run in ranges out of order (as vtkLightFieldRenderer runs
+  // them on every thread): the same bounds, ranges and tiles.
+  const lfd::RangeLoop backwards =
+    [](std::size_t n, const std::function<void(std::size_t, std::size_t)>& body)
+  {
+    for (std::size_t end = n; end > 0; end -= std::min<std::size_t>(end, 5))
+    {
+      body(end - std::min<std::size_t>(end, 5), end);
+    }
+  };
+  glm::dvec3 low, high;
+  lfd::NearestDepthTiles ranged;
+  ranged.Build(sampler.Depth, views, backwards);
+  const bool bounded = lfd::DepthBounds(sampler.Depth, cameras.data(), views, low, high, backwards);
+  Expect("proxy: views in ranges out of order: bounds, ranges or tiles unlike one loop's",
+    !bounded || low != sampler.SurfaceLow || high != sampler.SurfaceHigh ||
+      lfd::DepthRanges(sampler.Depth, views, backwards) != ranges || ranged.Depth != tiles.Depth,
+    0.0);
   const lfd::RingLayout& layout = *sampler.Layout;
   SkipCounts counts;
   int stretched = 0, surface = 0, proven = 0, seen = 0;
